@@ -1,0 +1,316 @@
+//! The Rasterizer Controller's semantics (seed 001 §2.3.1, §3.1), untimed: what the RC writes into the
+//! Z-buffer and the I-buffer for a stream of triangles, and which triangles it flags visible.
+//!
+//! * Back-face culling by the sign of Pineda's determinant (seed 001 §2.3.1). Window y grows down,
+//!   so a triangle that looks counter-clockwise on the screen has `det < 0`.
+//! * Edge functions (seed 001 eq. 5) `E(p) = dx*(p.y - a.y) - dy*(p.x - a.x)` for each edge a->b of the
+//!   triangle in the order with `det > 0`, at pixel centres `p = (16X+8, 16Y+8)` in subpixels: integers.
+//! * Top-left fill rule: a centre exactly on an edge belongs to the triangle only if the edge is a top
+//!   edge (`dy == 0 && dx > 0`) or a left edge (`dy < 0`). The RTL folds this into the edge constant:
+//!   inside iff `E - bias >= 0` for all three edges, bias 0 on top-left edges and 1 elsewhere.
+//! * Bounding box: the pixels whose centres lie within the vertices' extent,
+//!   `X in [(xmin+7)>>4, (xmax-8)>>4]`, clamped to the screen.
+//! * Depth: a [`Plane`] through the three vertex depths (one reciprocal per triangle), clamped to
+//!   0..=2^24-1. Z-test "less": of equal depths the first drawn wins. The Z-buffer is cleared to the far
+//!   value, the I-buffer to 0 (background). On a pass both are written.
+
+use crate::format::{reciprocal, Plane, Recip, Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND, SUBPIXEL_HALF};
+
+/// Which faces are culled (glCullFace, with culling disabled as `None`).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub enum CullMode {
+    Back,
+    Front,
+    None,
+}
+
+/// Which winding is the front face (glFrontFace), as seen on the screen.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub enum FrontFace {
+    Ccw,
+    Cw,
+}
+
+/// Why a triangle produced no setup.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub enum Culled {
+    /// Zero area (det == 0): nothing to draw.
+    ZeroArea,
+    /// Removed by the cull mode.
+    Facing,
+}
+
+/// One edge function, stepped in whole pixels: `E(X, Y) = c + step_x*X + step_y*Y`, already biased by
+/// the fill rule so that "inside" is `E >= 0`.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct Edge {
+    pub step_x: i64,
+    pub step_y: i64,
+    pub c: i64,
+    pub top_left: bool,
+}
+
+impl Edge {
+    /// The edge a->b.
+    pub fn new(a: WinVertex, b: WinVertex) -> Edge {
+        let dx = (b.x - a.x) as i64;
+        let dy = (b.y - a.y) as i64;
+        let top_left = dy < 0 || (dy == 0 && dx > 0);
+        let h = SUBPIXEL_HALF as i64;
+        // E(16X+8, 16Y+8) = dx*(16Y + 8 - a.y) - dy*(16X + 8 - a.x)
+        let c = dx * (h - a.y as i64) - dy * (h - a.x as i64) - if top_left { 0 } else { 1 };
+        Edge { step_x: -16 * dy, step_y: 16 * dx, c, top_left }
+    }
+    pub fn at(&self, x: i64, y: i64) -> i64 {
+        self.c + self.step_x * x + self.step_y * y
+    }
+}
+
+/// Inclusive pixel rectangle.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default, serde::Serialize)]
+pub struct BBox {
+    pub x0: i32,
+    pub y0: i32,
+    pub x1: i32,
+    pub y1: i32,
+}
+
+impl BBox {
+    pub fn is_empty(&self) -> bool {
+        self.x0 > self.x1 || self.y0 > self.y1
+    }
+    pub fn pixels(&self) -> u64 {
+        if self.is_empty() {
+            0
+        } else {
+            ((self.x1 - self.x0 + 1) as u64) * ((self.y1 - self.y0 + 1) as u64)
+        }
+    }
+}
+
+/// Twice the signed area in subpixel^2, window coordinates (y down): > 0 when clockwise on the screen.
+pub fn det(v: &[WinVertex; 3]) -> i64 {
+    (v[1].x - v[0].x) as i64 * (v[2].y - v[0].y) as i64 - (v[2].x - v[0].x) as i64 * (v[1].y - v[0].y) as i64
+}
+
+/// Put a triangle in the vertex order with `det > 0` (swap vertices 1 and 2 if needed).
+/// Returns the order used, as indices into the input.
+pub fn canonical_order(v: &[WinVertex; 3]) -> [usize; 3] {
+    if det(v) < 0 {
+        [0, 2, 1]
+    } else {
+        [0, 1, 2]
+    }
+}
+
+/// Everything the RC's setup stage computes for one triangle.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Setup {
+    /// The vertices in the order with det > 0.
+    pub v: [WinVertex; 3],
+    pub det: i64,
+    pub recip: Recip,
+    pub edges: [Edge; 3],
+    pub bbox: BBox,
+    pub depth: Plane,
+}
+
+/// Decide whether a triangle is culled, given the cull mode and front face.
+pub fn is_culled(d: i64, cull: CullMode, front: FrontFace) -> Option<Culled> {
+    if d == 0 {
+        return Some(Culled::ZeroArea);
+    }
+    // On the screen, det > 0 is clockwise.
+    let cw = d > 0;
+    let is_front = match front {
+        FrontFace::Cw => cw,
+        FrontFace::Ccw => !cw,
+    };
+    match cull {
+        CullMode::None => None,
+        CullMode::Back if !is_front => Some(Culled::Facing),
+        CullMode::Front if is_front => Some(Culled::Facing),
+        _ => None,
+    }
+}
+
+/// The RC's triangle setup.
+pub fn setup(tri: &[WinVertex; 3], cull: CullMode, front: FrontFace, screen: Screen) -> Result<Setup, Culled> {
+    let d = det(tri);
+    if let Some(c) = is_culled(d, cull, front) {
+        return Err(c);
+    }
+    let o = canonical_order(tri);
+    let v = [tri[o[0]], tri[o[1]], tri[o[2]]];
+    let det = d.abs();
+    let recip = reciprocal(det);
+    let edges = [Edge::new(v[0], v[1]), Edge::new(v[1], v[2]), Edge::new(v[2], v[0])];
+    let xmin = v.iter().map(|p| p.x).min().unwrap();
+    let xmax = v.iter().map(|p| p.x).max().unwrap();
+    let ymin = v.iter().map(|p| p.y).min().unwrap();
+    let ymax = v.iter().map(|p| p.y).max().unwrap();
+    let bbox = BBox {
+        x0: ((xmin + 7) >> 4).max(0),
+        y0: ((ymin + 7) >> 4).max(0),
+        x1: ((xmax - 8) >> 4).min(screen.width as i32 - 1),
+        y1: ((ymax - 8) >> 4).min(screen.height as i32 - 1),
+    };
+    let depth = Plane::setup(&v, [v[0].z as i64, v[1].z as i64, v[2].z as i64], det, recip);
+    Ok(Setup { v, det, recip, edges, bbox, depth })
+}
+
+impl Setup {
+    /// Whether pixel (X, Y)'s centre is inside (fill rule included).
+    pub fn covers(&self, x: i32, y: i32) -> bool {
+        self.edges.iter().all(|e| e.at(x as i64, y as i64) >= 0)
+    }
+    /// The fragment's depth at pixel (X, Y).
+    pub fn depth_at(&self, x: i32, y: i32) -> u32 {
+        self.depth.eval_clamped(x as u32, y as u32, DEPTH_MAX as i64) as u32
+    }
+}
+
+/// The RC's result for one triangle.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct TriResult {
+    pub index: u32,
+    pub culled: Option<Culled>,
+    /// Some fragment passed the Z-test when it was drawn.
+    pub visible: bool,
+}
+
+/// Per-frame counters of the RC.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct RcCounts {
+    pub triangles: u64,
+    pub culled_zero_area: u64,
+    pub culled_facing: u64,
+    /// Pixels in the clamped bounding boxes: what a one-pixel-per-clock traversal visits.
+    pub candidates: u64,
+    /// Pixels whose centre is inside a triangle: fragments.
+    pub fragments: u64,
+    pub z_passes: u64,
+    pub flagged_visible: u64,
+}
+
+/// The RC's buffers: Z-buffer and I-buffer, one entry per pixel, row 0 at the top.
+#[derive(Clone, Debug)]
+pub struct Rasterizer {
+    pub screen: Screen,
+    pub zbuf: Vec<u32>,
+    pub ibuf: Vec<u32>,
+    pub counts: RcCounts,
+}
+
+impl Rasterizer {
+    pub fn new(screen: Screen) -> Rasterizer {
+        Rasterizer { screen, zbuf: vec![DEPTH_MAX; screen.pixels()], ibuf: vec![INDEX_BACKGROUND; screen.pixels()], counts: RcCounts::default() }
+    }
+
+    /// Frame start: clear both buffers.
+    pub fn clear(&mut self) {
+        self.zbuf.fill(DEPTH_MAX);
+        self.ibuf.fill(INDEX_BACKGROUND);
+        self.counts = RcCounts::default();
+    }
+
+    /// Draw one triangle with hardware index `index` (1..).
+    pub fn draw(&mut self, index: u32, tri: &[WinVertex; 3], cull: CullMode, front: FrontFace) -> TriResult {
+        self.counts.triangles += 1;
+        let s = match setup(tri, cull, front, self.screen) {
+            Err(c) => {
+                match c {
+                    Culled::ZeroArea => self.counts.culled_zero_area += 1,
+                    Culled::Facing => self.counts.culled_facing += 1,
+                }
+                return TriResult { index, culled: Some(c), visible: false };
+            }
+            Ok(s) => s,
+        };
+        let mut visible = false;
+        let w = self.screen.width as usize;
+        if !s.bbox.is_empty() {
+            self.counts.candidates += s.bbox.pixels();
+            for y in s.bbox.y0..=s.bbox.y1 {
+                for x in s.bbox.x0..=s.bbox.x1 {
+                    if !s.covers(x, y) {
+                        continue;
+                    }
+                    self.counts.fragments += 1;
+                    let z = s.depth_at(x, y);
+                    let a = y as usize * w + x as usize;
+                    if z < self.zbuf[a] {
+                        self.zbuf[a] = z;
+                        self.ibuf[a] = index;
+                        self.counts.z_passes += 1;
+                        visible = true;
+                    }
+                }
+            }
+        }
+        if visible {
+            self.counts.flagged_visible += 1;
+        }
+        TriResult { index, culled: None, visible }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: i32, y: i32, z: u32) -> WinVertex {
+        WinVertex { x: x * 16, y: y * 16, z }
+    }
+
+    #[test]
+    fn clockwise_on_screen_has_positive_det() {
+        // (0,0) -> (1,0) -> (0,1) with y down turns clockwise on the screen.
+        assert!(det(&[v(0, 0, 0), v(1, 0, 0), v(0, 1, 0)]) > 0);
+        assert_eq!(is_culled(1, CullMode::Back, FrontFace::Ccw), Some(Culled::Facing));
+        assert_eq!(is_culled(-1, CullMode::Back, FrontFace::Ccw), None);
+        assert_eq!(is_culled(1, CullMode::Front, FrontFace::Ccw), None);
+        assert_eq!(is_culled(1, CullMode::None, FrontFace::Ccw), None);
+        assert_eq!(is_culled(0, CullMode::None, FrontFace::Ccw), Some(Culled::ZeroArea));
+    }
+
+    #[test]
+    fn two_triangles_sharing_a_diagonal_cover_a_square_exactly_once() {
+        let s = Screen::new(16, 16).unwrap();
+        let mut r = Rasterizer::new(s);
+        let a = [v(2, 2, 10), v(10, 2, 10), v(10, 10, 10)];
+        let b = [v(2, 2, 10), v(10, 10, 10), v(2, 10, 10)];
+        let mut hits = vec![0u32; 256];
+        for (i, t) in [a, b].iter().enumerate() {
+            let st = setup(t, CullMode::None, FrontFace::Ccw, s).unwrap();
+            for y in 0..16 {
+                for x in 0..16 {
+                    if st.covers(x, y) {
+                        hits[(y * 16 + x) as usize] += 1;
+                    }
+                }
+            }
+            r.draw(i as u32 + 1, t, CullMode::None, FrontFace::Ccw);
+        }
+        // The square [2,10)x[2,10) has 64 pixel centres; each is hit once.
+        assert_eq!(hits.iter().filter(|&&h| h == 1).count(), 64);
+        assert!(hits.iter().all(|&h| h <= 1));
+    }
+
+    #[test]
+    fn z_test_keeps_first_of_equal_depths() {
+        let s = Screen::new(8, 8).unwrap();
+        let mut r = Rasterizer::new(s);
+        let t = [v(0, 0, 100), v(8, 0, 100), v(0, 8, 100)];
+        assert!(r.draw(1, &t, CullMode::None, FrontFace::Ccw).visible);
+        assert!(!r.draw(2, &t, CullMode::None, FrontFace::Ccw).visible);
+        assert!(r.ibuf.iter().all(|&i| i == 0 || i == 1));
+    }
+
+    #[test]
+    fn off_screen_triangle_has_an_empty_bounding_box() {
+        let s = Screen::new(8, 8).unwrap();
+        let st = setup(&[v(-5, -5, 0), v(-1, -5, 0), v(-5, -1, 0)], CullMode::None, FrontFace::Ccw, s).unwrap();
+        assert!(st.bbox.is_empty());
+    }
+}

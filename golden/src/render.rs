@@ -1,0 +1,331 @@
+//! A whole frame through seed 001's dual pipeline (Fig. 7b), with the chipset behind a trait so that
+//! the same host program drives the algorithmic model here and the RTL in `tb/`.
+//!
+//! 1. Upper pipeline (host): transform, clip and map every triangle; send them to the RC.
+//! 2. RC: frame start, then per triangle cull / rasterize / Z-test; a visibility flag comes back.
+//! 3. Lower pipeline (host), enhanced deferred lighting: only for source triangles with a visible
+//!    piece, transform the normals and light the vertices (Phong: normals only).
+//! 4. Colour setup (chipset): planes into TdbS at the triangle's index.
+//! 5. CS: scan the I-buffer out, evaluate, produce RGB888.
+
+use crate::format::{max_index, Screen, WinVertex, INDEX_BACKGROUND};
+use crate::host::{eye_normals, normalize, to_rgb8, upper_pipeline, Camera, ClipStats, HostOps, Lighting, Ops};
+use crate::raster::{Culled, CullMode, FrontFace, RcCounts, Rasterizer, TriResult};
+use crate::scene::Mesh;
+use crate::shade::{colour_setup, flat_setup, normal_q14, PhongLights, Shading, TdbsEntry};
+
+/// A triangle command for the RC: its hardware index (1..) and window vertices.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct RcCommand {
+    pub index: u32,
+    pub v: [WinVertex; 3],
+}
+
+/// A colour-setup command: the triangle's index and vertices (as sent to the RC) and its three vertex
+/// values; `flat` carries the one colour of a flat-shaded triangle instead.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct SetupCommand {
+    pub index: u32,
+    pub v: [WinVertex; 3],
+    pub values: [[i64; 3]; 3],
+    pub material: u16,
+    pub flat: Option<[u8; 3]>,
+}
+
+/// What the CS produced: RGB888 in raster order, and the I-buffer it read (hardware indices).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScanOut {
+    pub rgb: Vec<u8>,
+    pub ibuf: Vec<u32>,
+    pub zbuf: Vec<u32>,
+}
+
+/// The chipset as the host sees it. Implemented by [`GoldenChipset`] (the algorithmic model) and, in
+/// `tb/`, by the RTL simulation.
+pub trait Chipset {
+    /// Frame start (clear), then every triangle in order; returns one result per triangle in order.
+    fn rasterize(&mut self, tris: &[RcCommand], cull: CullMode, front: FrontFace) -> Result<Vec<TriResult>, String>;
+    /// Write TdbS for the visible triangles.
+    fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String>;
+    /// Scan the frame out.
+    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String>;
+    /// The RC's fragment counters of the last frame, if the chipset keeps them.
+    fn rc_counts(&self) -> Option<RcCounts> {
+        None
+    }
+}
+
+/// The algorithmic model of the chipset.
+pub struct GoldenChipset {
+    pub rc: Rasterizer,
+    pub tdbs: Vec<TdbsEntry>,
+}
+
+impl GoldenChipset {
+    pub fn new(screen: Screen) -> GoldenChipset {
+        GoldenChipset { rc: Rasterizer::new(screen), tdbs: Vec::new() }
+    }
+}
+
+impl Chipset for GoldenChipset {
+    fn rasterize(&mut self, tris: &[RcCommand], cull: CullMode, front: FrontFace) -> Result<Vec<TriResult>, String> {
+        self.rc.clear();
+        Ok(tris.iter().map(|t| self.rc.draw(t.index, &t.v, cull, front)).collect())
+    }
+    fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String> {
+        for c in cmds {
+            if self.tdbs.len() <= c.index as usize {
+                self.tdbs.resize(c.index as usize + 1, TdbsEntry::default());
+            }
+            self.tdbs[c.index as usize] = match c.flat {
+                Some(rgb) => flat_setup(rgb),
+                None => colour_setup(&c.v, c.values, c.material),
+            };
+        }
+        Ok(())
+    }
+    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String> {
+        let s = self.rc.screen;
+        let mut rgb = Vec::with_capacity(s.pixels() * 3);
+        for y in 0..s.height {
+            for x in 0..s.width {
+                let i = self.rc.ibuf[(y * s.width + x) as usize];
+                let px = if i == INDEX_BACKGROUND {
+                    background
+                } else {
+                    let e = &self.tdbs[i as usize];
+                    match shading {
+                        Shading::Phong => lights.shade([0, 1, 2].map(|k| e.planes[k].eval(x, y)), e.material),
+                        _ => [0, 1, 2].map(|k| e.planes[k].eval_clamped(x, y, 255) as u8),
+                    }
+                };
+                rgb.extend_from_slice(&px);
+            }
+        }
+        Ok(ScanOut { rgb, ibuf: self.rc.ibuf.clone(), zbuf: self.rc.zbuf.clone() })
+    }
+    fn rc_counts(&self) -> Option<RcCounts> {
+        Some(self.rc.counts)
+    }
+}
+
+/// Everything that decides a frame.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct RenderOptions {
+    pub screen: Screen,
+    pub camera: Camera,
+    pub shading: Shading,
+    pub cull: CullMode,
+    pub front: FrontFace,
+    pub lighting: Lighting,
+    pub index_bits: u32,
+    pub background: [u8; 3],
+}
+
+/// Per-frame statistics (issue 2 §6); source-triangle counts are seed 001 Table 1's (a), (b), (c).
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct FrameStats {
+    /// (a) triangles in the scene.
+    pub triangles_in: u64,
+    /// Source triangles wholly outside the view volume (never sent to the RC).
+    pub clipped_away: u64,
+    /// Source triangles split by clipping.
+    pub split_by_clipping: u64,
+    /// Triangles sent to the RC (clipping can make more than one per source triangle).
+    pub sent_to_rc: u64,
+    /// Source triangles of zero area on the screen.
+    pub zero_area: u64,
+    /// (b) source triangles that passed back-face culling (and have an area).
+    pub after_culling: u64,
+    /// Source triangles with some fragment that passed the Z-test when drawn: what the host lights.
+    pub flagged_visible: u64,
+    /// (c) source triangles that own at least one pixel of the final image.
+    pub visible_final: u64,
+    /// RC counters (hardware triangles).
+    pub rc: RcCounts,
+    /// Screen pixels covered by some triangle in the final image.
+    pub covered_pixels: u64,
+    /// Fragments per covered pixel (depth complexity).
+    pub depth_complexity: f64,
+    /// Z-test passes per covered pixel (writes per final pixel).
+    pub overdraw: f64,
+    /// TdbS records written by colour setup.
+    pub tdbs_writes: u64,
+    /// Per-pixel lighting operations in the CS (Phong only).
+    pub cs_lightings: u64,
+    /// Host operations with enhanced deferred lighting (this pipeline).
+    pub host: HostOps,
+    pub host_ops: Ops,
+    /// The same frame in seed 001's Type I (cull before lighting): all normals transformed, (b) lit.
+    pub host_type_i: HostOps,
+    /// Type II (lighting before culling): all normals transformed, all (a) lit.
+    pub host_type_ii: HostOps,
+    pub clip: ClipStats,
+}
+
+/// A rendered frame.
+#[derive(Clone, Debug)]
+pub struct Frame {
+    pub screen: Screen,
+    pub rgb: Vec<u8>,
+    /// The I-buffer as source triangle numbers: 0 background, else input position + 1.
+    pub index: Vec<u32>,
+    /// The I-buffer as the hardware holds it.
+    pub hw_index: Vec<u32>,
+    pub zbuf: Vec<u32>,
+    pub results: Vec<TriResult>,
+    pub stats: FrameStats,
+}
+
+/// Render one frame of `mesh` through `chip`.
+pub fn render_with(mesh: &Mesh, opts: &RenderOptions, chip: &mut dyn Chipset) -> Result<Frame, String> {
+    mesh.validate()?;
+    opts.camera.validate()?;
+    if !(1..=31).contains(&opts.index_bits) {
+        return Err(format!("index width {} bits is not supported (1..=31)", opts.index_bits));
+    }
+    let geo = upper_pipeline(mesh, &opts.camera, opts.screen);
+    let limit = max_index(opts.index_bits) as usize;
+    if geo.hw.len() > limit {
+        return Err(format!(
+            "{} triangles to draw after clipping, but a {}-bit triangle index allows only {} (0 is background): \
+             use a wider --index-bits or a smaller scene",
+            geo.hw.len(),
+            opts.index_bits,
+            limit
+        ));
+    }
+    let cmds: Vec<RcCommand> = geo.hw.iter().enumerate().map(|(i, t)| RcCommand { index: i as u32 + 1, v: t.v }).collect();
+    let results = chip.rasterize(&cmds, opts.cull, opts.front)?;
+    if results.len() != cmds.len() {
+        return Err(format!("chipset returned {} results for {} triangles", results.len(), cmds.len()));
+    }
+
+    // Source-level bookkeeping.
+    let n = mesh.triangles.len();
+    let mut any_sent = vec![false; n];
+    let mut passed_cull = vec![false; n];
+    let mut all_zero = vec![true; n];
+    let mut flagged = vec![false; n];
+    for (t, r) in geo.hw.iter().zip(&results) {
+        let s = t.source as usize;
+        any_sent[s] = true;
+        if r.culled != Some(Culled::ZeroArea) {
+            all_zero[s] = false;
+        }
+        if r.culled.is_none() {
+            passed_cull[s] = true;
+        }
+        flagged[s] |= r.visible;
+    }
+
+    // Lower pipeline: lighting deferred to flagged-visible source triangles.
+    let mut host = geo.ops;
+    let nlights = opts.lighting.lights.len() as u64;
+    let mut lit: Vec<Option<[[i64; 3]; 3]>> = vec![None; n];
+    let mut flat_rgb: Vec<Option<[u8; 3]>> = vec![None; n];
+    for s in 0..n {
+        if !flagged[s] {
+            continue;
+        }
+        let t = &mesh.triangles[s];
+        let m = &mesh.materials[t.material as usize];
+        host.view_normals += 3;
+        let en = eye_normals(mesh, &opts.camera, t);
+        match opts.shading {
+            Shading::Flat => {
+                host.lighting += nlights;
+                let fn_ = normalize([0, 1, 2].map(|k| en[0][k] + en[1][k] + en[2][k]));
+                flat_rgb[s] = Some(to_rgb8(opts.lighting.shade(m, fn_)));
+            }
+            Shading::Gouraud => {
+                host.lighting += 3 * nlights;
+                lit[s] = Some(en.map(|nv| to_rgb8(opts.lighting.shade(m, nv)).map(|c| c as i64)));
+            }
+            Shading::Phong => lit[s] = Some(en.map(normal_q14)),
+        }
+    }
+    let mut setups = Vec::new();
+    for (i, (t, r)) in geo.hw.iter().zip(&results).enumerate() {
+        if !r.visible {
+            continue;
+        }
+        let s = t.source as usize;
+        let material = mesh.triangles[s].material as u16;
+        let (values, flat) = match (lit[s], flat_rgb[s]) {
+            (_, Some(rgb)) => ([[0; 3]; 3], Some(rgb)),
+            (Some(vals), None) => {
+                // A clipped piece's vertex values are its barycentric mix of the source vertices'.
+                let mix = |b: [f64; 3]| [0, 1, 2].map(|c| (b[0] * vals[0][c] as f64 + b[1] * vals[1][c] as f64 + b[2] * vals[2][c] as f64).round() as i64);
+                (t.bary.map(mix), None)
+            }
+            (None, None) => unreachable!("a visible piece's source triangle is flagged"),
+        };
+        setups.push(SetupCommand { index: i as u32 + 1, v: t.v, values, material, flat });
+    }
+    chip.colour_setup(&setups)?;
+    let lights = PhongLights::new(&opts.lighting, &mesh.materials);
+    let out = chip.scanout(opts.shading, &lights, opts.background)?;
+
+    // Final-image statistics.
+    let index: Vec<u32> = out.ibuf.iter().map(|&h| if h == INDEX_BACKGROUND { 0 } else { geo.hw[h as usize - 1].source + 1 }).collect();
+    let mut in_final = vec![false; n];
+    let mut covered = 0u64;
+    for &i in &index {
+        if i != 0 {
+            in_final[i as usize - 1] = true;
+            covered += 1;
+        }
+    }
+    let count = |v: &[bool]| v.iter().filter(|&&b| b).count() as u64;
+    let a = n as u64;
+    let b = count(&passed_cull);
+    let zero_area = (0..n).filter(|&s| any_sent[s] && all_zero[s]).count() as u64;
+    // Fragment counters: from the chipset if it keeps them, else from the algorithmic RC (the same
+    // numbers for any chipset that produced the same I-buffer, which is checked).
+    let rc = match chip.rc_counts() {
+        Some(c) => c,
+        None => {
+            let mut model = Rasterizer::new(opts.screen);
+            for c in &cmds {
+                model.draw(c.index, &c.v, opts.cull, opts.front);
+            }
+            if model.ibuf != out.ibuf {
+                return Err("the chipset's I-buffer differs from the algorithmic model's".into());
+            }
+            model.counts
+        }
+    };
+    let per = |x: u64| if covered == 0 { 0.0 } else { x as f64 / covered as f64 };
+    let geometry = HostOps { view_vertices: 3 * a, perspective: 3 * a, ..Default::default() };
+    let lights_per_tri = if opts.shading == Shading::Flat { nlights } else { 3 * nlights };
+    let (lit_b, lit_a) = if opts.shading == Shading::Phong { (0, 0) } else { (b * lights_per_tri, a * lights_per_tri) };
+    let stats = FrameStats {
+        triangles_in: a,
+        clipped_away: geo.clip.clipped_away,
+        split_by_clipping: geo.clip.split,
+        sent_to_rc: geo.clip.sent,
+        zero_area,
+        after_culling: b,
+        flagged_visible: count(&flagged),
+        visible_final: count(&in_final),
+        rc,
+        covered_pixels: covered,
+        depth_complexity: per(rc.fragments),
+        overdraw: per(rc.z_passes),
+        tdbs_writes: setups.len() as u64,
+        cs_lightings: if opts.shading == Shading::Phong { covered * nlights } else { 0 },
+        host,
+        host_ops: host.ops(),
+        host_type_i: HostOps { view_normals: 3 * a, lighting: lit_b, ..geometry },
+        host_type_ii: HostOps { view_normals: 3 * a, lighting: lit_a, ..geometry },
+        clip: geo.clip,
+    };
+    Ok(Frame { screen: opts.screen, rgb: out.rgb, index, hw_index: out.ibuf, zbuf: out.zbuf, results, stats })
+}
+
+/// Render one frame through the algorithmic model.
+pub fn render(mesh: &Mesh, opts: &RenderOptions) -> Result<Frame, String> {
+    let mut chip = GoldenChipset::new(opts.screen);
+    render_with(mesh, opts, &mut chip)
+}

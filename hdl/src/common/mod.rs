@@ -1,0 +1,75 @@
+//! Building blocks shared by every unit: the valid/ready stream interface, wide multipliers, a
+//! block-RAM model that yosys maps without read-during-write glue, and width-safe casts.
+//!
+//! The casts follow `shared/rusthdl/GUIDE.md` §1: rust-hdl 0.46's `signed_bit_cast` overflows the stack
+//! on the most negative value, so [`signed_bit_cast_safe`] replaces it; hdl_gen matches cast functions
+//! by name prefix, so it still emits `$signed(x)` in Verilog.
+
+pub mod fast_ram;
+pub mod mul;
+pub mod stream;
+
+pub use fast_ram::FastRAM;
+pub use mul::{MulS, MulU};
+pub use stream::{StreamIn, StreamOut};
+
+use rust_hdl::prelude::*;
+
+/// `signed_bit_cast` without the stack overflow: sign-extends (M > N) or truncates (M < N); N, M <= 64.
+pub fn signed_bit_cast_safe<const M: usize, const N: usize>(x: Signed<N>) -> Signed<M> {
+    from_i64::<M>(to_i64(x))
+}
+
+/// The value of a `Signed<N>` (N <= 64) as an i64.
+pub fn to_i64<const N: usize>(x: Signed<N>) -> i64 {
+    let raw = unsigned_cast(x).to_u64();
+    if N >= 64 {
+        raw as i64
+    } else {
+        ((raw << (64 - N)) as i64) >> (64 - N)
+    }
+}
+
+/// Wrap an i64 into a `Signed<N>` (two's-complement truncation; never panics).
+pub fn from_i64<const N: usize>(v: i64) -> Signed<N> {
+    from_i128::<N>(v as i128)
+}
+
+/// Wrap an i128 into a `Signed<N>` of any width up to 128 (two's-complement truncation).
+pub fn from_i128<const N: usize>(v: i128) -> Signed<N> {
+    let masked = if N >= 128 { v as u128 } else { (v as u128) & ((1u128 << N) - 1) };
+    signed_cast(bits_from_u128::<N>(masked))
+}
+
+/// The value of a `Signed<N>` (N <= 128) as an i128.
+pub fn to_i128<const N: usize>(x: Signed<N>) -> i128 {
+    let raw = unsigned_cast(x).to_u128();
+    if N >= 128 {
+        raw as i128
+    } else {
+        ((raw << (128 - N)) as i128) >> (128 - N)
+    }
+}
+
+/// A `Bits<N>` from a u128 (truncated to N bits); goes through BigUint above 64 bits.
+pub fn bits_from_u128<const N: usize>(v: u128) -> Bits<N> {
+    let v = if N >= 128 { v } else { v & ((1u128 << N) - 1) };
+    if N <= 64 {
+        Bits::<N>::from(v as u64)
+    } else {
+        Bits::<N>::from(num_bigint::BigUint::from(v))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn casts_round_trip_including_the_most_negative_value() {
+        assert_eq!(to_i64(signed_bit_cast_safe::<32, 16>(from_i64::<16>(-32768))), -32768);
+        assert_eq!(to_i64(signed_bit_cast_safe::<8, 16>(from_i64::<16>(0x1ff))), -1);
+        assert_eq!(to_i128(from_i128::<80>(-(1i128 << 70) + 5)), -(1i128 << 70) + 5);
+        assert_eq!(to_i128(from_i128::<80>(1i128 << 78)), 1i128 << 78);
+    }
+}

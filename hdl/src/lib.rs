@@ -1,0 +1,25 @@
+//! # hdl: the chipset's RustHDL blocks
+//!
+//! Synthesizable RTL only; it does not depend on the golden model (Cargo enforces the separation,
+//! `tb/` joins the two). One block per file, a folder per unit:
+//! * [`common`]: the valid/ready stream interface, wide multipliers, block RAM, safe casts;
+//! * `rc/`: the Rasterizer Controller (seed 001 §3): setup, traversal, Z-test, I-buffer writes;
+//! * `cs/`: colour setup and the Color Shader (seed 001 §2.3.2, §3.1);
+//! * `proof/`: PROOF's object processors, shading and filter stages (seed 002).
+//!
+//! [`verilog_top`] generates the Verilog of a top by name (what `idxrender verilog --block` writes).
+
+pub mod common;
+
+/// The tops that can be generated, and what each is.
+pub const TOPS: &[(&str, &str)] = &[];
+
+/// Generate the Verilog of the top named `block` (module name = `block`).
+pub fn verilog_top(block: &str) -> Result<String, String> {
+    match block {
+        _ => Err(format!(
+            "unknown block '{block}': known blocks are {}",
+            TOPS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")
+        )),
+    }
+}

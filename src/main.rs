@@ -1,0 +1,21 @@
+//! `idxrender`: render scenes through the index-rendering chipset, generate its Verilog, analyse it.
+//!
+//! Every failure is an error message naming the problem and a non-zero exit, never a panic; outputs
+//! are written only after the frame is complete, each file replaced atomically, so a failed run leaves
+//! what an earlier run produced intact.
+
+mod analyze;
+mod cli;
+mod output;
+mod proof;
+mod verilog;
+
+use clap::Parser;
+
+fn main() {
+    let args = cli::Cli::parse();
+    if let Err(e) = cli::run(args) {
+        eprintln!("error: {e}");
+        std::process::exit(1);
+    }
+}

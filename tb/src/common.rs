@@ -1,0 +1,66 @@
+//! Shared testbench helpers.
+
+use std::path::PathBuf;
+
+/// Where a simulation test leaves its waveform: `target/vcd/<block>/<test>.vcd` under the workspace.
+pub fn vcd_path(block: &str, test: &str) -> PathBuf {
+    let dir = workspace_target().join("vcd").join(block);
+    let _ = std::fs::create_dir_all(&dir);
+    dir.join(format!("{test}.vcd"))
+}
+
+/// A scratch directory for generated Verilog and tool runs: `target/hdl/<what>`.
+pub fn scratch_dir(what: &str) -> PathBuf {
+    let dir = workspace_target().join("hdl").join(what);
+    let _ = std::fs::create_dir_all(&dir);
+    dir
+}
+
+/// The workspace's `target/` directory (CARGO_TARGET_DIR if set).
+pub fn workspace_target() -> PathBuf {
+    if let Ok(t) = std::env::var("CARGO_TARGET_DIR") {
+        return PathBuf::from(t);
+    }
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..").join("target")
+}
+
+/// Whether VCDs should be written (set `VCD=1`; failing comparisons always write theirs).
+pub fn vcd_wanted() -> bool {
+    std::env::var("VCD").map(|v| v != "0").unwrap_or(false)
+}
+
+/// A small, seeded random source for stimulus (xorshift64*): reproducible runs without a dependency
+/// in the synthesizable path. Seed from `SEED` in the environment when set, so a failure's printed
+/// seed can be replayed.
+#[derive(Clone, Debug)]
+pub struct Rng(u64);
+
+impl Rng {
+    pub fn new(default_seed: u64) -> Rng {
+        let seed = std::env::var("SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(default_seed);
+        Rng(seed.max(1))
+    }
+    pub fn seed(&self) -> u64 {
+        self.0
+    }
+    pub fn next_u64(&mut self) -> u64 {
+        let mut x = self.0;
+        x ^= x >> 12;
+        x ^= x << 25;
+        x ^= x >> 27;
+        self.0 = x;
+        x.wrapping_mul(0x2545F4914F6CDD1D)
+    }
+    /// True with probability `percent`/100.
+    pub fn chance(&mut self, percent: u64) -> bool {
+        self.next_u64() % 100 < percent
+    }
+    pub fn below(&mut self, n: u64) -> u64 {
+        self.next_u64() % n
+    }
+}
+
+/// Whether an external tool is on PATH (the test script installs verilator, iverilog, yosys, nextpnr-ice40).
+pub fn have_tool(name: &str) -> bool {
+    std::process::Command::new("sh").arg("-c").arg(format!("command -v {name}")).output().map(|o| o.status.success()).unwrap_or(false)
+}

@@ -1,0 +1,157 @@
+//! The `render` command end to end: every built-in scene produces its four files, and every kind of
+//! bad input gives an error that names the problem, exits non-zero, never panics, and leaves the files
+//! of an earlier run untouched.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_idxrender"))
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("idxrender-test-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Run and return (success, stdout, stderr).
+fn run(args: &[&str]) -> (bool, String, String) {
+    let o = bin().args(args).output().expect("run idxrender");
+    (o.status.success(), String::from_utf8_lossy(&o.stdout).into(), String::from_utf8_lossy(&o.stderr).into())
+}
+
+fn assert_clean_error(args: &[&str], needle: &str) {
+    let (ok, _, err) = run(args);
+    assert!(!ok, "{args:?} should fail");
+    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    assert!(err.to_lowercase().contains(&needle.to_lowercase()), "{args:?}: error does not mention '{needle}': {err}");
+}
+
+fn png_size(path: &Path) -> (u32, u32) {
+    let img = image::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    (img.width(), img.height())
+}
+
+#[test]
+fn every_builtin_scene_writes_frame_index_and_stats() {
+    for scene in ["polyhedron", "teapot", "castle", "dolphins"] {
+        let out = temp_dir(scene);
+        let (ok, stdout, err) = run(&["render", "--scene", scene, "--out", out.to_str().unwrap()]);
+        assert!(ok, "{scene}: {err}");
+        assert!(stdout.contains("triangles in (a)"), "{stdout}");
+        assert_eq!(png_size(&out.join("frame.png")), (320, 200));
+        assert_eq!(png_size(&out.join("index.png")), (320, 200));
+        let index = std::fs::read(out.join("index.bin")).unwrap();
+        assert_eq!(index.len(), 320 * 200 * 4);
+        let stats: serde_json::Value = serde_json::from_slice(&std::fs::read(out.join("stats.json")).unwrap()).unwrap();
+        let s = &stats["stats"];
+        let a = s["triangles_in"].as_u64().unwrap();
+        let c = s["visible_final"].as_u64().unwrap();
+        assert!(c > 0 && c <= s["flagged_visible"].as_u64().unwrap() && c <= a, "{scene}: {s}");
+        // Every index in index.bin names an input triangle.
+        let max = index.chunks(4).map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]])).max().unwrap();
+        assert!(max as u64 <= a && max > 0, "{scene}: max index {max} of {a}");
+    }
+}
+
+#[test]
+fn shading_modes_and_cull_options_render() {
+    let out = temp_dir("modes");
+    for args in [
+        vec!["--shading", "flat"],
+        vec!["--shading", "phong"],
+        vec!["--cull", "none"],
+        vec!["--cull", "front", "--front-face", "cw"],
+        vec!["--size", "64x48", "--eye", "0,0,5", "--center", "0,0,0", "--fovy", "60"],
+    ] {
+        let mut a = vec!["render", "--scene", "polyhedron", "--out", out.to_str().unwrap()];
+        a.extend(args.iter());
+        let (ok, _, err) = run(&a);
+        assert!(ok, "{a:?}: {err}");
+    }
+}
+
+#[test]
+fn bad_arguments_give_errors_naming_the_problem() {
+    let o = temp_dir("bad");
+    let o = o.to_str().unwrap();
+    assert_clean_error(&["render", "--scene", "nope", "--out", o], "nope");
+    assert_clean_error(&["render", "--out", o], "--scene");
+    assert_clean_error(&["render", "--scene", "teapot", "--size", "320", "--out", o], "WxH");
+    assert_clean_error(&["render", "--scene", "teapot", "--size", "2000x10", "--out", o], "2000x10");
+    assert_clean_error(&["render", "--scene", "teapot", "--size", "0x10", "--out", o], "0x10");
+    assert_clean_error(&["render", "--scene", "teapot", "--eye", "1,2", "--out", o], "--eye");
+    assert_clean_error(&["render", "--scene", "teapot", "--eye", "1,nan,2", "--out", o], "finite");
+    assert_clean_error(&["render", "--scene", "teapot", "--eye", "0,0,0", "--center", "0,0,0", "--out", o], "same point");
+    assert_clean_error(&["render", "--scene", "teapot", "--fovy", "200", "--out", o], "fovy");
+    assert_clean_error(&["render", "--scene", "teapot", "--near", "-1", "--out", o], "near");
+    assert_clean_error(&["render", "--scene", "teapot", "--near", "5", "--far", "2", "--out", o], "near");
+    assert_clean_error(&["render", "--scene", "teapot", "--up", "0,0,0", "--out", o], "up");
+    assert_clean_error(&["render", "--scene", "teapot", "--shading", "toon", "--out", o], "toon");
+    assert_clean_error(&["render", "--scene", "teapot", "--grid", "0", "--out", o], "grid");
+    assert_clean_error(&["render", "--scene", "teapot", "--bogus"], "bogus");
+}
+
+#[test]
+fn more_triangles_than_the_index_width_allows_is_an_error() {
+    let o = temp_dir("index");
+    // 12544 teapot triangles do not fit 8-bit indices (255 usable).
+    assert_clean_error(&["render", "--scene", "teapot", "--index-bits", "8", "--out", o.to_str().unwrap()], "8-bit triangle index");
+    assert_clean_error(&["render", "--scene", "teapot", "--index-bits", "40", "--out", o.to_str().unwrap()], "index width");
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+#[test]
+fn bad_obj_files_give_errors_naming_file_and_line() {
+    let d = temp_dir("obj");
+    let o = d.join("out");
+    let o = o.to_str().unwrap();
+    let missing = d.join("missing.obj");
+    assert_clean_error(&["render", "--obj", missing.to_str().unwrap(), "--out", o], "missing.obj");
+    let nan = write(&d, "nan.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nf 1 2 3\n");
+    assert_clean_error(&["render", "--obj", nan.to_str().unwrap(), "--out", o], "nan.obj:3");
+    let inf = write(&d, "inf.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n");
+    assert_clean_error(&["render", "--obj", inf.to_str().unwrap(), "--out", o], "inf.obj:3");
+    let range = write(&d, "range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    assert_clean_error(&["render", "--obj", range.to_str().unwrap(), "--out", o], "range.obj:4");
+    let malformed = write(&d, "bad.obj", "v 0 0 0\nv 1 zero 0\nv 0 1 0\nf 1 2 3\n");
+    assert_clean_error(&["render", "--obj", malformed.to_str().unwrap(), "--out", o], "bad.obj:2");
+    let empty = write(&d, "empty.obj", "# nothing\n");
+    assert_clean_error(&["render", "--obj", empty.to_str().unwrap(), "--out", o], "empty.obj");
+}
+
+#[test]
+fn obj_files_with_quads_and_degenerate_or_off_screen_triangles_render() {
+    let d = temp_dir("objok");
+    // A quad (triangulated), a zero-area triangle, and a triangle far off to the side.
+    let f = write(
+        &d,
+        "ok.obj",
+        "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nv 0 0 0\nv 0 0 0\nv 50 0 0\nv 51 0 0\nv 50 1 0\nf 1 2 3 4\nf 5 6 5\nf 7 8 9\n",
+    );
+    let out = d.join("out");
+    let (ok, _, err) = run(&["render", "--obj", f.to_str().unwrap(), "--eye", "0,0,4", "--center", "0,0,0", "--out", out.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    let stats: serde_json::Value = serde_json::from_slice(&std::fs::read(out.join("stats.json")).unwrap()).unwrap();
+    assert_eq!(stats["stats"]["triangles_in"], 4);
+    assert_eq!(stats["stats"]["visible_final"], 2);
+}
+
+#[test]
+fn a_failed_run_leaves_the_previous_outputs_untouched() {
+    let out = temp_dir("keep");
+    let o = out.to_str().unwrap();
+    let (ok, _, err) = run(&["render", "--scene", "polyhedron", "--out", o]);
+    assert!(ok, "{err}");
+    let before: Vec<Vec<u8>> = ["frame.png", "index.bin", "index.png", "stats.json"].iter().map(|f| std::fs::read(out.join(f)).unwrap()).collect();
+    assert_clean_error(&["render", "--scene", "teapot", "--index-bits", "4", "--out", o], "index");
+    let after: Vec<Vec<u8>> = ["frame.png", "index.bin", "index.png", "stats.json"].iter().map(|f| std::fs::read(out.join(f)).unwrap()).collect();
+    assert!(before == after, "outputs changed by a failed run");
+}
