@@ -253,11 +253,11 @@ fn run_render(args: &RenderArgs) -> Result<(), String> {
     });
     let files = crate::output::write_frame(&args.out, &frame, &stats)?;
     let s = &frame.stats;
-    println!(
+    crate::say!(
         "{}: {}x{} {:?}, {} triangles in (a), {} after culling (b), {} flagged visible, {} visible in the image (c)",
         mesh.name, opts.screen.width, opts.screen.height, opts.shading, s.triangles_in, s.after_culling, s.flagged_visible, s.visible_final
     );
-    println!(
+    crate::say!(
         "  {} fragments, {} Z passes, {} covered pixels, depth complexity {:.2}; host cost {} (Type I {}, Type II {}); {:.3} s",
         s.rc.fragments,
         s.rc.z_passes,
@@ -269,7 +269,7 @@ fn run_render(args: &RenderArgs) -> Result<(), String> {
         secs
     );
     for f in files {
-        println!("  wrote {}", f.display());
+        crate::say!("  wrote {}", f.display());
     }
     Ok(())
 }

@@ -12,6 +12,15 @@ mod verilog;
 
 use clap::Parser;
 
+/// Print a line to stdout; a closed pipe (e.g. `| head`) is not an error worth a panic.
+#[macro_export]
+macro_rules! say {
+    ($($t:tt)*) => {{
+        use std::io::Write;
+        let _ = writeln!(std::io::stdout(), $($t)*);
+    }};
+}
+
 fn main() {
     let args = cli::Cli::parse();
     if let Err(e) = cli::run(args) {

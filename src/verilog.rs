@@ -24,7 +24,7 @@ pub fn run(args: &VerilogArgs) -> Result<(), String> {
     for b in blocks {
         let v = hdl::verilog_top(&b)?;
         let path = crate::output::write_atomic(&args.out, &format!("{b}.v"), v.as_bytes())?;
-        println!("wrote {} ({} lines)", path.display(), v.lines().count());
+        crate::say!("wrote {} ({} lines)", path.display(), v.lines().count());
     }
     Ok(())
 }

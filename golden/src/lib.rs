@@ -12,6 +12,7 @@
 pub mod cycle;
 pub mod format;
 pub mod host;
+pub mod proof;
 pub mod raster;
 pub mod render;
 pub mod scene;

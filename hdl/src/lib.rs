@@ -10,13 +10,17 @@
 //! [`verilog_top`] generates the Verilog of a top by name (what `idxrender verilog --block` writes).
 
 pub mod common;
+pub mod proof;
 
 /// The tops that can be generated, and what each is.
-pub const TOPS: &[(&str, &str)] = &[];
+pub const TOPS: &[(&str, &str)] = &[
+    ("opp", "PROOF object-processor pipeline: 8 object processors, FIFO depth 1 (seed 002 section 4)"),
+];
 
 /// Generate the Verilog of the top named `block` (module name = `block`).
 pub fn verilog_top(block: &str) -> Result<String, String> {
     match block {
+        "opp" => proof::verilog_opp("opp", 8, 1),
         _ => Err(format!(
             "unknown block '{block}': known blocks are {}",
             TOPS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")

@@ -10,3 +10,4 @@
 //! [`common`] holds what every bench shares: VCD locations, a seeded random source, tool discovery.
 
 pub mod common;
+pub mod proof;

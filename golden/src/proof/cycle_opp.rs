@@ -1,0 +1,388 @@
+//! Cycle-accurate model of the object-processor pipeline (seed 002 §4): a chain of N object processors
+//! ([`OpModel`]), and of what drives it: the geometry processor's object loader and pixel source
+//! ([`Feeder`]) and the consumer of the lists ([`Sink`]). The RTL top `hdl::proof::opp` must match
+//! [`OppModel`] on every port in every cycle.
+//!
+//! ```text
+//!              load, load_op, load_params          free[N]
+//!                 │                                  ▲
+//!   up_data  ──▶ OP 0 ──▶ OP 1 ──▶ ... ──▶ OP N-1 ──▶ down_data
+//!   up_valid ──▶                                    ──▶ down_valid
+//!   up_ready ◀── (combinational through the chain)  ◀── down_ready
+//! ```
+//!
+//! OP reuse (§4.2, "utilize a single OP several times per frame by objects that do not overlap in the
+//! y-coordinate"): the feeder keeps the objects sorted by the raster position of their box's first
+//! pixel (line first, then column, then id), loads the next one into the highest-numbered free OP (one
+//! load per cycle), and does not push a pixel into the pipeline while an object whose box starts at or
+//! before that pixel is still unloaded. An OP becomes free once its object's last box pixel has passed
+//! it. N must be at least [`super::render::ops_needed`]; with fewer the frame cannot finish.
+
+use super::cycle_op::{Action, OpIn, OpModel, OpOut};
+use super::format::{Entry, ObjectParams, Slot};
+use crate::format::Screen;
+
+/// Inputs of the OPP in one cycle.
+#[derive(Clone, Debug, Default)]
+pub struct OppIn {
+    pub up_valid: bool,
+    pub up_data: Slot,
+    pub down_ready: bool,
+    /// Load `params` into OP `op` at this edge.
+    pub load: Option<(usize, ObjectParams)>,
+}
+
+/// Outputs of the OPP in one cycle.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct OppOut {
+    pub up_ready: bool,
+    pub down_valid: bool,
+    pub down_data: Slot,
+    pub free: Vec<bool>,
+}
+
+/// The chain of object processors.
+#[derive(Clone, Debug)]
+pub struct OppModel {
+    pub ops: Vec<OpModel>,
+}
+
+impl OppModel {
+    pub fn new(n: usize, fifo_depth: usize) -> Result<OppModel, String> {
+        if n == 0 {
+            return Err("an OPP needs at least one object processor".into());
+        }
+        Ok(OppModel { ops: (0..n).map(|_| OpModel::new(fifo_depth)).collect::<Result<_, _>>()? })
+    }
+
+    /// Each OP's outputs this cycle, the ready path resolved from the last OP back.
+    fn op_outputs(&self, down_ready: bool) -> Vec<OpOut> {
+        let n = self.ops.len();
+        let mut outs = vec![OpOut::default(); n];
+        let mut ready = down_ready;
+        for k in (0..n).rev() {
+            outs[k] = self.ops[k].outputs(ready);
+            ready = outs[k].up_ready;
+        }
+        outs
+    }
+
+    pub fn outputs(&self, down_ready: bool) -> OppOut {
+        let o = self.op_outputs(down_ready);
+        let last = o[o.len() - 1];
+        OppOut { up_ready: o[0].up_ready, down_valid: last.down_valid, down_data: last.down_data, free: o.iter().map(|x| x.free).collect() }
+    }
+
+    /// One clock; returns the outputs before the edge.
+    pub fn step(&mut self, inp: &OppIn) -> Result<OppOut, String> {
+        let n = self.ops.len();
+        if let Some((k, _)) = inp.load {
+            if k >= n {
+                return Err(format!("load into OP {k}, but the OPP has {n}"));
+            }
+        }
+        let o = self.op_outputs(inp.down_ready);
+        for k in 0..n {
+            let (up_valid, up_data) = if k == 0 { (inp.up_valid, inp.up_data) } else { (o[k - 1].down_valid, o[k - 1].down_data) };
+            let down_ready = if k == n - 1 { inp.down_ready } else { o[k + 1].up_ready };
+            let load = match inp.load {
+                Some((j, p)) if j == k => Some(p),
+                _ => None,
+            };
+            self.ops[k].step(&OpIn { up_valid, up_data, down_ready, load });
+        }
+        let last = o[n - 1];
+        Ok(OppOut { up_ready: o[0].up_ready, down_valid: last.down_valid, down_data: last.down_data, free: o.iter().map(|x| x.free).collect() })
+    }
+}
+
+/// What the feeder presents in a cycle.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+pub struct FeedOut {
+    pub valid: bool,
+    pub data: Slot,
+    /// (OP, object id) to load at this edge.
+    pub load: Option<(usize, u16)>,
+}
+
+/// The geometry processor's side: object loader and pixel source in raster order.
+#[derive(Clone, Debug)]
+pub struct Feeder {
+    pub width: u32,
+    pub height: u32,
+    /// Object ids in loading order, with the raster position of their first box pixel.
+    pub order: Vec<(u64, u16)>,
+    pub next_load: usize,
+    pub next_pixel: u64,
+    /// A pixel is being offered and must stay offered until taken.
+    pub holding: bool,
+}
+
+impl Feeder {
+    pub fn new(screen: Screen, objects: &[ObjectParams]) -> Feeder {
+        let mut order: Vec<(u64, u16)> = objects.iter().map(|o| (o.first_pixel(screen.width), o.id)).collect();
+        order.sort();
+        Feeder { width: screen.width, height: screen.height, order, next_load: 0, next_pixel: 0, holding: false }
+    }
+
+    pub fn pixels(&self) -> u64 {
+        self.width as u64 * self.height as u64
+    }
+
+    /// All pixels pushed.
+    pub fn finished(&self) -> bool {
+        self.next_pixel >= self.pixels()
+    }
+
+    /// This cycle's offer, given the OPs' free flags and whether the source has a pixel ready (`go`
+    /// false makes a gap; an offered pixel is never withdrawn).
+    pub fn offer(&self, free: &[bool], go: bool) -> FeedOut {
+        let load = if self.next_load < self.order.len() { free.iter().rposition(|&f| f).map(|k| (k, self.order[self.next_load].1)) } else { None };
+        let after = self.next_load + load.is_some() as usize;
+        let p = self.next_pixel;
+        let allowed = p < self.pixels() && (after >= self.order.len() || self.order[after].0 > p);
+        let valid = allowed && (go || self.holding);
+        let data = Slot::empty((p % self.width as u64) as u16, (p / self.width as u64) as u16);
+        FeedOut { valid, data: if valid { data } else { Slot::default() }, load }
+    }
+
+    /// The edge: `accepted` = the OPP took the offered pixel.
+    pub fn commit(&mut self, out: &FeedOut, accepted: bool) {
+        if out.load.is_some() {
+            self.next_load += 1;
+        }
+        if out.valid && accepted {
+            self.next_pixel += 1;
+            self.holding = false;
+        } else {
+            self.holding = out.valid;
+        }
+    }
+}
+
+/// Collects the OPP's output slots into per-pixel lists and checks the raster order.
+#[derive(Clone, Debug, Default)]
+pub struct Sink {
+    pub width: u32,
+    pub lists: Vec<Vec<Entry>>,
+    pub cur: Vec<Entry>,
+    pub slots: u64,
+}
+
+impl Sink {
+    pub fn new(screen: Screen) -> Sink {
+        Sink { width: screen.width, lists: Vec::with_capacity(screen.pixels()), ..Default::default() }
+    }
+    /// Take one slot.
+    pub fn take(&mut self, s: &Slot) -> Result<(), String> {
+        let n = self.lists.len() as u64;
+        let expect = ((n % self.width as u64) as u16, (n / self.width as u64) as u16);
+        if (s.x, s.y) != expect {
+            return Err(format!("slot for pixel ({}, {}) while pixel {:?} was expected", s.x, s.y, expect));
+        }
+        self.slots += 1;
+        if s.has_entry {
+            self.cur.push(s.entry);
+        }
+        if s.last {
+            self.lists.push(std::mem::take(&mut self.cur));
+        }
+        Ok(())
+    }
+}
+
+/// Random gaps in the pixel stream: the source pauses and the sink refuses in a share of the cycles.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Gaps {
+    pub seed: u64,
+    pub source_gap_percent: u64,
+    pub sink_gap_percent: u64,
+}
+
+/// A small xorshift source for the gaps (the golden crate has no random-number dependency).
+#[derive(Clone, Debug)]
+pub struct GapRng(pub u64);
+
+impl GapRng {
+    pub fn percent(&mut self, p: u64) -> bool {
+        let mut x = self.0.max(1);
+        x ^= x >> 12;
+        x ^= x << 25;
+        x ^= x >> 27;
+        self.0 = x;
+        x.wrapping_mul(0x2545F4914F6CDD1D) % 100 < p
+    }
+}
+
+/// The outcome of a frame through the OPP cycle model.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct OppRun {
+    #[serde(skip)]
+    pub lists: Vec<Vec<Entry>>,
+    pub ops: usize,
+    pub fifo_depth: usize,
+    /// Cycles from the first cycle until the last pixel's last slot has left the OPP.
+    pub cycles: u64,
+    pub pixels: u64,
+    pub slots_out: u64,
+    /// Cycles in which the feeder could not push because an object still had to be loaded.
+    pub waits_for_load: u64,
+    /// Cycles in which a pixel was offered but the OPP was not ready.
+    pub input_stalls: u64,
+    /// Own entries inserted before the head or appended (jams), and slots dropped behind full entries.
+    pub insertions: u64,
+    pub drops: u64,
+}
+
+/// Run a frame of objects through the cycle model: `n_ops` OPs with FIFOs of `fifo_depth`, optional
+/// random gaps at both ends.
+pub fn run_opp(screen: Screen, objects: &[ObjectParams], n_ops: usize, fifo_depth: usize, gaps: Option<Gaps>) -> Result<OppRun, String> {
+    let needed = super::render::ops_needed(screen, objects) as usize;
+    if n_ops < needed {
+        return Err(format!("the frame needs {needed} object processors (with reuse), but the OPP has {n_ops}"));
+    }
+    let mut opp = OppModel::new(n_ops, fifo_depth)?;
+    let mut feeder = Feeder::new(screen, objects);
+    let mut sink = Sink::new(screen);
+    let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
+    let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, ..Default::default() };
+    let mut idle = 0u64;
+    let mut cycle = 0u64;
+    while sink.lists.len() < screen.pixels() {
+        let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
+        let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
+        let free: Vec<bool> = opp.ops.iter().map(|o| o.free()).collect();
+        let f = feeder.offer(&free, go);
+        let inp = OppIn { up_valid: f.valid, up_data: f.data, down_ready, load: f.load.map(|(k, id)| (k, objects[id as usize])) };
+        let out = opp.step(&inp)?;
+        if !feeder.finished() && !f.valid && (go || feeder.holding) {
+            run.waits_for_load += 1;
+        }
+        if f.valid && !out.up_ready {
+            run.input_stalls += 1;
+        }
+        for op in &opp.ops {
+            match op.last_action {
+                Action::EmitOwnBefore | Action::EmitOwnEnd => run.insertions += 1,
+                Action::Drop => run.drops += 1,
+                _ => {}
+            }
+        }
+        feeder.commit(&f, out.up_ready);
+        let progress = f.load.is_some() || (f.valid && out.up_ready) || (out.down_valid && down_ready);
+        if out.down_valid && down_ready {
+            sink.take(&out.down_data)?;
+        }
+        cycle += 1;
+        idle = if progress { 0 } else { idle + 1 };
+        if idle > 10_000 {
+            return Err(format!("the OPP made no progress for 10000 cycles at cycle {cycle} (pixel {} of {})", sink.lists.len(), screen.pixels()));
+        }
+    }
+    run.cycles = cycle;
+    run.slots_out = sink.slots;
+    run.lists = sink.lists;
+    Ok(run)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::format::WinVertex;
+    use crate::proof::render::{object_lists, ops_needed};
+    use crate::proof::setup::object_setup;
+
+    fn tri(c: [(f64, f64, u32); 3], id: u16, s: Screen) -> ObjectParams {
+        let v = c.map(|(x, y, z)| WinVertex { x: (x * 16.0).round() as i32, y: (y * 16.0).round() as i32, z });
+        object_setup(&v, [[0, 0, 16384]; 3], id, s).unwrap()
+    }
+
+    fn scene(s: Screen) -> Vec<ObjectParams> {
+        let mut v = Vec::new();
+        let mut k = 0u16;
+        for i in 0..6 {
+            let (x, y) = (2.0 + i as f64 * 4.3, 1.5 + (i % 3) as f64 * 5.1);
+            v.push(tri([(x, y, 1000 * i), (x + 9.7, y + 2.2, 3000), (x + 1.3, y + 8.9, 9000 - 1000 * i)], k, s));
+            k += 1;
+        }
+        v.push(tri([(0.0, 0.0, 50_000), (40.0, 0.0, 50_000), (0.0, 24.0, 50_000)], k, s));
+        v
+    }
+
+    #[test]
+    fn the_cycle_model_builds_the_algorithmic_lists_for_every_fifo_depth_with_gaps() {
+        let s = Screen::new(40, 24).unwrap();
+        let objs = scene(s);
+        let want = object_lists(s, &objs);
+        let needed = ops_needed(s, &objs) as usize;
+        for depth in [1, 2, 3, 8] {
+            for (seed, gi, go) in [(1, 0, 0), (7, 30, 30), (99, 60, 10), (5, 10, 70)] {
+                let run = run_opp(s, &objs, needed, depth, Some(Gaps { seed, source_gap_percent: gi, sink_gap_percent: go })).unwrap();
+                assert_eq!(run.lists, want, "depth {depth} seed {seed}");
+            }
+        }
+    }
+
+    #[test]
+    fn too_few_object_processors_is_an_error_naming_the_need() {
+        let s = Screen::new(40, 24).unwrap();
+        let objs = scene(s);
+        let e = run_opp(s, &objs, 1, 1, None).unwrap_err();
+        assert!(e.contains("needs"), "{e}");
+    }
+}
+
+/// The FIFO-depth study (seed 002 §4.3: "a FIFO that can store the description of only one object is
+/// sufficient; increasing the length of the FIFO will result in performance gains less than 2 %"):
+/// cycles per frame of each built-in scene at 320x200 for FIFO depths 1, 2, 4 and 8, with the OPs the
+/// scene needs. Run with `cargo test --release -p golden fifo_depth_study -- --ignored --nocapture`.
+#[cfg(test)]
+mod study {
+    use super::*;
+    use crate::host::Camera;
+    use crate::proof::render::{object_lists, ops_needed};
+    use crate::proof::setup::scene_setup;
+    use crate::raster::{CullMode, FrontFace};
+    use crate::render::RenderOptions;
+    use crate::scene::{builtin, Winding};
+    use crate::shade::Shading;
+
+    pub fn options(mesh: &crate::scene::Mesh, w: u32, h: u32) -> RenderOptions {
+        RenderOptions {
+            screen: Screen::new(w, h).unwrap(),
+            camera: Camera::framing(mesh, [0.3, 0.45, 1.0], 40.0),
+            shading: Shading::Gouraud,
+            cull: CullMode::Back,
+            front: if mesh.front_face == Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
+            lighting: crate::host::Lighting::default(),
+            index_bits: 16,
+            background: [24, 24, 40],
+        }
+    }
+
+    #[test]
+    #[ignore]
+    fn fifo_depth_study() {
+        println!("| scene | objects | OPs needed | slots out | depth 1 | depth 2 | depth 4 | depth 8 | gain 1->8 |");
+        println!("|---|---|---|---|---|---|---|---|---|");
+        for name in builtin::SCENES {
+            let mesh = builtin::scene(name).unwrap();
+            let sc = scene_setup(&mesh, &options(&mesh, 320, 200)).unwrap();
+            let need = ops_needed(sc.screen, &sc.objects) as usize;
+            let lists = object_lists(sc.screen, &sc.objects);
+            let mut cyc = Vec::new();
+            let mut slots = 0;
+            for depth in [1, 2, 4, 8] {
+                let t0 = std::time::Instant::now();
+                let r = run_opp(sc.screen, &sc.objects, need, depth, None).unwrap();
+                assert_eq!(r.lists, lists, "{name} depth {depth}");
+                eprintln!("{name} depth {depth}: {} cycles ({:?}) waits_for_load {} input_stalls {} insertions {} drops {}", r.cycles, t0.elapsed(), r.waits_for_load, r.input_stalls, r.insertions, r.drops);
+                slots = r.slots_out;
+                cyc.push(r.cycles);
+            }
+            let gain = 100.0 * (cyc[0] as f64 - cyc[3] as f64) / cyc[0] as f64;
+            println!("| {name} | {} | {need} | {slots} | {} | {} | {} | {} | {gain:.2} % |", sc.objects.len(), cyc[0], cyc[1], cyc[2], cyc[3]);
+        }
+    }
+}
+

@@ -1,0 +1,39 @@
+//! PROOF's blocks (seed 002): the object processor and its FIFO, the object-processor pipeline.
+//! Payload formats in [`types`]; cycle behaviour specified by `golden::proof::cycle_op` and
+//! `golden::proof::cycle_opp`.
+
+pub mod object_processor;
+pub mod opp;
+pub mod slot_fifo;
+pub mod types;
+
+pub use object_processor::ObjectProcessor;
+pub use opp::Opp;
+pub use slot_fifo::SlotFifo;
+pub use types::{ObjParams, ProofSlot};
+
+use rust_hdl::prelude::*;
+
+/// The Verilog of an OPP of `n` OPs with FIFOs of `fifo_depth` slots, top module named `name`.
+pub fn verilog_opp(name: &str, n: usize, fifo_depth: usize) -> Result<String, String> {
+    let mut uut = Opp::new(n, fifo_depth)?;
+    uut.connect_all();
+    check_all(&uut).map_err(|e| format!("{name}: design check failed: {e:?}"))?;
+    Ok(rename_top(&generate_verilog(&uut), name))
+}
+
+/// rust-hdl names the top module `top` and its children `top$...`: give them the top's own name.
+pub fn rename_top(v: &str, name: &str) -> String {
+    let mut out = String::with_capacity(v.len());
+    for line in v.lines() {
+        let indent = &line[..line.len() - line.trim_start().len()];
+        let t = line.trim_start();
+        let renamed = ["module top", "endmodule // top", "top$"].iter().find(|p| t.starts_with(*p)).map(|p| {
+            let at = p.find("top").unwrap();
+            format!("{indent}{}{name}{}", &t[..at], &t[at + 3..])
+        });
+        out.push_str(renamed.as_deref().unwrap_or(line));
+        out.push('\n');
+    }
+    out
+}

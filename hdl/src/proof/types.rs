@@ -1,0 +1,75 @@
+//! Payloads of the PROOF pipeline (seed 002 §4): the time slot that travels through the object
+//! processors and the parameters an object processor is loaded with. Flat `LogicStruct`s (a struct
+//! cannot hold `Signed<N>`, GUIDE §3): signed fields are stored as `Bits` and read with `signed_cast`.
+//! Formats: `golden::proof::format` (distances 15 fraction bits in the OP, S1.14 in the slot; depth 24
+//! bits; normals Q1.14; accumulators 32 bits).
+
+use rust_hdl::prelude::*;
+
+/// One time slot: one list entry of one pixel, or a pixel's single empty slot.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct ProofSlot {
+    /// Pixel column and row.
+    pub x: Bits<10>,
+    pub y: Bits<10>,
+    /// The pixel's final slot.
+    pub last: bool,
+    /// The slot holds an entry (else: the empty list of its pixel).
+    pub has_entry: bool,
+    /// Object id.
+    pub id: Bits<16>,
+    /// Depth, 0 = near.
+    pub depth: Bits<24>,
+    /// The object covers the pixel fully.
+    pub full: bool,
+    /// Interpolated normal, Q1.14 (signed).
+    pub nx: Bits<16>,
+    pub ny: Bits<16>,
+    pub nz: Bits<16>,
+    /// Distances of the pixel centre to the edges, S1.14 (signed).
+    pub d0: Bits<16>,
+    pub d1: Bits<16>,
+    pub d2: Bits<16>,
+}
+
+/// What an object processor is loaded with (`golden::proof::format::ObjectParams`).
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct ObjParams {
+    pub id: Bits<16>,
+    /// Bounding box, inclusive.
+    pub x0: Bits<10>,
+    pub x1: Bits<10>,
+    pub y0: Bits<10>,
+    pub y1: Bits<10>,
+    /// Per edge: distance at the box's first pixel centre (27 bits, 15 fraction bits), steps per pixel
+    /// (2 cos a) and per line (2 sin a) (17 bits), thresholds for "none" and "full" (18 bits, unsigned).
+    pub e0_d: Bits<27>,
+    pub e0_sx: Bits<17>,
+    pub e0_sy: Bits<17>,
+    pub e0_tn: Bits<18>,
+    pub e0_tf: Bits<18>,
+    pub e1_d: Bits<27>,
+    pub e1_sx: Bits<17>,
+    pub e1_sy: Bits<17>,
+    pub e1_tn: Bits<18>,
+    pub e1_tf: Bits<18>,
+    pub e2_d: Bits<27>,
+    pub e2_sx: Bits<17>,
+    pub e2_sy: Bits<17>,
+    pub e2_tn: Bits<18>,
+    pub e2_tf: Bits<18>,
+    /// Depth accumulator: start, step per pixel, step per line (4 fraction bits).
+    pub z_v: Bits<32>,
+    pub z_dx: Bits<32>,
+    pub z_dy: Bits<32>,
+    /// Normal accumulators (8 fraction bits on Q1.14).
+    pub nx_v: Bits<32>,
+    pub nx_dx: Bits<32>,
+    pub nx_dy: Bits<32>,
+    pub ny_v: Bits<32>,
+    pub ny_dx: Bits<32>,
+    pub ny_dy: Bits<32>,
+    pub nz_v: Bits<32>,
+    pub nz_dx: Bits<32>,
+    pub nz_dy: Bits<32>,
+}

@@ -1,0 +1,190 @@
+//! Level 1 for PROOF: the RustHDL OPP (direct drive, GUIDE §5) and `golden::proof::cycle_opp::OppModel`
+//! get the same inputs every cycle; every output port (and each OP's `free` and output register) is
+//! compared before each rising edge. The first difference stops the run with the cycle, the port and
+//! both values. Optionally writes a VCD and records the vectors for the Verilog replay.
+
+use super::convert::{params_to_rtl, slot_from_rtl, slot_to_rtl};
+use super::replay::VectorWriter;
+use golden::proof::cycle_opp::{Feeder, GapRng, Gaps, OppIn, OppModel, OppOut, OppRun, Sink};
+use golden::proof::cycle_op::Action;
+use golden::proof::format::ObjectParams;
+use golden::format::Screen;
+use hdl::proof::Opp;
+use rust_hdl::core::vcd_probe::VCDProbe;
+use rust_hdl::prelude::*;
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+
+/// Iterations allowed for the combinational settling (the ready path crosses every OP).
+const SETTLE: usize = 100_000;
+
+pub struct OppBench {
+    pub uut: Opp,
+    pub model: OppModel,
+    pub cycle: u64,
+    vcd: Option<VCDProbe<BufWriter<File>>>,
+    vcd_path: Option<PathBuf>,
+    pub vectors: Option<VectorWriter>,
+}
+
+impl OppBench {
+    pub fn new(n: usize, fifo_depth: usize, vcd: Option<&Path>, vectors: Option<PathBuf>) -> Result<OppBench, String> {
+        let mut uut = Opp::new(n, fifo_depth)?;
+        uut.connect_all();
+        check_all(&uut).map_err(|e| format!("opp: design check failed: {e:?}"))?;
+        let vcd_probe = match vcd {
+            Some(p) => {
+                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
+                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), &uut), &uut))
+            }
+            None => None,
+        };
+        Ok(OppBench {
+            uut,
+            model: OppModel::new(n, fifo_depth)?,
+            cycle: 0,
+            vcd: vcd_probe,
+            vcd_path: vcd.map(|p| p.to_path_buf()),
+            vectors: vectors.map(VectorWriter::create).transpose()?,
+        })
+    }
+
+    fn dump(&mut self, t: u64) {
+        if let Some(v) = self.vcd.take() {
+            let mut v = v;
+            let _ = v.timestamp(t);
+            self.vcd = Some(write_vcd_change(v, &self.uut));
+        }
+    }
+
+    fn fail(&self, what: String) -> String {
+        match &self.vcd_path {
+            Some(p) => format!("cycle {}: {what} (waveform: {})", self.cycle, p.display()),
+            None => format!("cycle {}: {what}", self.cycle),
+        }
+    }
+
+    /// One clock on both sides; returns the (equal) outputs before the edge.
+    pub fn cycle(&mut self, inp: &OppIn) -> Result<OppOut, String> {
+        let u = &mut self.uut;
+        u.load.next = inp.load.is_some();
+        u.load_op.next = (inp.load.map(|l| l.0).unwrap_or(0) as u64).into();
+        u.load_params.next = params_to_rtl(&inp.load.map(|l| l.1).unwrap_or_default());
+        u.upstream.valid.next = inp.up_valid;
+        u.upstream.data.next = slot_to_rtl(&inp.up_data);
+        u.downstream.ready.next = inp.down_ready;
+        u.clock.next = false.into();
+        if !simulate(u, SETTLE) {
+            return Err(self.fail("the RTL did not settle".into()));
+        }
+        self.dump(10 * self.cycle);
+        let exp = self.model.outputs(inp.down_ready);
+        let u = &self.uut;
+        let got_ready = u.upstream.ready.val();
+        let got_valid = u.downstream.valid.val();
+        let got_data = slot_from_rtl(&u.downstream.data.val());
+        if got_ready != exp.up_ready {
+            return Err(self.fail(format!("upstream.ready rtl {got_ready} model {}", exp.up_ready)));
+        }
+        if got_valid != exp.down_valid {
+            return Err(self.fail(format!("downstream.valid rtl {got_valid} model {}", exp.down_valid)));
+        }
+        if got_data != exp.down_data {
+            return Err(self.fail(format!("downstream.data rtl {got_data:?} model {:?}", exp.down_data)));
+        }
+        for k in 0..self.model.ops.len() {
+            let (f, mf) = (u.ops[k].free.val(), exp.free[k]);
+            if f != mf {
+                return Err(self.fail(format!("OP {k} free rtl {f} model {mf}")));
+            }
+            let (v, mv) = (u.ops[k].downstream.valid.val(), self.model.ops[k].out_valid);
+            let d = slot_from_rtl(&u.ops[k].downstream.data.val());
+            if v != mv || d != self.model.ops[k].out_data {
+                return Err(self.fail(format!("OP {k} output rtl {v} {d:?} model {mv} {:?}", self.model.ops[k].out_data)));
+            }
+        }
+        let any_free = exp.free.iter().any(|&f| f);
+        let free_op = exp.free.iter().rposition(|&f| f).unwrap_or(0) as u64;
+        if u.any_free.val() != any_free || u.free_op.val().to_u64() != free_op {
+            return Err(self.fail(format!(
+                "any_free/free_op rtl {}/{} model {any_free}/{free_op}",
+                u.any_free.val(),
+                u.free_op.val().to_u64()
+            )));
+        }
+        if let Some(w) = self.vectors.as_mut() {
+            w.cycle(inp, &exp)?;
+        }
+        self.model.step(inp)?;
+        let u = &mut self.uut;
+        u.clock.next = true.into();
+        if !simulate(u, SETTLE) {
+            return Err(self.fail("the RTL did not settle".into()));
+        }
+        self.dump(10 * self.cycle + 5);
+        self.cycle += 1;
+        Ok(exp)
+    }
+}
+
+/// A frame through the RTL OPP beside its cycle model, driven by the golden feeder and sink; with
+/// optional random gaps. Returns the lists and counts (equal to `golden::proof::cycle_opp::run_opp`'s).
+pub fn run_frame(
+    screen: Screen,
+    objects: &[ObjectParams],
+    n_ops: usize,
+    fifo_depth: usize,
+    gaps: Option<Gaps>,
+    vcd: Option<&Path>,
+    vectors: Option<PathBuf>,
+) -> Result<(OppRun, Option<(PathBuf, u64)>), String> {
+    let needed = golden::proof::render::ops_needed(screen, objects) as usize;
+    if n_ops < needed {
+        return Err(format!("the frame needs {needed} object processors (with reuse), but the OPP has {n_ops}"));
+    }
+    let mut bench = OppBench::new(n_ops, fifo_depth, vcd, vectors)?;
+    let mut feeder = Feeder::new(screen, objects);
+    let mut sink = Sink::new(screen);
+    let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
+    let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, ..Default::default() };
+    let mut idle = 0u64;
+    while sink.lists.len() < screen.pixels() {
+        let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
+        let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
+        let free: Vec<bool> = bench.model.ops.iter().map(|o| o.free()).collect();
+        let f = feeder.offer(&free, go);
+        let inp = OppIn { up_valid: f.valid, up_data: f.data, down_ready, load: f.load.map(|(k, id)| (k, objects[id as usize])) };
+        let out = bench.cycle(&inp)?;
+        if !feeder.finished() && !f.valid && (go || feeder.holding) {
+            run.waits_for_load += 1;
+        }
+        if f.valid && !out.up_ready {
+            run.input_stalls += 1;
+        }
+        for op in &bench.model.ops {
+            match op.last_action {
+                Action::EmitOwnBefore | Action::EmitOwnEnd => run.insertions += 1,
+                Action::Drop => run.drops += 1,
+                _ => {}
+            }
+        }
+        feeder.commit(&f, out.up_ready);
+        let progress = f.load.is_some() || (f.valid && out.up_ready) || (out.down_valid && down_ready);
+        if out.down_valid && down_ready {
+            sink.take(&out.down_data)?;
+        }
+        idle = if progress { 0 } else { idle + 1 };
+        if idle > 10_000 {
+            return Err(format!("the OPP made no progress for 10000 cycles at cycle {}", bench.cycle));
+        }
+    }
+    run.cycles = bench.cycle;
+    run.slots_out = sink.slots;
+    run.lists = sink.lists;
+    let vec = match bench.vectors.take() {
+        Some(w) => Some(w.finish()?),
+        None => None,
+    };
+    Ok((run, vec))
+}
