@@ -81,10 +81,7 @@ pub fn polyhedron() -> Mesh {
     let face_normal = |i: usize| normalize(cross(sub(positions[i + 1], positions[i]), sub(positions[i + 2], positions[i])));
     let normals = vec![face_normal(0), face_normal(3)];
     let materials = vec![Material::plastic([0.9, 0.15, 0.1]), Material::plastic([0.1, 0.25, 0.9])];
-    let triangles = vec![
-        Triangle { v: [0, 1, 2], n: [0, 0, 0], material: 0 },
-        Triangle { v: [3, 4, 5], n: [1, 1, 1], material: 1 },
-    ];
+    let triangles = vec![Triangle { v: [0, 1, 2], n: [0, 0, 0], material: 0 }, Triangle { v: [3, 4, 5], n: [1, 1, 1], material: 1 }];
     Mesh { name: "polyhedron".into(), positions, normals, materials, triangles, front_face: Winding::Ccw }
 }
 
@@ -173,11 +170,8 @@ fn patch_eval(p: &Patch, u: f64, v: f64) -> (V3, V3, V3) {
         // A row whose four control points coincide is that point exactly: without this shortcut the
         // weights, which sum to 1 only up to rounding, would scatter the lid's and the bottom's centre
         // by an ulp and the 112 zero-area triangles of the data file would get a tiny area instead.
-        let row = if p[j].iter().all(|c| *c == p[j][0]) {
-            p[j][0]
-        } else {
-            (0..4).fold([0.0; 3], |acc, k| add(acc, scale(p[j][k], bu[k])))
-        };
+        let row =
+            if p[j].iter().all(|c| *c == p[j][0]) { p[j][0] } else { (0..4).fold([0.0; 3], |acc, k| add(acc, scale(p[j][k], bu[k]))) };
         let row_du = (0..4).fold([0.0; 3], |acc, k| add(acc, scale(p[j][k], du[k])));
         point = add(point, scale(row, bv[j]));
         pu = add(pu, scale(row_du, bv[j]));
@@ -278,11 +272,7 @@ pub fn teapot(grid: u32) -> Mesh {
             let strip: Vec<u32> = (0..=g).flat_map(|i| [index(i, j), index(i, j + 1)]).collect();
             for n in 0..2 * g {
                 // GL_TRIANGLE_STRIP flips every odd triangle to keep the winding.
-                let v = if n % 2 == 0 {
-                    [strip[n], strip[n + 1], strip[n + 2]]
-                } else {
-                    [strip[n + 1], strip[n], strip[n + 2]]
-                };
+                let v = if n % 2 == 0 { [strip[n], strip[n + 1], strip[n + 2]] } else { [strip[n + 1], strip[n], strip[n + 2]] };
                 triangles.push(Triangle { v, n: v, material: 0 });
             }
         }
@@ -405,11 +395,7 @@ impl Part {
     /// Flip every triangle if the consistently wound solid encloses a negative volume, i.e. if its
     /// counter-clockwise normals point inwards.
     fn orient_outward(&mut self) {
-        let volume: f64 = self
-            .triangles
-            .iter()
-            .map(|t| dot(self.positions[t[0]], cross(self.positions[t[1]], self.positions[t[2]])))
-            .sum();
+        let volume: f64 = self.triangles.iter().map(|t| dot(self.positions[t[0]], cross(self.positions[t[1]], self.positions[t[2]]))).sum();
         if volume < 0.0 {
             for t in &mut self.triangles {
                 t.swap(1, 2);
@@ -538,6 +524,7 @@ fn merlons(b: &mut MeshBuilder, from: [f64; 2], to: [f64; 2], thickness: f64, he
 }
 
 /// A round tower standing on the ground at (x, z): a closed cylinder with a conical roof.
+#[allow(clippy::too_many_arguments)]
 fn tower(b: &mut MeshBuilder, x: f64, z: f64, radius: f64, height: f64, roof_height: f64, segments: usize, roof: u32) {
     let mut body = Part::default();
     body.tube(&[ring_y([x, 0.0, z], radius, segments), ring_y([x, height, z], radius, segments)], Cap::Flat, Cap::Flat);
@@ -580,11 +567,11 @@ fn house(b: &mut MeshBuilder, x: f64, z: f64, width: f64, depth: f64, height: f6
 /// visible), which is what the index buffer's depth complexity is tested with.
 pub fn castle() -> Mesh {
     let materials = vec![
-        material([0.62, 0.6, 0.56], 0.15, 2),  // stone
-        material([0.7, 0.18, 0.12], 0.4, 8),   // red roofs
-        material([0.18, 0.28, 0.7], 0.4, 8),   // blue roofs
-        material([0.3, 0.55, 0.22], 0.05, 1),  // ground
-        material([0.78, 0.66, 0.45], 0.1, 4),  // timber houses
+        material([0.62, 0.6, 0.56], 0.15, 2), // stone
+        material([0.7, 0.18, 0.12], 0.4, 8),  // red roofs
+        material([0.18, 0.28, 0.7], 0.4, 8),  // blue roofs
+        material([0.3, 0.55, 0.22], 0.05, 1), // ground
+        material([0.78, 0.66, 0.45], 0.1, 4), // timber houses
     ];
     let mut b = MeshBuilder::new("castle", materials);
 
@@ -646,7 +633,12 @@ pub fn castle() -> Mesh {
     keep.cuboid([-k, 0.0, -k], [k, kh, k]);
     b.add(keep, STONE, true);
     // Merlons on the keep's parapet: a virtual 0.8-thick wall whose outer face is the keep's.
-    for (from, to, out) in [([-k, -k + 0.4], [k, -k + 0.4], [0.0, -1.0]), ([-k, k - 0.4], [k, k - 0.4], [0.0, 1.0]), ([-k + 0.4, -k], [-k + 0.4, k], [-1.0, 0.0]), ([k - 0.4, -k], [k - 0.4, k], [1.0, 0.0])] {
+    for (from, to, out) in [
+        ([-k, -k + 0.4], [k, -k + 0.4], [0.0, -1.0]),
+        ([-k, k - 0.4], [k, k - 0.4], [0.0, 1.0]),
+        ([-k + 0.4, -k], [-k + 0.4, k], [-1.0, 0.0]),
+        ([k - 0.4, -k], [k - 0.4, k], [1.0, 0.0]),
+    ] {
         merlons(&mut b, from, to, 0.8, kh, 0.5, out);
     }
     for (x, z) in [(-k, -k), (k, -k), (-k, k), (k, k)] {
@@ -730,7 +722,16 @@ fn dolphin_parts() -> Vec<Part> {
     let dorsal = fin([x_at(0.5), 0.85 * r_at(0.5), 0.0], [-0.45, 1.0, 0.0], [1.0, 0.0, 0.0], 0.32, 0.38, 0.06, 0.22, 0.14);
     let mut parts = vec![body, dorsal];
     for side in [-1.0, 1.0] {
-        parts.push(fin([x_at(0.3), -0.45 * r_at(0.3), side * 0.6 * r_at(0.3)], [-0.3, -0.55, side], [1.0, 0.0, 0.0], 0.3, 0.2, 0.05, 0.12, 0.15));
+        parts.push(fin(
+            [x_at(0.3), -0.45 * r_at(0.3), side * 0.6 * r_at(0.3)],
+            [-0.3, -0.55, side],
+            [1.0, 0.0, 0.0],
+            0.3,
+            0.2,
+            0.05,
+            0.12,
+            0.15,
+        ));
         parts.push(fin([x_at(0.93), 0.0, side * 0.01], [-0.45, 0.0, side], [1.0, 0.0, 0.0], 0.36, 0.26, 0.07, 0.16, 0.12));
     }
     parts

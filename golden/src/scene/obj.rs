@@ -1,236 +1,477 @@
-//! Wavefront OBJ scenes through `tobj`, with the input checked first.
+//! Wavefront OBJ loading (with its MTL materials) into a [`Mesh`].
 //!
-//! tobj is lenient: it skips or zero-fills what it cannot parse. Our users need to know *where* a file
-//! is wrong, so a light pre-scan checks every `v`, `vn` and `f` line and reports `path:line: problem`;
-//! only a file that passes is handed to tobj (faces of more than 3 vertices are triangulated there).
-//! A missing or unreadable MTL file is not fatal: the mesh gets a grey plastic material.
+//! tobj does the grouping, the fan triangulation of polygons and the MTL parsing, but it is lenient
+//! (it silently accepts NaN, and its errors name neither file nor line), while a user who points the
+//! program at a broken file must be told where it is broken. So the text is first checked line by
+//! line here, and tobj only ever sees lines that passed: any error names the file and the line,
+//! and no input makes the loader panic.
 
-use super::{Material, Mesh, Triangle, Winding};
-use crate::host::{cross, normalize, sub};
 use std::path::Path;
 
-/// Parse one number of a `v`/`vn` line, rejecting non-numbers and NaN/inf.
-fn number(path: &Path, line: usize, word: &str) -> Result<f64, String> {
-    let v: f64 = word.parse().map_err(|_| format!("{}:{line}: '{word}' is not a number", path.display()))?;
-    if !v.is_finite() {
-        return Err(format!("{}:{line}: non-finite coordinate '{word}'", path.display()));
-    }
-    Ok(v)
+use super::{Material, Mesh, Triangle, Winding};
+
+type V3 = [f64; 3];
+
+fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
-/// Resolve a 1-based (or negative, relative) OBJ index against `count` elements defined so far.
-fn resolve(path: &Path, line: usize, word: &str, what: &str, count: usize) -> Result<(), String> {
-    let i: i64 = word.parse().map_err(|_| format!("{}:{line}: face {what} index '{word}' is not an integer", path.display()))?;
-    let ok = match i {
-        0 => false,
-        i if i > 0 => i as usize <= count,
-        i => (-i) as usize <= count,
-    };
-    if !ok {
-        return Err(format!("{}:{line}: face refers to {what} {i} but only {count} {what}s are defined", path.display()));
-    }
-    Ok(())
+fn cross(a: V3, b: V3) -> V3 {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
-/// Check the statements the renderer uses; everything else (o, g, s, usemtl, mtllib, vt, l, ...) passes.
-fn prescan(path: &Path, text: &str) -> Result<(), String> {
-    let (mut nv, mut nvt, mut nvn, mut nf) = (0usize, 0usize, 0usize, 0usize);
-    for (k, raw) in text.lines().enumerate() {
-        let line = k + 1;
-        let mut words = raw.split('#').next().unwrap_or("").split_whitespace();
-        let Some(kw) = words.next() else { continue };
-        let rest: Vec<&str> = words.collect();
-        match kw {
-            "v" => {
-                if rest.len() < 3 || rest.len() > 4 {
-                    return Err(format!("{}:{line}: a vertex needs 3 coordinates, found {}", path.display(), rest.len()));
-                }
-                for w in &rest {
-                    number(path, line, w)?;
-                }
-                nv += 1;
-            }
-            "vn" => {
-                if rest.len() != 3 {
-                    return Err(format!("{}:{line}: a normal needs 3 components, found {}", path.display(), rest.len()));
-                }
-                for w in &rest {
-                    number(path, line, w)?;
-                }
-                nvn += 1;
-            }
-            "vt" => nvt += 1,
-            "f" => {
-                if rest.len() < 3 {
-                    return Err(format!("{}:{line}: a face needs at least 3 vertices, found {}", path.display(), rest.len()));
-                }
-                for r in &rest {
-                    let parts: Vec<&str> = r.split('/').collect();
-                    if parts.len() > 3 || parts[0].is_empty() {
-                        return Err(format!("{}:{line}: malformed face vertex '{r}'", path.display()));
-                    }
-                    resolve(path, line, parts[0], "vertex", nv)?;
-                    if parts.len() > 1 && !parts[1].is_empty() {
-                        resolve(path, line, parts[1], "texture coordinate", nvt)?;
-                    }
-                    if parts.len() > 2 && !parts[2].is_empty() {
-                        resolve(path, line, parts[2], "normal", nvn)?;
-                    }
-                }
-                nf += 1;
-            }
-            _ => {}
-        }
-    }
-    if nf == 0 {
-        return Err(format!("{}: no faces: nothing to render", path.display()));
-    }
-    Ok(())
+fn length(a: V3) -> f64 {
+    (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt()
 }
 
-/// Round a Phong exponent to the nearest power of two in 1..=16.
-fn gloss_from_ns(ns: f64) -> u32 {
-    let mut best = 1;
-    for g in [1u32, 2, 4, 8, 16] {
-        if (ns - g as f64).abs() < (ns - best as f64).abs() {
-            best = g;
-        }
-    }
-    best
+/// `a` scaled to unit length, or `None` if it has no usable direction.
+fn unit(a: V3) -> Option<V3> {
+    let l = length(a);
+    (l > 0.0 && l.is_finite()).then(|| [a[0] / l, a[1] / l, a[2] / l])
 }
 
-/// Load an OBJ file as one mesh (all its objects), wound counter-clockwise as OBJ files are.
+/// The unit normal of a counter-clockwise triangle; a zero-area triangle gets +z.
+fn face_normal(a: V3, b: V3, c: V3) -> V3 {
+    unit(cross(sub(b, a), sub(c, a))).unwrap_or([0.0, 0.0, 1.0])
+}
+
+/// Load an OBJ file (and the MTL files it names) as one mesh named after the file stem.
+///
+/// Polygons are fanned into triangles. File normals are used when every face gives them (and made
+/// unit length); otherwise each triangle gets its flat counter-clockwise face normal. A missing or
+/// broken MTL file is not fatal: the faces get a grey plastic instead.
 pub fn load_obj(path: &Path) -> Result<Mesh, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read OBJ file: {e}", path.display()))?;
-    prescan(path, &text)?;
-    let opts = tobj::LoadOptions { triangulate: true, single_index: false, ignore_points: true, ignore_lines: true };
-    let (models, mats) = tobj::load_obj(path, &opts).map_err(|e| format!("{}: {e}", path.display()))?;
-    let mats = mats.unwrap_or_default();
-    let mut materials: Vec<Material> = mats
-        .iter()
-        .map(|m| {
-            let kd = m.diffuse.map(|d| d.map(|c| c as f64)).unwrap_or([0.7, 0.7, 0.7]);
-            let ka = m.ambient.map(|a| a.map(|c| c as f64)).filter(|a| a.iter().any(|&c| c > 0.0)).unwrap_or(kd);
-            let ks = m.specular.map(|s| s.map(|c| c as f64)).unwrap_or([0.3, 0.3, 0.3]);
-            Material { ambient: ka, diffuse: kd, specular: ks, gloss: gloss_from_ns(m.shininess.map(|s| s as f64).unwrap_or(16.0)) }
-        })
-        .collect();
-    let default_material = materials.len() as u32;
-    materials.push(Material::plastic([0.7, 0.7, 0.7]));
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read OBJ file: {}", path.display(), e))?;
+    let checked = prescan(path, &text)?;
+    if checked.faces == 0 {
+        return Err(format!("{}: OBJ file has no faces", path.display()));
+    }
+
+    // The update fills the options that tobj's optional features (merging, reordering) add.
+    #[allow(clippy::needless_update)]
+    let options =
+        tobj::LoadOptions { triangulate: true, single_index: false, ignore_points: true, ignore_lines: true, ..Default::default() };
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let (models, materials) = tobj::load_obj_buf(&mut checked.text.as_bytes(), &options, |mtl| tobj::load_mtl(dir.join(mtl)))
+        .map_err(|e| format!("{}: {}", path.display(), e))?;
+    // A missing MTL file leaves the faces without a material; they get the default below.
+    let file_materials: Vec<Material> = materials.unwrap_or_default().iter().map(convert_material).collect();
 
     let mut mesh = Mesh {
         name: path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "obj".into()),
         positions: Vec::new(),
         normals: Vec::new(),
-        materials,
+        materials: file_materials,
         triangles: Vec::new(),
         front_face: Winding::Ccw,
     };
-    for m in &models {
-        let me = &m.mesh;
-        let pbase = mesh.positions.len() as u32;
-        mesh.positions.extend(me.positions.chunks(3).map(|p| [p[0] as f64, p[1] as f64, p[2] as f64]));
-        let nbase = mesh.normals.len() as u32;
-        mesh.normals.extend(me.normals.chunks(3).map(|n| normalize([n[0] as f64, n[1] as f64, n[2] as f64])));
-        let material = me.material_id.filter(|&i| i < default_material as usize).map(|i| i as u32).unwrap_or(default_material);
-        for (t, tri) in me.indices.chunks(3).enumerate() {
-            if tri.len() < 3 {
-                continue;
-            }
-            let v = [pbase + tri[0], pbase + tri[1], pbase + tri[2]];
+    let mut default_material = None;
+    for model in &models {
+        let m = &model.mesh;
+        let base = mesh.positions.len() as u32;
+        mesh.positions.extend(m.positions.chunks_exact(3).map(|p| [p[0] as f64, p[1] as f64, p[2] as f64]));
+        let material = match m.material_id {
+            Some(i) if i < mesh.materials.len() => i as u32,
+            _ => *default_material.get_or_insert_with(|| {
+                mesh.materials.push(Material::plastic([0.7, 0.7, 0.7]));
+                (mesh.materials.len() - 1) as u32
+            }),
+        };
+        // tobj invents normals for faces without them, so file normals are only trusted when the
+        // prescan saw them on every face. Zero-length ones are marked None and replaced per corner.
+        let use_file_normals = checked.all_faces_have_normals && m.normal_indices.len() == m.indices.len();
+        let normal_base = mesh.normals.len() as u32;
+        let file_normals: Vec<Option<V3>> = if use_file_normals {
+            m.normals.chunks_exact(3).map(|n| unit([n[0] as f64, n[1] as f64, n[2] as f64])).collect()
+        } else {
+            Vec::new()
+        };
+        if use_file_normals {
+            mesh.normals.extend(file_normals.iter().map(|n| n.unwrap_or([0.0, 0.0, 1.0])));
+        }
+        for (corner, idx) in m.indices.chunks_exact(3).enumerate() {
+            let v = [base + idx[0], base + idx[1], base + idx[2]];
             let [a, b, c] = v.map(|i| mesh.positions[i as usize]);
-            let face = cross(sub(b, a), sub(c, a));
-            let face = if face.iter().all(|&x| x == 0.0) { [0.0, 0.0, 1.0] } else { normalize(face) };
-            let file_normals = me.normal_indices.len() >= 3 * (t + 1);
-            let n = if file_normals {
-                [0, 1, 2].map(|k| {
-                    let ni = nbase + me.normal_indices[3 * t + k];
-                    let nv = mesh.normals[ni as usize];
-                    if nv.iter().all(|&x| x == 0.0) || nv.iter().any(|x| !x.is_finite()) {
-                        mesh.normals.push(face);
-                        mesh.normals.len() as u32 - 1
-                    } else {
-                        ni
-                    }
+            let mut face = None;
+            let mut face_index = |normals: &mut Vec<V3>| {
+                *face.get_or_insert_with(|| {
+                    normals.push(face_normal(a, b, c));
+                    (normals.len() - 1) as u32
                 })
-            } else {
-                mesh.normals.push(face);
-                [mesh.normals.len() as u32 - 1; 3]
             };
+            let n: [u32; 3] = std::array::from_fn(|k| {
+                if use_file_normals {
+                    let ni = m.normal_indices[3 * corner + k];
+                    match file_normals.get(ni as usize) {
+                        Some(Some(_)) => normal_base + ni,
+                        _ => face_index(&mut mesh.normals),
+                    }
+                } else {
+                    face_index(&mut mesh.normals)
+                }
+            });
             mesh.triangles.push(Triangle { v, n, material });
         }
     }
     if mesh.triangles.is_empty() {
-        return Err(format!("{}: no faces: nothing to render", path.display()));
+        return Err(format!("{}: OBJ file has no faces", path.display()));
     }
-    mesh.validate().map_err(|e| format!("{}: {e}", path.display()))?;
+    mesh.validate().map_err(|e| format!("{}: {}", path.display(), e))?;
     Ok(mesh)
+}
+
+/// An MTL material in our Phong model: Kd, Ka (Kd when missing or black, since a black ambient
+/// would leave unlit sides invisible), Ks and Ns rounded to a power of two in 1..=16.
+fn convert_material(m: &tobj::Material) -> Material {
+    let colour = |c: Option<[f32; 3]>| -> Option<V3> {
+        c.filter(|c| c.iter().all(|x| x.is_finite())).map(|c| c.map(|x| (x as f64).clamp(0.0, 1.0)))
+    };
+    let diffuse = colour(m.diffuse).unwrap_or([0.7, 0.7, 0.7]);
+    let ambient = colour(m.ambient).filter(|a| a.iter().any(|&x| x > 0.0)).unwrap_or(diffuse);
+    let specular = colour(m.specular).unwrap_or([0.0; 3]);
+    let gloss = match m.shininess {
+        Some(ns) if ns.is_finite() => gloss_from_ns(ns as f64),
+        _ => 16,
+    };
+    Material { ambient, diffuse, specular, gloss }
+}
+
+/// The power of two in 1..=16 nearest to Ns on a log scale (MTL's Ns runs 0..1000; the chip's
+/// gloss is 1..=16, seed 001 eq. 4).
+fn gloss_from_ns(ns: f64) -> u32 {
+    if ns <= 1.0 {
+        return 1;
+    }
+    1 << (ns.log2().round().clamp(0.0, 4.0) as u32)
+}
+
+/// What the prescan learned: the text tobj is given, the number of faces, and whether all faces
+/// carry normal references.
+struct Checked {
+    text: String,
+    faces: usize,
+    all_faces_have_normals: bool,
+}
+
+/// Check every line of an OBJ file; return the text reduced to the statements tobj needs.
+///
+/// Statements the mesh does not use (o, g, s, vt, l, p, ...) are accepted. Comments are cut off
+/// before tobj sees the line (tobj would read `v 1 2 3 # note` as a fourth coordinate).
+fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
+    let (mut nv, mut nvt, mut nvn) = (0i64, 0i64, 0i64);
+    let mut out = String::with_capacity(text.len());
+    let mut faces = 0usize;
+    let mut all_faces_have_normals = true;
+    for (number, raw) in text.lines().enumerate() {
+        let err = |msg: String| format!("{}:{}: {}", path.display(), number + 1, msg);
+        let line = raw.split('#').next().unwrap_or("").trim();
+        let mut words = line.split_whitespace();
+        let keyword = words.next().unwrap_or("");
+        let args: Vec<&str> = words.collect();
+        let numbers = |what: &str| -> Result<Vec<f64>, String> {
+            args.iter()
+                .map(|w| match w.parse::<f64>() {
+                    Ok(x) if x.is_finite() => Ok(x),
+                    Ok(_) => Err(err(format!("non-finite coordinate '{}'", w))),
+                    Err(_) => Err(err(format!("malformed {}: '{}' is not a number", what, w))),
+                })
+                .collect()
+        };
+        // Statements tobj needs are passed on; everything else becomes an empty line.
+        let keep = match keyword {
+            "v" => {
+                let c = numbers("vertex")?;
+                match c.len() {
+                    3 | 6 => {}
+                    4 if c[3] == 0.0 => return Err(err("vertex has weight w = 0".into())),
+                    4 => {}
+                    n => return Err(err(format!("vertex needs 3 coordinates (and an optional w or r g b), found {} numbers", n))),
+                }
+                nv += 1;
+                true
+            }
+            "vn" => {
+                let c = numbers("normal")?;
+                if c.len() != 3 {
+                    return Err(err(format!("normal needs 3 components, found {}", c.len())));
+                }
+                nvn += 1;
+                true
+            }
+            "vt" => {
+                let c = numbers("texture coordinate")?;
+                if !(1..=3).contains(&c.len()) {
+                    return Err(err(format!("texture coordinate needs 1 to 3 numbers, found {}", c.len())));
+                }
+                nvt += 1;
+                // Texture coordinates are not used; tobj is not given them (it would reject `vt u`).
+                false
+            }
+            "f" => {
+                if args.len() < 3 {
+                    return Err(err(format!("face needs at least 3 vertices, found {}", args.len())));
+                }
+                let mut refs = Vec::with_capacity(args.len());
+                for word in &args {
+                    let (v, vt, vn) =
+                        parse_ref(word).ok_or_else(|| err(format!("malformed face vertex '{}' (expected i, i/j, i//k or i/j/k)", word)))?;
+                    let v = resolve(v, nv, "vertex", "vertices").map_err(&err)?;
+                    if let Some(t) = vt {
+                        resolve(t, nvt, "texture coordinate", "texture coordinates").map_err(&err)?;
+                    }
+                    let vn = match vn {
+                        Some(n) => Some(resolve(n, nvn, "normal", "normals").map_err(&err)?),
+                        None => None,
+                    };
+                    refs.push((v, vn));
+                }
+                all_faces_have_normals &= refs.iter().all(|r| r.1.is_some());
+                faces += 1;
+                // Rewritten with absolute indices and without texture coordinates: tobj then sees
+                // exactly what was checked.
+                out.push('f');
+                for (v, vn) in refs {
+                    match vn {
+                        Some(n) => out.push_str(&format!(" {}//{}", v, n)),
+                        None => out.push_str(&format!(" {}", v)),
+                    }
+                }
+                out.push('\n');
+                continue;
+            }
+            "usemtl" | "mtllib" => {
+                if args.is_empty() {
+                    return Err(err(format!("{} needs a name", keyword)));
+                }
+                true
+            }
+            "o" | "g" => true,
+            _ => false,
+        };
+        if keep {
+            out.push_str(line);
+        }
+        out.push('\n');
+    }
+    Ok(Checked { text: out, faces, all_faces_have_normals })
+}
+
+/// A face vertex `i`, `i/j`, `i//k` or `i/j/k` as (i, j, k); `None` if it is none of these.
+fn parse_ref(word: &str) -> Option<(i64, Option<i64>, Option<i64>)> {
+    let parts: Vec<&str> = word.split('/').collect();
+    let int = |s: &str| s.parse::<i64>().ok();
+    match parts.as_slice() {
+        [v] => Some((int(v)?, None, None)),
+        [v, t] => Some((int(v)?, Some(int(t)?), None)),
+        [v, t, n] => Some((int(v)?, if t.is_empty() { None } else { Some(int(t)?) }, Some(int(n)?))),
+        _ => None,
+    }
+}
+
+/// An OBJ index (1-based, or negative = counted back from the last one defined so far) as a
+/// 1-based absolute index, checked against the `count` defined so far.
+fn resolve(index: i64, count: i64, what: &str, plural: &str) -> Result<i64, String> {
+    let absolute = if index < 0 { count + 1 + index } else { index };
+    if index == 0 {
+        Err(format!("face refers to {} 0, but OBJ indices start at 1", what))
+    } else if absolute < 1 || absolute > count {
+        Err(format!("face refers to {} {} but only {} {} are defined", what, index, count, plural))
+    } else {
+        Ok(absolute)
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use std::path::PathBuf;
+    use std::sync::atomic::{AtomicUsize, Ordering};
 
-    fn file(name: &str, text: &str) -> PathBuf {
-        let d = std::env::temp_dir().join(format!("golden-obj-{}", std::process::id()));
-        std::fs::create_dir_all(&d).unwrap();
-        let p = d.join(name);
-        std::fs::write(&p, text).unwrap();
-        p
+    /// A fresh directory under the system temp dir, unique per test and process.
+    fn temp_dir(tag: &str) -> PathBuf {
+        static COUNTER: AtomicUsize = AtomicUsize::new(0);
+        let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+        let dir = std::env::temp_dir().join(format!("golden-obj-{}-{}-{}", std::process::id(), tag, n));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    /// Write `text` to `<fresh dir>/<name>` and load it.
+    fn load_text(name: &str, text: &str) -> (PathBuf, Result<Mesh, String>) {
+        let dir = temp_dir(name);
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        let result = load_obj(&path);
+        // Only the path's text is needed afterwards.
+        std::fs::remove_dir_all(&dir).unwrap();
+        (path, result)
+    }
+
+    const SQUARE: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+    #[test]
+    fn a_quad_face_becomes_two_triangles_with_ccw_face_normals() {
+        let (_, m) = load_text("quad.obj", &format!("{SQUARE}f 1 2 3 4\n"));
+        let m = m.unwrap();
+        assert_eq!(m.name, "quad");
+        assert_eq!(m.front_face, Winding::Ccw);
+        assert_eq!(m.triangles.len(), 2);
+        for t in &m.triangles {
+            for &n in &t.n {
+                assert_eq!(m.normals[n as usize], [0.0, 0.0, 1.0]);
+            }
+        }
+        m.validate().unwrap();
     }
 
     #[test]
-    fn a_quad_face_becomes_two_triangles() {
-        let m = load_obj(&file("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n")).unwrap();
-        assert_eq!(m.triangles.len(), 2);
-        assert_eq!(m.front_face, Winding::Ccw);
-        // Flat normals from counter-clockwise winding point along +z.
-        assert!(m.triangles.iter().all(|t| m.normals[t.n[0] as usize][2] > 0.99));
+    fn a_pentagon_is_fanned_into_three_triangles() {
+        let (_, m) = load_text("penta.obj", "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nf 1 2 3 4 5\n");
+        assert_eq!(m.unwrap().triangles.len(), 3);
+    }
+
+    #[test]
+    fn a_missing_file_error_names_the_path() {
+        let dir = temp_dir("missing");
+        let path = dir.join("does-not-exist.obj");
+        let e = load_obj(&path).unwrap_err();
+        std::fs::remove_dir_all(&dir).unwrap();
+        assert!(e.starts_with(&format!("{}: cannot read OBJ file:", path.display())), "{e}");
+    }
+
+    #[test]
+    fn a_nan_coordinate_is_an_error_naming_file_and_line() {
+        let (path, m) = load_text("nan.obj", "# a comment\nv 1 nan 0\nv 0 0 0\nv 1 1 1\nf 1 2 3\n");
+        assert_eq!(m.unwrap_err(), format!("{}:2: non-finite coordinate 'nan'", path.display()));
+    }
+
+    #[test]
+    fn an_infinite_normal_is_an_error_naming_file_and_line() {
+        let (path, m) = load_text("inf.obj", &format!("{SQUARE}vn 0 inf 1\nf 1 2 3\n"));
+        assert_eq!(m.unwrap_err(), format!("{}:5: non-finite coordinate 'inf'", path.display()));
+    }
+
+    #[test]
+    fn a_face_index_out_of_range_is_an_error_naming_the_line() {
+        let (path, m) = load_text("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+        assert_eq!(m.unwrap_err(), format!("{}:4: face refers to vertex 9 but only 3 vertices are defined", path.display()));
+    }
+
+    #[test]
+    fn a_face_may_only_refer_to_vertices_defined_before_it() {
+        let (path, m) = load_text("order.obj", "v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\n");
+        assert_eq!(m.unwrap_err(), format!("{}:3: face refers to vertex 3 but only 2 vertices are defined", path.display()));
+    }
+
+    #[test]
+    fn index_zero_and_bad_normal_references_are_errors_naming_the_line() {
+        let (path, m) = load_text("zero.obj", &format!("{SQUARE}f 0 1 2\n"));
+        assert!(m.unwrap_err().starts_with(&format!("{}:5: face refers to vertex 0", path.display())));
+        let (path, m) = load_text("badvn.obj", &format!("{SQUARE}vn 0 0 1\nf 1//1 2//1 3//2\n"));
+        assert_eq!(m.unwrap_err(), format!("{}:6: face refers to normal 2 but only 1 normals are defined", path.display()));
+    }
+
+    #[test]
+    fn a_vertex_with_too_few_numbers_is_an_error_naming_the_line() {
+        let (path, m) = load_text("short.obj", "v 0 0 0\nv 1 2\nv 0 1 0\nf 1 2 3\n");
+        let e = m.unwrap_err();
+        assert!(e.starts_with(&format!("{}:2: vertex needs 3 coordinates", path.display())), "{e}");
+    }
+
+    #[test]
+    fn malformed_lines_are_errors_naming_the_line() {
+        for (text, line) in [
+            ("v 0 0 0\nv 1 x 0\n", 2),
+            (&format!("{SQUARE}f 1 2\n") as &str, 5),
+            (&format!("{SQUARE}f 1 2 3/4/5/6\n"), 5),
+            (&format!("{SQUARE}f 1 2 a\n"), 5),
+            (&format!("{SQUARE}usemtl\nf 1 2 3\n"), 5),
+            ("v 1 1 1 0\n", 1),
+        ] {
+            let (path, m) = load_text("bad.obj", text);
+            let e = m.unwrap_err();
+            assert!(e.starts_with(&format!("{}:{}: ", path.display(), line)), "{text:?} gave {e}");
+        }
     }
 
     #[test]
     fn negative_indices_count_back_from_the_last_vertex() {
-        let m = load_obj(&file("neg.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n")).unwrap();
-        assert_eq!(m.triangles[0].v, [0, 1, 2]);
-    }
-
-    #[test]
-    fn errors_name_the_file_and_line() {
-        let cases = [
-            ("nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n", "nan.obj:2"),
-            ("inf.obj", "v 0 0 0\nv 1 0 0\nv 0 1 -inf\nf 1 2 3\n", "inf.obj:3"),
-            ("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 9\n", "range.obj:5"),
-            ("few.obj", "v 0 0\n", "few.obj:1"),
-            ("word.obj", "v 0 0 x\n", "word.obj:1"),
-            ("face.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "face.obj:3"),
-            ("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "zero.obj:4"),
-            ("normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//1 3//1\n", "normal.obj:4"),
-            ("empty.obj", "# nothing here\n", "empty.obj"),
-        ];
-        for (name, text, want) in cases {
-            let e = load_obj(&file(name, text)).unwrap_err();
-            assert!(e.contains(want), "{name}: {e}");
+        let (_, m) = load_text("neg.obj", "v 9 9 9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nvn 0 0 2\nf 2//-1 3//-1 4//1\n");
+        let m = m.unwrap();
+        assert_eq!(m.triangles.len(), 2);
+        for t in &m.triangles {
+            let p: Vec<V3> = t.v.iter().map(|&i| m.positions[i as usize]).collect();
+            assert_eq!(p, vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]);
         }
-        let e = load_obj(Path::new("/nonexistent/missing.obj")).unwrap_err();
-        assert!(e.contains("missing.obj") && e.contains("cannot read"), "{e}");
     }
 
     #[test]
-    fn a_missing_material_library_falls_back_to_grey() {
-        let m = load_obj(&file("mtl.obj", "mtllib nowhere.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).unwrap();
-        assert_eq!(m.triangles.len(), 1);
-        assert_eq!(m.materials[m.triangles[0].material as usize].diffuse, [0.7, 0.7, 0.7]);
+    fn file_normals_are_used_and_made_unit_length() {
+        let (_, m) = load_text("normals.obj", &format!("{SQUARE}vn 0 0 2\nvn 0 0 0\nf 1//1 2//1 3//2\n"));
+        let m = m.unwrap();
+        let t = m.triangles[0];
+        assert_eq!(m.normals[t.n[0] as usize], [0.0, 0.0, 1.0]);
+        // The zero-length file normal is replaced by the face normal.
+        assert_eq!(m.normals[t.n[2] as usize], [0.0, 0.0, 1.0]);
+        assert!(m.normals.iter().all(|n| (length(*n) - 1.0).abs() < 1e-12));
     }
 
     #[test]
-    fn materials_and_file_normals_are_used() {
-        let d = file("lib.mtl", "newmtl red\nKd 0.9 0.1 0.1\nKs 0.5 0.5 0.5\nNs 10\n");
-        let _ = d;
-        let m = load_obj(&file("withmtl.obj", "mtllib lib.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nf 1//1 2//1 3//1\n")).unwrap();
-        let mat = &m.materials[m.triangles[0].material as usize];
-        assert_eq!(mat.diffuse, [0.9f32 as f64, 0.1f32 as f64, 0.1f32 as f64]);
-        assert_eq!(mat.gloss, 8);
+    fn a_zero_area_face_gets_normal_plus_z() {
+        let (_, m) = load_text("flat.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\n");
+        let m = m.unwrap();
         assert_eq!(m.normals[m.triangles[0].n[0] as usize], [0.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn a_missing_mtl_file_still_loads_with_the_default_material() {
+        let (_, m) = load_text("nomtl.obj", &format!("mtllib nowhere.mtl\nusemtl red\n{SQUARE}f 1 2 3\n"));
+        let m = m.unwrap();
+        assert_eq!(m.materials, vec![Material::plastic([0.7, 0.7, 0.7])]);
+        assert_eq!(m.triangles[0].material, 0);
+    }
+
+    #[test]
+    fn mtl_materials_are_converted_with_gloss_a_power_of_two() {
+        let dir = temp_dir("mtl");
+        std::fs::write(
+            dir.join("m.mtl"),
+            "newmtl red\nKd 0.8 0.1 0.1\nKa 0 0 0\nKs 0.5 0.5 0.5\nNs 96\nnewmtl dull\nKd 0.2 0.3 0.4\nNs 3\n",
+        )
+        .unwrap();
+        let path = dir.join("two.obj");
+        std::fs::write(&path, format!("mtllib m.mtl\n{SQUARE}usemtl dull\nf 1 2 3\nusemtl red\nf 1 3 4\n")).unwrap();
+        let m = load_obj(&path).unwrap();
+        let red = &m.materials[m.triangles[1].material as usize];
+        // tobj reads MTL numbers as f32.
+        assert_eq!(red.diffuse, [0.8f32, 0.1, 0.1].map(|x| x as f64));
+        assert_eq!(red.ambient, red.diffuse, "black Ka falls back to Kd");
+        assert_eq!(red.gloss, 16);
+        let dull = &m.materials[m.triangles[0].material as usize];
+        assert_eq!(dull.gloss, 4);
+        assert_eq!(dull.specular, [0.0; 3]);
+        m.validate().unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn gloss_is_the_nearest_power_of_two_clamped_to_1_to_16() {
+        assert_eq!([0.0, 1.0, 1.4, 1.5, 3.0, 5.0, 6.0, 12.0, 1000.0].map(gloss_from_ns), [1, 1, 1, 2, 4, 4, 8, 16, 16]);
+    }
+
+    #[test]
+    fn an_empty_file_is_an_error_not_a_panic() {
+        let (path, m) = load_text("empty.obj", "");
+        let e = m.unwrap_err();
+        assert!(e.contains(&path.display().to_string()) && e.contains("no faces"), "{e}");
+        let (_, m) = load_text("points.obj", &format!("{SQUARE}l 1 2\np 3\n"));
+        assert!(m.unwrap_err().contains("no faces"));
+    }
+
+    #[test]
+    fn groups_objects_comments_and_unknown_statements_are_accepted() {
+        let text = format!("# header\nmtllib none.mtl\no thing\ng part\ns 1\nvt 0.5\n{SQUARE}usemtl x\nf 1/1 2/1 3/1 # trailing comment\ng other\nf 1 3 4\nl 1 2\n");
+        let (_, m) = load_text("misc.obj", &text);
+        assert_eq!(m.unwrap().triangles.len(), 2);
     }
 }
