@@ -11,16 +11,19 @@
 
 pub mod common;
 pub mod proof;
+pub mod rc;
 
 /// The tops that can be generated, and what each is.
 pub const TOPS: &[(&str, &str)] = &[
     ("opp", "PROOF object-processor pipeline: 8 object processors, FIFO depth 1 (seed 002 section 4)"),
+    ("rc", "Rasterizer Controller for a 320x200 screen: setup, traversal, Z-test, Z/I-buffer ports"),
 ];
 
 /// Generate the Verilog of the top named `block` (module name = `block`).
 pub fn verilog_top(block: &str) -> Result<String, String> {
     match block {
         "opp" => proof::verilog_opp("opp", 8, 1),
+        "rc" => rc::verilog(320, 200),
         _ => Err(format!(
             "unknown block '{block}': known blocks are {}",
             TOPS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")

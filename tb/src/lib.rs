@@ -10,4 +10,5 @@
 //! [`common`] holds what every bench shares: VCD locations, a seeded random source, tool discovery.
 
 pub mod common;
+pub mod rc;
 pub mod proof;

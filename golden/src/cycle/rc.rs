@@ -1,0 +1,515 @@
+//! Cycle-accurate model of the Rasterizer Controller (seed 001 §2.3.1, §3.1): what every output port of
+//! the RTL top `rc` shows in every clock cycle, given the inputs of that cycle.
+//!
+//! Written from the timing specification below (also in `docs/rc.md`) and the algorithmic model
+//! [`crate::raster`]: the arithmetic of a triangle (culling, edge functions, bounding box, depth plane)
+//! is *taken from* [`crate::raster::setup`], only *when* things happen is modelled here. The RTL
+//! computes the same numbers with its own datapath; the testbench compares the two every cycle.
+//!
+//! # Ports (all synchronous to one clock; outputs depend on registers and, for the write ports, on
+//! `z_rd_data` of the same cycle; an output whose valid/enable is low is driven 0)
+//!
+//! | port | dir | meaning |
+//! |---|---|---|
+//! | `cmd` valid/ready/data | in | commands: frame start (`clear`), triangle, end of frame |
+//! | `result` valid/ready/data | out | per triangle {index, culled, zero_area, visible}; `eof` marker |
+//! | `z_re`, `z_rd_addr` | out | Z-buffer read: data on `z_rd_data` in the next cycle |
+//! | `z_rd_data` | in | 24-bit depth read one cycle after `z_re` (contents before that edge's write) |
+//! | `z_we`, `z_wr_addr`, `z_wr_data` | out | Z-buffer write, performed at the rising edge |
+//! | `i_we`, `i_wr_addr`, `i_wr_data` | out | I-buffer write, performed at the rising edge |
+//!
+//! Addresses are `y * width + x` (20 bits). `z_rd_data` is only used in the cycle after `z_re`.
+//!
+//! # Timing
+//!
+//! *Setup unit* (one command at a time; `cmd.ready` is high exactly in its `Idle` state):
+//! * Frame start and end of frame: accepted in cycle t, handed to the traversal from cycle t+1.
+//! * Triangle accepted in cycle t: t+1 determinant, t+2 culling / canonical order / bounding box and
+//!   divider start. A culled triangle or one with an empty clamped bounding box is handed over from
+//!   t+3. Otherwise t+3..t+7 edge start values and the depth numerators, the 25-step reciprocal runs
+//!   t+3..t+27 and is taken in t+28, t+29..t+34 the depth plane, handed over from t+35.
+//! * A record waits in the hand-over register until the traversal takes it; the setup unit is `Idle`
+//!   (accepting) the cycle after.
+//!
+//! *Traversal* (takes a record only in its `Idle` state):
+//! * Frame start: with `clear`, W*H cycles of clear writes (Z = 2^24-1, I = 0, one pixel per clock,
+//!   both buffers at once) starting the cycle after; without `clear`, nothing (the buffers were
+//!   cleared elsewhere, e.g. behind the Color Shader's scan-out).
+//! * A triangle to walk: loaded in the cycle it is taken, then one candidate pixel per clock in raster
+//!   order over the clamped bounding box; the cycle after the last candidate it is `Idle` again.
+//! * Results (a walked triangle's last candidate, a culled/empty triangle, end of frame) go through the
+//!   z-test stage into a one-word result register. Such a token is issued only when the result register
+//!   is empty and the z-test stage holds no other result: otherwise the traversal waits (on its last
+//!   candidate, or in `Idle` before taking the record).
+//!
+//! *Z-test stage* (the cycle after a candidate was issued): `z_rd_data` arrives; if the previous cycle
+//! wrote the same address, that written value is used instead (forwarding, no stall); pass = inside and
+//! z < old. On a pass Z and I are written in this cycle. The triangle's visible flag is the OR of its
+//! passes; its result enters the result register at the end of the cycle of its last candidate's
+//! z-test. The end-of-frame result is pushed after every earlier write has been performed.
+
+use crate::format::{Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND};
+use crate::raster::{setup, Culled, CullMode, FrontFace, Setup};
+
+/// Cycles from accepting a triangle to its record being ready, when it is drawn (see module doc).
+pub const SETUP_CYCLES_DRAWN: u64 = 35;
+/// Cycles from accepting a triangle to its record being ready, when it is culled or has an empty box.
+pub const SETUP_CYCLES_SHORT: u64 = 3;
+/// Steps of the restoring divider (RECIP_BITS + 1).
+pub const RECIP_STEPS: u32 = 25;
+/// Width of a triangle index on the ports.
+pub const INDEX_BITS: u32 = 16;
+
+/// What a command does.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum CmdKind {
+    /// Start a frame; `clear` asks the RC to clear both buffers itself.
+    Frame,
+    /// Draw a triangle.
+    Triangle,
+    /// End of frame: answered with an end-of-frame result after every earlier triangle's result.
+    EndOfFrame,
+}
+
+/// One word on the command port.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct RcCmd {
+    pub kind: CmdKind,
+    pub clear: bool,
+    pub index: u32,
+    pub cull: CullMode,
+    pub front: FrontFace,
+    pub v: [WinVertex; 3],
+}
+
+impl RcCmd {
+    pub fn frame(clear: bool) -> RcCmd {
+        RcCmd { kind: CmdKind::Frame, clear, ..RcCmd::idle() }
+    }
+    pub fn end_of_frame() -> RcCmd {
+        RcCmd { kind: CmdKind::EndOfFrame, ..RcCmd::idle() }
+    }
+    /// A triangle command; the vertices must fit the port formats (see [`RcCmd::check`]).
+    pub fn triangle(index: u32, v: [WinVertex; 3], cull: CullMode, front: FrontFace) -> Result<RcCmd, String> {
+        let c = RcCmd { kind: CmdKind::Triangle, clear: false, index, cull, front, v };
+        c.check()?;
+        Ok(c)
+    }
+    /// The value the bench drives while `valid` is low.
+    pub fn idle() -> RcCmd {
+        RcCmd {
+            kind: CmdKind::Frame,
+            clear: false,
+            index: 0,
+            cull: CullMode::Back,
+            front: FrontFace::Ccw,
+            v: [WinVertex::default(); 3],
+        }
+    }
+    /// Whether the command fits the port: x, y in S11.4 16 bits, z in 24 bits, index in 16 bits.
+    pub fn check(&self) -> Result<(), String> {
+        if self.index >= 1 << INDEX_BITS {
+            return Err(format!("triangle index {} does not fit the RC's {INDEX_BITS}-bit index", self.index));
+        }
+        for (k, p) in self.v.iter().enumerate() {
+            if p.x < i16::MIN as i32 || p.x > i16::MAX as i32 || p.y < i16::MIN as i32 || p.y > i16::MAX as i32 {
+                return Err(format!(
+                    "triangle {}: vertex {k} ({}, {}) subpixels is outside the 16-bit S11.4 window format",
+                    self.index, p.x, p.y
+                ));
+            }
+            if p.z > DEPTH_MAX {
+                return Err(format!("triangle {}: vertex {k} depth {} exceeds 24 bits", self.index, p.z));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// One word on the result port.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+pub struct RcResult {
+    pub eof: bool,
+    pub index: u32,
+    pub culled: bool,
+    pub zero_area: bool,
+    pub visible: bool,
+}
+
+/// The inputs of one cycle.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct RcInputs {
+    pub cmd_valid: bool,
+    pub cmd: RcCmd,
+    pub res_ready: bool,
+    pub z_rd_data: u32,
+}
+
+/// The outputs of one cycle.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+pub struct RcOutputs {
+    pub cmd_ready: bool,
+    pub res_valid: bool,
+    pub res: RcResult,
+    pub z_re: bool,
+    pub z_rd_addr: u32,
+    pub z_we: bool,
+    pub z_wr_addr: u32,
+    pub z_wr_data: u32,
+    pub i_we: bool,
+    pub i_wr_addr: u32,
+    pub i_wr_data: u32,
+}
+
+impl RcOutputs {
+    /// The ports as (name, value) pairs, in a fixed order: what benches compare and print.
+    pub fn ports(&self) -> [(&'static str, u64); 15] {
+        [
+            ("cmd_ready", self.cmd_ready as u64),
+            ("res_valid", self.res_valid as u64),
+            ("res.eof", self.res.eof as u64),
+            ("res.index", self.res.index as u64),
+            ("res.culled", self.res.culled as u64),
+            ("res.zero_area", self.res.zero_area as u64),
+            ("res.visible", self.res.visible as u64),
+            ("z_re", self.z_re as u64),
+            ("z_rd_addr", self.z_rd_addr as u64),
+            ("z_we", self.z_we as u64),
+            ("z_wr_addr", self.z_wr_addr as u64),
+            ("z_wr_data", self.z_wr_data as u64),
+            ("i_we", self.i_we as u64),
+            ("i_wr_addr", self.i_wr_addr as u64),
+            ("i_wr_data", self.i_wr_data as u64),
+        ]
+    }
+}
+
+/// What the setup unit hands to the traversal.
+#[derive(Copy, Clone, Debug)]
+enum Record {
+    Frame { clear: bool },
+    EndOfFrame,
+    /// Culled, zero area or empty bounding box: a result without traversal.
+    Skip { index: u32, culled: Option<Culled> },
+    Walk { index: u32, setup: Setup },
+}
+
+#[derive(Copy, Clone, Debug, PartialEq)]
+enum SetupState {
+    Idle,
+    /// Waiting `n` more cycles before the record is ready (n = 0: ready).
+    Busy(u64),
+}
+
+/// A token entering the z-test stage.
+#[derive(Copy, Clone, Debug, PartialEq)]
+enum Token {
+    None,
+    Clear { addr: u32 },
+    Frag { inside: bool, last: bool, addr: u32, z: u32, index: u32 },
+    Result(RcResult),
+}
+
+impl Token {
+    fn pushes_result(&self) -> bool {
+        matches!(self, Token::Result(_) | Token::Frag { last: true, .. })
+    }
+}
+
+#[derive(Copy, Clone, Debug, PartialEq)]
+enum TravState {
+    Idle,
+    Clear { addr: u32 },
+    Walk { x: i32, y: i32 },
+}
+
+/// The cycle-accurate RC.
+#[derive(Clone, Debug)]
+pub struct RcModel {
+    screen: Screen,
+    // setup unit
+    sstate: SetupState,
+    pending: Option<Record>,
+    // traversal
+    tstate: TravState,
+    walking: Option<(u32, Setup)>,
+    // z-test stage
+    f1: Token,
+    fwd: Option<(u32, u32)>,
+    vis: bool,
+    // result register
+    res: Option<RcResult>,
+    /// Cycles stepped so far.
+    pub cycle: u64,
+}
+
+impl RcModel {
+    pub fn new(screen: Screen) -> RcModel {
+        RcModel {
+            screen,
+            sstate: SetupState::Idle,
+            pending: None,
+            tstate: TravState::Idle,
+            walking: None,
+            f1: Token::None,
+            fwd: None,
+            vis: false,
+            res: None,
+            cycle: 0,
+        }
+    }
+
+    pub fn screen(&self) -> Screen {
+        self.screen
+    }
+
+    /// Whether nothing is in flight: no command in setup, the traversal idle, no result waiting.
+    pub fn is_idle(&self) -> bool {
+        self.sstate == SetupState::Idle && self.tstate == TravState::Idle && self.f1 == Token::None && self.res.is_none()
+    }
+
+    fn addr(&self, x: i32, y: i32) -> u32 {
+        y as u32 * self.screen.width + x as u32
+    }
+
+    /// The record the setup unit offers this cycle, if ready.
+    fn offered(&self) -> Option<Record> {
+        match self.sstate {
+            SetupState::Busy(0) => self.pending,
+            _ => None,
+        }
+    }
+
+    /// The token the traversal issues this cycle and whether it takes the offered record.
+    fn traversal(&self) -> (Token, bool) {
+        let result_free = self.res.is_none() && !self.f1.pushes_result();
+        match self.tstate {
+            TravState::Clear { addr } => (Token::Clear { addr }, false),
+            TravState::Walk { x, y } => {
+                let (index, s) = self.walking.expect("walking without a triangle");
+                let last = x == s.bbox.x1 && y == s.bbox.y1;
+                if last && !result_free {
+                    return (Token::None, false);
+                }
+                let inside = s.covers(x, y);
+                if !inside && !last {
+                    return (Token::None, false);
+                }
+                let z = if inside { s.depth_at(x, y) } else { 0 };
+                (Token::Frag { inside, last, addr: self.addr(x, y), z, index }, false)
+            }
+            TravState::Idle => match self.offered() {
+                None => (Token::None, false),
+                Some(Record::Frame { .. }) | Some(Record::Walk { .. }) => (Token::None, true),
+                Some(Record::EndOfFrame) if result_free => (Token::Result(RcResult { eof: true, ..RcResult::default() }), true),
+                Some(Record::Skip { index, culled }) if result_free => (
+                    Token::Result(RcResult {
+                        eof: false,
+                        index,
+                        culled: culled.is_some(),
+                        zero_area: culled == Some(Culled::ZeroArea),
+                        visible: false,
+                    }),
+                    true,
+                ),
+                Some(_) => (Token::None, false),
+            },
+        }
+    }
+
+    /// The z-test stage's decision this cycle: (write, pass).
+    fn z_test(&self, z_rd_data: u32) -> (Option<(u32, u32, u32)>, bool) {
+        match self.f1 {
+            Token::Clear { addr } => (Some((addr, DEPTH_MAX, INDEX_BACKGROUND)), false),
+            Token::Frag { inside: true, addr, z, index, .. } => {
+                let old = match self.fwd {
+                    Some((a, d)) if a == addr => d,
+                    _ => z_rd_data,
+                };
+                if z < old {
+                    (Some((addr, z, index)), true)
+                } else {
+                    (None, false)
+                }
+            }
+            _ => (None, false),
+        }
+    }
+
+    /// One clock cycle: the outputs during the cycle (before the rising edge), then the edge.
+    pub fn step(&mut self, inp: &RcInputs) -> RcOutputs {
+        let (tok, take) = self.traversal();
+        let (write, pass) = self.z_test(inp.z_rd_data);
+        let mut out = RcOutputs { cmd_ready: self.sstate == SetupState::Idle, ..RcOutputs::default() };
+        if let Some(r) = self.res {
+            out.res_valid = true;
+            out.res = r;
+        }
+        if let Token::Frag { inside: true, addr, .. } = tok {
+            out.z_re = true;
+            out.z_rd_addr = addr;
+        }
+        if let Some((addr, z, i)) = write {
+            (out.z_we, out.z_wr_addr, out.z_wr_data) = (true, addr, z);
+            (out.i_we, out.i_wr_addr, out.i_wr_data) = (true, addr, i);
+        }
+
+        // ---- rising edge ----
+        // Result register: pop, then push from the z-test stage.
+        if out.res_valid && inp.res_ready {
+            self.res = None;
+        }
+        match self.f1 {
+            Token::Result(r) => self.res = Some(r),
+            Token::Frag { last: true, index, .. } => {
+                self.res = Some(RcResult { index, visible: self.vis || pass, ..RcResult::default() });
+                self.vis = false;
+            }
+            Token::Frag { .. } => self.vis |= pass,
+            _ => {}
+        }
+        self.fwd = write.map(|(a, z, _)| (a, z));
+        self.f1 = tok;
+
+        // Traversal.
+        let offered = self.offered();
+        match self.tstate {
+            TravState::Clear { addr } => {
+                self.tstate = if addr + 1 == self.screen.width * self.screen.height { TravState::Idle } else { TravState::Clear { addr: addr + 1 } };
+            }
+            TravState::Walk { x, y } => {
+                let (_, s) = self.walking.unwrap();
+                let last = x == s.bbox.x1 && y == s.bbox.y1;
+                if last {
+                    if tok != Token::None {
+                        self.tstate = TravState::Idle;
+                        self.walking = None;
+                    }
+                } else if x == s.bbox.x1 {
+                    self.tstate = TravState::Walk { x: s.bbox.x0, y: y + 1 };
+                } else {
+                    self.tstate = TravState::Walk { x: x + 1, y };
+                }
+            }
+            TravState::Idle => {
+                if take {
+                    match offered.unwrap() {
+                        Record::Frame { clear: true } => self.tstate = TravState::Clear { addr: 0 },
+                        Record::Walk { index, setup } => {
+                            self.tstate = TravState::Walk { x: setup.bbox.x0, y: setup.bbox.y0 };
+                            self.walking = Some((index, setup));
+                        }
+                        _ => {}
+                    }
+                }
+            }
+        }
+
+        // Setup unit.
+        match self.sstate {
+            SetupState::Idle => {
+                if inp.cmd_valid {
+                    let c = inp.cmd;
+                    let (rec, cycles) = match c.kind {
+                        CmdKind::Frame => (Record::Frame { clear: c.clear }, 0),
+                        CmdKind::EndOfFrame => (Record::EndOfFrame, 0),
+                        CmdKind::Triangle => match setup(&c.v, c.cull, c.front, self.screen) {
+                            Err(culled) => (Record::Skip { index: c.index, culled: Some(culled) }, SETUP_CYCLES_SHORT - 1),
+                            Ok(s) if s.bbox.is_empty() => (Record::Skip { index: c.index, culled: None }, SETUP_CYCLES_SHORT - 1),
+                            Ok(s) => (Record::Walk { index: c.index, setup: s }, SETUP_CYCLES_DRAWN - 1),
+                        },
+                    };
+                    self.pending = Some(rec);
+                    self.sstate = SetupState::Busy(cycles);
+                }
+            }
+            SetupState::Busy(0) => {
+                if take {
+                    self.pending = None;
+                    self.sstate = SetupState::Idle;
+                }
+            }
+            SetupState::Busy(n) => self.sstate = SetupState::Busy(n - 1),
+        }
+        self.cycle += 1;
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: i32, y: i32, z: u32) -> WinVertex {
+        WinVertex { x, y, z }
+    }
+
+    /// Drive one command and idle inputs until the model is idle, with an ideal 1-cycle memory.
+    fn run(m: &mut RcModel, cmds: &[RcCmd], z: &mut [u32], i: &mut [u32]) -> (Vec<(u64, RcResult)>, u64) {
+        let mut results = Vec::new();
+        let mut next = 0;
+        let mut rd = 0u32;
+        for _ in 0..1_000_000u64 {
+            let valid = next < cmds.len();
+            let inp = RcInputs { cmd_valid: valid, cmd: if valid { cmds[next] } else { RcCmd::idle() }, res_ready: true, z_rd_data: rd };
+            let o = m.step(&inp);
+            if valid && o.cmd_ready {
+                next += 1;
+            }
+            if o.res_valid {
+                results.push((m.cycle - 1, o.res));
+            }
+            if o.z_re {
+                rd = z[o.z_rd_addr as usize];
+            }
+            if o.z_we {
+                z[o.z_wr_addr as usize] = o.z_wr_data;
+            }
+            if o.i_we {
+                i[o.i_wr_addr as usize] = o.i_wr_data;
+            }
+            if next == cmds.len() && m.is_idle() {
+                return (results, m.cycle);
+            }
+        }
+        panic!("model did not go idle");
+    }
+
+    #[test]
+    fn a_drawn_triangle_takes_the_documented_setup_latency_then_one_pixel_per_clock() {
+        let screen = Screen::new(16, 16).unwrap();
+        let mut m = RcModel::new(screen);
+        // A 4x4-pixel box, clockwise (det > 0), drawn with CullMode::None.
+        let t = RcCmd::triangle(7, [v(0, 0, 10), v(64, 0, 10), v(0, 64, 10)], CullMode::None, FrontFace::Ccw).unwrap();
+        let (mut z, mut i) = (vec![DEPTH_MAX; 256], vec![0; 256]);
+        let (res, _) = run(&mut m, &[t], &mut z, &mut i);
+        // Accepted in cycle 0, record ready in cycle 35 and taken there, 16 candidates in 36..=51,
+        // the last one's z-test in 52, result visible in the register in 53.
+        assert_eq!(res[0], (53, RcResult { index: 7, visible: true, ..Default::default() }));
+        // Pixels whose centres are inside: X + Y < 4 with the diagonal excluded (not top-left) -> 6.
+        assert_eq!(i.iter().filter(|&&x| x == 7).count(), 6);
+    }
+
+    #[test]
+    fn clear_takes_one_cycle_per_pixel_for_both_buffers() {
+        let screen = Screen::new(8, 4).unwrap();
+        let mut m = RcModel::new(screen);
+        let (mut z, mut i) = (vec![5; 32], vec![9; 32]);
+        let (res, cycles) = run(&mut m, &[RcCmd::frame(true), RcCmd::end_of_frame()], &mut z, &mut i);
+        assert!(z.iter().all(|&d| d == DEPTH_MAX) && i.iter().all(|&x| x == 0));
+        assert_eq!(res.len(), 1);
+        assert!(res[0].1.eof);
+        // Frame accepted in 0, taken by the traversal in 1, clear tokens 2..=33 (32 pixels).
+        assert!(cycles >= 32 + 2 && cycles <= 32 + 8, "cycles {cycles}");
+    }
+
+    #[test]
+    fn commands_outside_the_port_formats_are_rejected_with_the_reason() {
+        let e = RcCmd::triangle(1, [v(40000, 0, 0), v(0, 0, 0), v(0, 1, 0)], CullMode::None, FrontFace::Ccw).unwrap_err();
+        assert!(e.contains("S11.4"), "{e}");
+        let e = RcCmd::triangle(1, [v(0, 0, 1 << 24), v(0, 0, 0), v(0, 1, 0)], CullMode::None, FrontFace::Ccw).unwrap_err();
+        assert!(e.contains("24 bits"), "{e}");
+        let e = RcCmd::triangle(70000, [v(0, 0, 0); 3], CullMode::None, FrontFace::Ccw).unwrap_err();
+        assert!(e.contains("16-bit index"), "{e}");
+    }
+}

@@ -1,0 +1,218 @@
+//! `z_test`: the RC's Z-test stage (seed 001 §3.1: the index of a visible pixel goes to the I-buffer)
+//! and its result register.
+//!
+//! ```text
+//!                 +-----------------------------------+
+//!  tok_* -------->| F1 token register                 |--> z_we, z_wr_addr, z_wr_data
+//!  z_rd_data ---->| old = forwarded ? last write      |--> i_we, i_wr_addr, i_wr_data
+//!                 |       : z_rd_data                 |--> result (valid/ready/data)
+//!                 | pass = covered & z < old          |--> result_free
+//!  clock -------->| visible |= pass; result register  |
+//!                 +-----------------------------------+
+//! ```
+//!
+//! A token issued by the traversal in cycle t (with its Z read) is in F1 in cycle t+1, when the read
+//! data arrives. A read returns the memory's contents *before* the write of the same edge, so the only
+//! write a fragment can miss is the one performed at the end of cycle t, i.e. by the token in F1 during
+//! t. That write (address, data) is kept in a forwarding register and used instead of `z_rd_data` when
+//! the addresses match: a fragment of the next triangle on the same pixel sees the new depth without a
+//! stall. On a pass, Z and I are written in the same cycle (combinationally from `z_rd_data`). A clear
+//! token writes 2^24-1 and 0. Every output is 0 when its enable or valid is low.
+
+use super::RcResult;
+use super::traversal::{TOK_CLEAR, TOK_FRAG, TOK_RESULT};
+use crate::common::StreamOut;
+use rust_hdl::prelude::*;
+
+#[derive(LogicBlock)]
+pub struct ZTest {
+    pub clock: Signal<In, Clock>,
+    // From the traversal
+    pub tok_kind: Signal<In, Bits<2>>,
+    pub tok_covered: Signal<In, Bit>,
+    pub tok_last: Signal<In, Bit>,
+    pub tok_addr: Signal<In, Bits<20>>,
+    pub tok_z: Signal<In, Bits<24>>,
+    pub tok_index: Signal<In, Bits<16>>,
+    pub tok_eof: Signal<In, Bit>,
+    pub tok_culled: Signal<In, Bit>,
+    pub tok_zero_area: Signal<In, Bit>,
+    // To the traversal
+    /// A result token issued this cycle will find the result register empty.
+    pub result_free: Signal<Out, Bit>,
+    // From the Z-buffer
+    /// Depth read one cycle earlier.
+    pub z_rd_data: Signal<In, Bits<24>>,
+    // To the Z-buffer and the I-buffer
+    pub z_we: Signal<Out, Bit>,
+    pub z_wr_addr: Signal<Out, Bits<20>>,
+    pub z_wr_data: Signal<Out, Bits<24>>,
+    pub i_we: Signal<Out, Bit>,
+    pub i_wr_addr: Signal<Out, Bits<20>>,
+    pub i_wr_data: Signal<Out, Bits<16>>,
+    // To the result port
+    pub result: StreamOut<RcResult>,
+
+    f1_kind: DFF<Bits<2>>,
+    f1_covered: DFF<Bit>,
+    f1_last: DFF<Bit>,
+    f1_addr: DFF<Bits<20>>,
+    f1_z: DFF<Bits<24>>,
+    f1_index: DFF<Bits<16>>,
+    f1_eof: DFF<Bit>,
+    f1_culled: DFF<Bit>,
+    f1_zero_area: DFF<Bit>,
+    fwd_valid: DFF<Bit>,
+    fwd_addr: DFF<Bits<20>>,
+    fwd_z: DFF<Bits<24>>,
+    visible: DFF<Bit>,
+    res_valid: DFF<Bit>,
+    res: DFF<RcResult>,
+
+    old_z: Signal<Local, Bits<24>>,
+    pass: Signal<Local, Bit>,
+    pushes: Signal<Local, Bit>,
+
+    depth_max: Constant<Bits<24>>,
+    k0_24: Constant<Bits<24>>,
+    k0_20: Constant<Bits<20>>,
+    k0_16: Constant<Bits<16>>,
+    tok_clear: Constant<Bits<2>>,
+    tok_frag: Constant<Bits<2>>,
+    tok_result: Constant<Bits<2>>,
+}
+
+impl Default for ZTest {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            tok_kind: Default::default(),
+            tok_covered: Default::default(),
+            tok_last: Default::default(),
+            tok_addr: Default::default(),
+            tok_z: Default::default(),
+            tok_index: Default::default(),
+            tok_eof: Default::default(),
+            tok_culled: Default::default(),
+            tok_zero_area: Default::default(),
+            result_free: Default::default(),
+            z_rd_data: Default::default(),
+            z_we: Default::default(),
+            z_wr_addr: Default::default(),
+            z_wr_data: Default::default(),
+            i_we: Default::default(),
+            i_wr_addr: Default::default(),
+            i_wr_data: Default::default(),
+            result: Default::default(),
+            f1_kind: Default::default(),
+            f1_covered: Default::default(),
+            f1_last: Default::default(),
+            f1_addr: Default::default(),
+            f1_z: Default::default(),
+            f1_index: Default::default(),
+            f1_eof: Default::default(),
+            f1_culled: Default::default(),
+            f1_zero_area: Default::default(),
+            fwd_valid: Default::default(),
+            fwd_addr: Default::default(),
+            fwd_z: Default::default(),
+            visible: Default::default(),
+            res_valid: Default::default(),
+            res: Default::default(),
+            old_z: Default::default(),
+            pass: Default::default(),
+            pushes: Default::default(),
+            depth_max: Constant::new(((1u64 << 24) - 1).into()),
+            k0_24: Constant::new(0.into()),
+            k0_20: Constant::new(0.into()),
+            k0_16: Constant::new(0.into()),
+            tok_clear: Constant::new(TOK_CLEAR.into()),
+            tok_frag: Constant::new(TOK_FRAG.into()),
+            tok_result: Constant::new(TOK_RESULT.into()),
+        }
+    }
+}
+
+impl Logic for ZTest {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, f1_kind, f1_covered, f1_last, f1_addr, f1_z, f1_index, f1_eof, f1_culled, f1_zero_area, fwd_valid,
+            fwd_addr, fwd_z, visible, res_valid, res
+        );
+        // F1 takes every token.
+        self.f1_kind.d.next = self.tok_kind.val();
+        self.f1_covered.d.next = self.tok_covered.val();
+        self.f1_last.d.next = self.tok_last.val();
+        self.f1_addr.d.next = self.tok_addr.val();
+        self.f1_z.d.next = self.tok_z.val();
+        self.f1_index.d.next = self.tok_index.val();
+        self.f1_eof.d.next = self.tok_eof.val();
+        self.f1_culled.d.next = self.tok_culled.val();
+        self.f1_zero_area.d.next = self.tok_zero_area.val();
+
+        // The Z-test with forwarding of last cycle's write.
+        self.old_z.next = self.z_rd_data.val();
+        if self.fwd_valid.q.val() & (self.fwd_addr.q.val() == self.f1_addr.q.val()) {
+            self.old_z.next = self.fwd_z.q.val();
+        }
+        self.pass.next = (self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_covered.q.val() & (self.f1_z.q.val() < self.old_z.val());
+        self.z_we.next = false;
+        self.z_wr_addr.next = self.k0_20.val();
+        self.z_wr_data.next = self.k0_24.val();
+        self.i_wr_data.next = self.k0_16.val();
+        if self.pass.val() {
+            self.z_we.next = true;
+            self.z_wr_addr.next = self.f1_addr.q.val();
+            self.z_wr_data.next = self.f1_z.q.val();
+            self.i_wr_data.next = self.f1_index.q.val();
+        }
+        if self.f1_kind.q.val() == self.tok_clear.val() {
+            self.z_we.next = true;
+            self.z_wr_addr.next = self.f1_addr.q.val();
+            self.z_wr_data.next = self.depth_max.val();
+        }
+        self.i_we.next = self.z_we.val();
+        self.i_wr_addr.next = self.z_wr_addr.val();
+        self.fwd_valid.d.next = self.z_we.val();
+        self.fwd_addr.d.next = self.z_wr_addr.val();
+        self.fwd_z.d.next = self.z_wr_data.val();
+
+        // Results: the last fragment of a triangle, or a result token.
+        self.pushes.next = (self.f1_kind.q.val() == self.tok_result.val())
+            | ((self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_last.q.val());
+        self.result_free.next = !self.res_valid.q.val() & !self.pushes.val();
+        if self.f1_kind.q.val() == self.tok_frag.val() {
+            self.visible.d.next = self.visible.q.val() | self.pass.val();
+            if self.f1_last.q.val() {
+                self.visible.d.next = false;
+            }
+        }
+        if self.res_valid.q.val() & self.result.ready.val() {
+            self.res_valid.d.next = false;
+        }
+        if self.pushes.val() {
+            self.res_valid.d.next = true;
+            self.res.d.next.index = self.f1_index.q.val();
+            self.res.d.next.eof = self.f1_eof.q.val();
+            self.res.d.next.culled = self.f1_culled.q.val();
+            self.res.d.next.zero_area = self.f1_zero_area.q.val();
+            self.res.d.next.visible = false;
+            if self.f1_kind.q.val() == self.tok_frag.val() {
+                self.res.d.next.eof = false;
+                self.res.d.next.culled = false;
+                self.res.d.next.zero_area = false;
+                self.res.d.next.visible = self.visible.q.val() | self.pass.val();
+            }
+        }
+        self.result.valid.next = self.res_valid.q.val();
+        self.result.data.next = self.res.q.val();
+        if !self.res_valid.q.val() {
+            self.result.data.next.index = self.k0_16.val();
+            self.result.data.next.eof = false;
+            self.result.data.next.culled = false;
+            self.result.data.next.zero_area = false;
+            self.result.data.next.visible = false;
+        }
+    }
+}

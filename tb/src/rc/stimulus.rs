@@ -1,0 +1,179 @@
+//! Command streams for the RC: built-in scenes through the host's upper pipeline, hand-made triangles
+//! for the corner cases of the rules, seeded random triangle lists; and the algorithmic reference
+//! (`golden::raster::Rasterizer`) for any stream.
+
+use crate::common::Rng;
+use golden::cycle::rc::{CmdKind, RcCmd, RcResult};
+use golden::format::{Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND};
+use golden::host::{upper_pipeline, Camera};
+use golden::raster::{Culled, CullMode, FrontFace, Rasterizer};
+use golden::scene::{builtin, Mesh, Winding};
+
+/// A frame: frame start (with `clear`), the triangles, end of frame.
+pub fn frame(clear: bool, tris: Vec<RcCmd>) -> Vec<RcCmd> {
+    let mut v = Vec::with_capacity(tris.len() + 2);
+    v.push(RcCmd::frame(clear));
+    v.extend(tris);
+    v.push(RcCmd::end_of_frame());
+    v
+}
+
+/// A built-in scene (`teapot_grid` for the teapot) as window triangles, framed as the issue says:
+/// `Camera::framing(mesh, [0.3, 0.45, 1.0], 40.0)`, back faces culled, front face from the mesh.
+pub fn scene_triangles(name: &str, teapot_grid: u32, screen: Screen) -> Result<Vec<RcCmd>, String> {
+    let mesh: Mesh = if name == "teapot" { builtin::teapot(teapot_grid) } else { builtin::scene(name)? };
+    let cam = Camera::framing(&mesh, [0.3, 0.45, 1.0], 40.0);
+    let front = match mesh.front_face {
+        Winding::Ccw => FrontFace::Ccw,
+        Winding::Cw => FrontFace::Cw,
+    };
+    let geo = upper_pipeline(&mesh, &cam, screen);
+    geo.hw.iter().enumerate().map(|(i, t)| RcCmd::triangle(i as u32 + 1, t.v, CullMode::Back, front)).collect()
+}
+
+fn px(x: i32, y: i32, z: u32) -> WinVertex {
+    WinVertex { x, y, z }
+}
+
+fn tri(index: u32, v: [WinVertex; 3]) -> RcCmd {
+    RcCmd::triangle(index, v, CullMode::None, FrontFace::Ccw).expect("hand-made triangles fit the formats")
+}
+
+/// Hand-made cases on a 32x24 screen, each a named frame (clear = true).
+pub fn hand_made() -> Vec<(&'static str, Vec<RcCmd>)> {
+    let s = 16; // one pixel in subpixels
+    let mut cases = vec![
+        // Two triangles sharing the diagonal of a square: every centre drawn once.
+        ("shared_edge", vec![tri(1, [px(2 * s, 2 * s, 100), px(10 * s, 2 * s, 100), px(10 * s, 10 * s, 100)]),
+                             tri(2, [px(2 * s, 2 * s, 200), px(10 * s, 10 * s, 200), px(2 * s, 10 * s, 200)])]),
+        // Pixel centres exactly on a top, a left, a bottom and a right edge (fill-rule corners):
+        // a 4x4-pixel square whose edges pass through centres, split in two, both windings.
+        ("fill_rule_corners", vec![tri(1, [px(4 * s + 8, 4 * s + 8, 10), px(8 * s + 8, 4 * s + 8, 10), px(8 * s + 8, 8 * s + 8, 10)]),
+                                   tri(2, [px(4 * s + 8, 4 * s + 8, 10), px(4 * s + 8, 8 * s + 8, 10), px(8 * s + 8, 8 * s + 8, 10)]),
+                                   tri(3, [px(12 * s + 8, 4 * s + 8, 10), px(12 * s + 8, 8 * s + 8, 10), px(16 * s + 8, 4 * s + 8, 10)]),
+                                   tri(4, [px(16 * s + 8, 8 * s + 8, 10), px(12 * s + 8, 8 * s + 8, 10), px(16 * s + 8, 4 * s + 8, 10)])]),
+        // Zero area: collinear and coincident vertices.
+        ("zero_area", vec![tri(1, [px(0, 0, 5), px(5 * s, 5 * s, 5), px(10 * s, 10 * s, 5)]),
+                           tri(2, [px(3 * s, 3 * s, 5); 3]),
+                           tri(3, [px(s, s, 5), px(9 * s, 2 * s, 5), px(4 * s, 7 * s, 5)])]),
+        // One pixel: a tiny triangle around one centre, and one covering no centre at all.
+        ("one_pixel", vec![tri(1, [px(5 * s + 4, 5 * s + 4, 7), px(5 * s + 12, 5 * s + 4, 7), px(5 * s + 8, 5 * s + 12, 7)]),
+                           tri(2, [px(9 * s + 1, 9 * s + 1, 7), px(9 * s + 4, 9 * s + 1, 7), px(9 * s + 1, 9 * s + 4, 7)]),
+                           tri(3, [px(5 * s + 4, 5 * s + 4, 3), px(5 * s + 12, 5 * s + 4, 3), px(5 * s + 8, 5 * s + 12, 3)])]),
+        // Fully off screen on each side: empty bounding boxes, no traversal.
+        ("off_screen", vec![tri(1, [px(-20 * s, 2 * s, 1), px(-2 * s, 2 * s, 1), px(-10 * s, 9 * s, 1)]),
+                            tri(2, [px(40 * s, 2 * s, 1), px(50 * s, 2 * s, 1), px(45 * s, 9 * s, 1)]),
+                            tri(3, [px(2 * s, -9 * s, 1), px(9 * s, -9 * s, 1), px(5 * s, -s, 1)]),
+                            tri(4, [px(2 * s, 30 * s, 1), px(9 * s, 30 * s, 1), px(5 * s, 40 * s, 1)])]),
+        // Vertices in the guard band (and at the 16-bit limits): clamped boxes, big coefficients.
+        ("guard_band", vec![tri(1, [px(-32 * s, -24 * s, 0), px(63 * s, 5 * s, DEPTH_MAX), px(3 * s, 47 * s, 1 << 23)]),
+                            tri(2, [px(-32768, -32768, 10), px(32767, -32768, 20), px(-32768, 32767, 30)]),
+                            tri(3, [px(32767, 32767, 5000), px(-32768, 100, 6000), px(100, -32768, 7000)])]),
+        // Equal depths: the first drawn keeps the pixel.
+        ("equal_depths", vec![tri(1, [px(s, s, 4000), px(20 * s, s, 4000), px(s, 20 * s, 4000)]),
+                              tri(2, [px(s, s, 4000), px(20 * s, s, 4000), px(s, 20 * s, 4000)]),
+                              tri(3, [px(20 * s, s, 4000), px(20 * s, 20 * s, 4000), px(s, 20 * s, 4000)])]),
+        // A triangle that hides an earlier one completely: the earlier one stays flagged visible (it
+        // passed when drawn), a later hidden one is not.
+        ("hidden_completely", vec![tri(1, [px(4 * s, 4 * s, 9000), px(12 * s, 4 * s, 9000), px(8 * s, 12 * s, 9000)]),
+                                   tri(2, [px(0, 0, 100), px(30 * s, 0, 200), px(0, 22 * s, 300)]),
+                                   tri(3, [px(4 * s, 4 * s, 9000), px(12 * s, 4 * s, 9000), px(8 * s, 12 * s, 9000)])]),
+        // Depth ramps to both clamps: a plane going below 0 and above 2^24-1 inside the triangle.
+        ("depth_clamps", vec![tri(1, [px(0, 0, 0), px(31 * s, 0, DEPTH_MAX), px(0, 23 * s, 0)]),
+                              tri(2, [px(31 * s, 23 * s, DEPTH_MAX), px(0, 23 * s, 0), px(31 * s, 0, DEPTH_MAX)])]),
+    ];
+    // Culling: both windings under each cull mode and front face.
+    let cw = [px(2 * s, 2 * s, 50), px(9 * s, 2 * s, 50), px(2 * s, 9 * s, 50)];
+    let ccw = [cw[0], cw[2], cw[1]];
+    let mut culling = Vec::new();
+    let mut index = 1;
+    for cull in [CullMode::Back, CullMode::Front, CullMode::None] {
+        for front in [FrontFace::Ccw, FrontFace::Cw] {
+            for v in [cw, ccw] {
+                culling.push(RcCmd::triangle(index, v, cull, front).unwrap());
+                index += 1;
+            }
+        }
+    }
+    cases.push(("culling", culling));
+    // The same pixel in consecutive cycles from two triangles: the second must see the first's depth
+    // (forwarding), then a third behind both.
+    cases.push(("same_pixel_back_to_back", vec![
+        tri(1, [px(5 * s + 4, 5 * s + 4, 700), px(5 * s + 12, 5 * s + 4, 700), px(5 * s + 8, 5 * s + 12, 700)]),
+        tri(2, [px(5 * s + 4, 5 * s + 4, 600), px(5 * s + 12, 5 * s + 4, 600), px(5 * s + 8, 5 * s + 12, 600)]),
+        tri(3, [px(5 * s + 4, 5 * s + 4, 650), px(5 * s + 12, 5 * s + 4, 650), px(5 * s + 8, 5 * s + 12, 650)]),
+    ]));
+    cases.into_iter().map(|(n, t)| (n, frame(true, t))).collect()
+}
+
+/// The screen of the hand-made cases.
+pub fn hand_made_screen() -> Screen {
+    Screen::new(32, 24).unwrap()
+}
+
+/// `n` random triangles over a screen: vertices anywhere in the guard band, some tiny, some large,
+/// random depths, cull modes and front faces.
+pub fn random_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
+    let (gx0, gx1) = screen.guard_x();
+    let (gy0, gy1) = screen.guard_y();
+    let mut v = Vec::with_capacity(n);
+    for i in 0..n {
+        let big = rng.chance(20);
+        let (cx, cy) = (rng.below((gx1 - gx0) as u64) as i32 + gx0, rng.below((gy1 - gy0) as u64) as i32 + gy0);
+        let (cx, cy) = if big { (cx, cy) } else { (rng.below(screen.width as u64 * 16) as i32, rng.below(screen.height as u64 * 16) as i32) };
+        let r = if big { (gx1 - gx0) as u64 } else { 1 + rng.below(6 * 16) };
+        let mut p = [WinVertex::default(); 3];
+        for q in &mut p {
+            let dx = rng.below(2 * r + 1) as i32 - r as i32;
+            let dy = rng.below(2 * r + 1) as i32 - r as i32;
+            *q = WinVertex {
+                x: (cx + dx).clamp(gx0, gx1 - 1),
+                y: (cy + dy).clamp(gy0, gy1 - 1),
+                z: if rng.chance(10) { DEPTH_MAX - rng.below(4) as u32 } else { rng.below(DEPTH_MAX as u64 + 1) as u32 },
+            };
+        }
+        let cull = [CullMode::Back, CullMode::Front, CullMode::None][rng.below(3) as usize];
+        let front = if rng.chance(50) { FrontFace::Ccw } else { FrontFace::Cw };
+        v.push(RcCmd::triangle(i as u32 + 1, p, cull, front).expect("guard-band vertices fit the formats"));
+    }
+    v
+}
+
+/// What the algorithmic model makes of a command stream, starting from cleared buffers.
+pub struct Reference {
+    pub zbuf: Vec<u32>,
+    pub ibuf: Vec<u32>,
+    pub results: Vec<RcResult>,
+    pub rast: Rasterizer,
+}
+
+pub fn reference(screen: Screen, cmds: &[RcCmd]) -> Reference {
+    let mut r = Rasterizer::new(screen);
+    let mut results = Vec::new();
+    for c in cmds {
+        match c.kind {
+            CmdKind::Frame => {
+                if c.clear {
+                    r.clear();
+                }
+            }
+            CmdKind::Triangle => {
+                let t = r.draw(c.index, &c.v, c.cull, c.front);
+                results.push(RcResult {
+                    eof: false,
+                    index: t.index,
+                    culled: t.culled.is_some(),
+                    zero_area: t.culled == Some(Culled::ZeroArea),
+                    visible: t.visible,
+                });
+            }
+            CmdKind::EndOfFrame => results.push(RcResult { eof: true, ..RcResult::default() }),
+        }
+    }
+    Reference { zbuf: r.zbuf.clone(), ibuf: r.ibuf.clone(), results, rast: r }
+}
+
+/// Cleared buffers, as the reference starts.
+pub fn cleared(screen: Screen) -> (Vec<u32>, Vec<u32>) {
+    (vec![DEPTH_MAX; screen.pixels()], vec![INDEX_BACKGROUND; screen.pixels()])
+}
