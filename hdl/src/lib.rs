@@ -10,6 +10,7 @@
 //! [`verilog_top`] generates the Verilog of a top by name (what `idxrender verilog --block` writes).
 
 pub mod common;
+pub mod cs;
 pub mod proof;
 pub mod rc;
 
@@ -17,6 +18,8 @@ pub mod rc;
 pub const TOPS: &[(&str, &str)] = &[
     ("opp", "PROOF object-processor pipeline: 8 object processors, FIFO depth 1 (seed 002 section 4)"),
     ("rc", "Rasterizer Controller for a 320x200 screen: setup, traversal, Z-test, Z/I-buffer ports"),
+    ("colour_setup", "Colour setup: 3 planes with one reciprocal per triangle, TdbS write port (seed 001 eqs. 6-7)"),
+    ("cs", "Color Shader: I-buffer + TdbS scan-out, 1 pixel/clock, AXI4-Stream video, clear-behind ports"),
 ];
 
 /// Generate the Verilog of the top named `block` (module name = `block`).
@@ -24,6 +27,8 @@ pub fn verilog_top(block: &str) -> Result<String, String> {
     match block {
         "opp" => proof::verilog_opp("opp", 8, 1),
         "rc" => rc::verilog(320, 200),
+        "colour_setup" => cs::colour_setup_verilog(),
+        "cs" => cs::color_shader_verilog(),
         _ => Err(format!(
             "unknown block '{block}': known blocks are {}",
             TOPS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")

@@ -10,5 +10,6 @@
 //! [`common`] holds what every bench shares: VCD locations, a seeded random source, tool discovery.
 
 pub mod common;
+pub mod cs;
 pub mod rc;
 pub mod proof;

@@ -1,0 +1,404 @@
+//! Cycle-accurate model of the Color Shader (`hdl/src/cs/color_shader.rs`), seed 001 §3.1: the
+//! scan-out engine that reads the I-buffer in raster order, fetches TdbS by index and evaluates the
+//! colour planes, one pixel per clock, onto an AXI4-Stream video output.
+//!
+//! Written from the timing specification below and the algorithmic model ([`Plane::eval_clamped`],
+//! `GoldenChipset::scanout`); it looks only at the block's ports.
+//!
+//! ## Ports (one clock; every output is a function of registers only)
+//! * control in: `start` (pulse), `width`, `height` (11 bits each, 1..=1024), `background` (RGB888),
+//!   `clear_behind`; out: `busy`, `size_error`;
+//! * I-buffer read port: `ibuf_read_enable`, `ibuf_read_address` (20 bits, `y*width + x`) out,
+//!   `ibuf_read_data` (16-bit index) in, valid in the cycle after the address (latency 1);
+//! * TdbS read port: `tdbs_read_enable`, `tdbs_read_address` (16 bits) out, `tdbs_read_data` (the
+//!   record) in, latency 1;
+//! * clear-behind write ports: I-buffer (`address`, data 0) and Z-buffer (`address`, data
+//!   `DEPTH_MAX`), enabled when the frame was started with `clear_behind`;
+//! * video out: `tdata` (RGB888), `tvalid`, `tuser` (first pixel of the frame), `tlast` (last pixel
+//!   of a line); `tready` in. A beat moves at a rising edge with `tvalid && tready`.
+//!
+//! ## Timing
+//! * `start` is taken in a cycle where `busy` is low. It latches `width`, `height`, `background` and
+//!   `clear_behind`. A size outside 1..=1024 sets `size_error` and starts nothing; a good start clears
+//!   it. `start` while busy is ignored.
+//! * A pixel is *issued* in a cycle t where the frame is running and fewer than [`CS_FIFO_DEPTH`]
+//!   pixels are pending (issued, not yet taken by the video consumer): `ibuf_read_enable` is high and
+//!   `ibuf_read_address` is the pixel's address. Pixels are issued in raster order.
+//! * t+1: the index arrives on `ibuf_read_data`; the clear-behind writes of that pixel's address
+//!   happen in this cycle (the read has already happened at t's edge).
+//! * t+2: `tdbs_read_enable`, `tdbs_read_address` = the index.
+//! * t+3: the record arrives on `tdbs_read_data`; the planes are evaluated (t+3, t+4, t+5: products,
+//!   sum, round and clamp; background where the index is 0) and the beat enters the output FIFO at
+//!   t+5's edge.
+//! * t+6 at the earliest: the beat is offered on the video port, in order, until taken.
+//! * With `tready` always high a pixel is issued every cycle (6 pending < 8): a W x H frame takes
+//!   W*H + 6 cycles from the first issue to the last beat taken. `busy` is high from the cycle after
+//!   the start until the last beat is taken.
+
+use crate::format::{Plane, DEPTH_MAX, MAX_SCREEN};
+use crate::shade::TdbsEntry;
+use std::collections::VecDeque;
+
+/// Depth of the output FIFO, and the limit of pending pixels (the credit that makes back-pressure
+/// lossless against the memory latency).
+pub const CS_FIFO_DEPTH: usize = 8;
+/// Cycles from a pixel's issue to the first cycle its beat can be on the video port.
+pub const CS_PIPELINE_CYCLES: u64 = 6;
+/// Width of the I-buffer address (pixels up to 1024 x 1024).
+pub const CS_ADDRESS_BITS: u32 = 20;
+/// Width of the size inputs.
+pub const CS_SIZE_BITS: u32 = 11;
+
+/// A video beat.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct VideoBeat {
+    pub rgb: [u8; 3],
+    /// Start of frame (AXI4-Stream video `tuser`).
+    pub sof: bool,
+    /// End of line (`tlast`).
+    pub eol: bool,
+}
+
+/// The block's inputs in one cycle.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct CsInputs {
+    pub start: bool,
+    pub width: u32,
+    pub height: u32,
+    pub background: [u8; 3],
+    pub clear_behind: bool,
+    pub ibuf_read_data: u16,
+    pub tdbs_read_data: TdbsEntry,
+    pub video_tready: bool,
+}
+
+/// A memory read port in one cycle.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct ReadPort {
+    pub enable: bool,
+    pub address: u32,
+}
+
+/// A memory write port in one cycle.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct WritePort {
+    pub enable: bool,
+    pub address: u32,
+    pub data: u32,
+}
+
+/// The block's outputs in one cycle (before its rising edge). Payloads are meaningful only when
+/// their enable / valid is high; the model sets them to 0 otherwise and a bench compares them only then.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct CsOutputs {
+    pub busy: bool,
+    pub size_error: bool,
+    pub ibuf_read: ReadPort,
+    pub tdbs_read: ReadPort,
+    pub ibuf_write: WritePort,
+    pub zbuf_write: WritePort,
+    pub video_tvalid: bool,
+    pub video: VideoBeat,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+struct Pixel {
+    x: u32,
+    y: u32,
+    address: u32,
+    sof: bool,
+    eol: bool,
+}
+
+/// The cycle-accurate model.
+#[derive(Clone, Debug, Default)]
+pub struct ColorShaderModel {
+    running: bool,
+    size_error: bool,
+    width: u32,
+    height: u32,
+    background: [u8; 3],
+    clear: bool,
+    x: u32,
+    y: u32,
+    address: u32,
+    pending: usize,
+    /// Issued last cycle: waiting for the I-buffer data.
+    s1: Option<Pixel>,
+    /// Index known: TdbS read this cycle.
+    s2: Option<(Pixel, u16)>,
+    /// Waiting for the TdbS data.
+    s3: Option<(Pixel, u16)>,
+    /// Evaluated, two more pipeline cycles to the FIFO.
+    s4: Option<VideoBeat>,
+    s5: Option<VideoBeat>,
+    fifo: VecDeque<VideoBeat>,
+    /// Beats taken by the consumer since construction.
+    pub beats: u64,
+}
+
+/// The colour of one pixel: background where the index is 0, else the three planes evaluated at the
+/// pixel centre and clamped to 0..=255 (flat and Gouraud; `GoldenChipset::scanout`).
+pub fn pixel_colour(index: u16, record: &TdbsEntry, x: u32, y: u32, background: [u8; 3]) -> [u8; 3] {
+    if index == 0 {
+        background
+    } else {
+        let p: &[Plane; 3] = &record.planes;
+        [0, 1, 2].map(|k| p[k].eval_clamped(x, y, 255) as u8)
+    }
+}
+
+impl ColorShaderModel {
+    pub fn new() -> ColorShaderModel {
+        ColorShaderModel::default()
+    }
+
+    fn busy(&self) -> bool {
+        self.running || self.pending > 0
+    }
+
+    fn issuing(&self) -> bool {
+        self.running && self.pending < CS_FIFO_DEPTH
+    }
+
+    /// The outputs in the current cycle.
+    pub fn outputs(&self) -> CsOutputs {
+        let mut o = CsOutputs { busy: self.busy(), size_error: self.size_error, ..Default::default() };
+        if self.issuing() {
+            o.ibuf_read = ReadPort { enable: true, address: self.address };
+        }
+        if let Some(p) = self.s1 {
+            if self.clear {
+                o.ibuf_write = WritePort { enable: true, address: p.address, data: 0 };
+                o.zbuf_write = WritePort { enable: true, address: p.address, data: DEPTH_MAX };
+            }
+        }
+        if let Some((_, idx)) = self.s2 {
+            o.tdbs_read = ReadPort { enable: true, address: idx as u32 };
+        }
+        if let Some(b) = self.fifo.front() {
+            o.video_tvalid = true;
+            o.video = *b;
+        }
+        o
+    }
+
+    /// One clock: returns this cycle's outputs, then takes the rising edge with `inp`.
+    pub fn step(&mut self, inp: &CsInputs) -> CsOutputs {
+        let out = self.outputs();
+        let size_mask = (1u32 << CS_SIZE_BITS) - 1;
+        // Video: the head beat leaves.
+        if out.video_tvalid && inp.video_tready {
+            self.fifo.pop_front();
+            self.pending -= 1;
+            self.beats += 1;
+        }
+        // Pipeline, from the end backwards.
+        if let Some(b) = self.s5.take() {
+            assert!(self.fifo.len() < CS_FIFO_DEPTH, "CS model: output FIFO overflow (credit accounting broken)");
+            self.fifo.push_back(b);
+        }
+        self.s5 = self.s4.take();
+        self.s4 = self.s3.take().map(|(p, idx)| VideoBeat {
+            rgb: pixel_colour(idx, &inp.tdbs_read_data, p.x, p.y, self.background),
+            sof: p.sof,
+            eol: p.eol,
+        });
+        self.s3 = self.s2.take();
+        self.s2 = self.s1.take().map(|p| (p, inp.ibuf_read_data));
+        // Issue.
+        if out.ibuf_read.enable {
+            let eol = self.x + 1 == self.width;
+            self.s1 = Some(Pixel { x: self.x, y: self.y, address: self.address, sof: self.x == 0 && self.y == 0, eol });
+            self.pending += 1;
+            self.address += 1;
+            if eol {
+                self.x = 0;
+                if self.y + 1 == self.height {
+                    self.running = false;
+                } else {
+                    self.y += 1;
+                }
+            } else {
+                self.x += 1;
+            }
+        }
+        // Frame start.
+        if inp.start && !out.busy {
+            let (w, h) = (inp.width & size_mask, inp.height & size_mask);
+            if (1..=MAX_SCREEN).contains(&w) && (1..=MAX_SCREEN).contains(&h) {
+                self.size_error = false;
+                self.running = true;
+                self.width = w;
+                self.height = h;
+                self.background = inp.background;
+                self.clear = inp.clear_behind;
+                self.x = 0;
+                self.y = 0;
+                self.address = 0;
+            } else {
+                self.size_error = true;
+            }
+        }
+        out
+    }
+}
+
+/// Memories as the bench provides them: synchronous read ports with latency 1 (the data of the
+/// address presented in cycle t appears in cycle t+1; with the enable low the data holds) and
+/// write ports that take effect at the edge. A read of an address being written returns the old data.
+#[derive(Clone, Debug)]
+pub struct CsMemories {
+    pub ibuf: Vec<u16>,
+    pub zbuf: Vec<u32>,
+    pub tdbs: Vec<TdbsEntry>,
+    ibuf_data: u16,
+    tdbs_data: TdbsEntry,
+}
+
+impl CsMemories {
+    pub fn new(ibuf: Vec<u16>, zbuf: Vec<u32>, tdbs: Vec<TdbsEntry>) -> CsMemories {
+        CsMemories { ibuf, zbuf, tdbs, ibuf_data: 0, tdbs_data: TdbsEntry::default() }
+    }
+    /// The read data the memories show in the current cycle.
+    pub fn read_data(&self) -> (u16, TdbsEntry) {
+        (self.ibuf_data, self.tdbs_data)
+    }
+    /// The rising edge, given the block's outputs in this cycle. Out-of-range addresses read 0 and
+    /// ignore writes (the bench reports them as mismatches through the compare).
+    pub fn edge(&mut self, o: &CsOutputs) {
+        if o.ibuf_read.enable {
+            self.ibuf_data = self.ibuf.get(o.ibuf_read.address as usize).copied().unwrap_or(0);
+        }
+        if o.tdbs_read.enable {
+            self.tdbs_data = self.tdbs.get(o.tdbs_read.address as usize).copied().unwrap_or_default();
+        }
+        if o.ibuf_write.enable {
+            if let Some(v) = self.ibuf.get_mut(o.ibuf_write.address as usize) {
+                *v = o.ibuf_write.data as u16;
+            }
+        }
+        if o.zbuf_write.enable {
+            if let Some(v) = self.zbuf.get_mut(o.zbuf_write.address as usize) {
+                *v = o.zbuf_write.data;
+            }
+        }
+    }
+}
+
+/// Run one frame through the model with the given back-pressure pattern (`tready(cycle)`), and
+/// return the RGB888 image in raster order and the number of cycles from the first pixel's issue to
+/// the last beat taken, both included.
+pub fn scan_frame(
+    mem: &mut CsMemories,
+    width: u32,
+    height: u32,
+    background: [u8; 3],
+    clear_behind: bool,
+    mut tready: impl FnMut(u64) -> bool,
+) -> Result<(Vec<u8>, u64), String> {
+    let mut m = ColorShaderModel::new();
+    let mut rgb = Vec::with_capacity((width * height * 3) as usize);
+    let mut cycle = 0u64;
+    let (mut first_issue, mut last_beat) = (None, 0u64);
+    let limit = 64 + 64 * (width as u64 * height as u64 + 64);
+    loop {
+        let (ibuf_read_data, tdbs_read_data) = mem.read_data();
+        let ready = tready(cycle);
+        let inp = CsInputs { start: cycle == 0, width, height, background, clear_behind, ibuf_read_data, tdbs_read_data, video_tready: ready };
+        let o = m.step(&inp);
+        if o.ibuf_read.enable && first_issue.is_none() {
+            first_issue = Some(cycle);
+        }
+        if o.video_tvalid && ready {
+            rgb.extend_from_slice(&o.video.rgb);
+            last_beat = cycle;
+        }
+        mem.edge(&o);
+        if cycle > 0 && !o.busy {
+            if o.size_error {
+                return Err(format!("the CS refused the screen size {width}x{height} (1..={MAX_SCREEN} each)"));
+            }
+            return Ok((rgb, last_beat + 1 - first_issue.unwrap_or(last_beat + 1)));
+        }
+        cycle += 1;
+        if cycle > limit {
+            return Err(format!("the CS model did not finish a {width}x{height} frame in {limit} cycles"));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::format::Screen;
+    use crate::host::Camera;
+    use crate::raster::{CullMode, FrontFace};
+    use crate::render::{render_with, GoldenChipset, RenderOptions};
+    use crate::scene::{builtin, Winding};
+    use crate::shade::Shading;
+
+    fn frame(name: &str, shading: Shading, w: u32, h: u32) -> (GoldenChipset, crate::render::Frame, [u8; 3]) {
+        let mesh = if name == "teapot" { builtin::teapot(6) } else { builtin::scene(name).unwrap() };
+        let screen = Screen::new(w, h).unwrap();
+        let bg = [24, 24, 40];
+        let opts = RenderOptions {
+            screen,
+            camera: Camera::framing(&mesh, [0.3, 0.45, 1.0], 40.0),
+            shading,
+            cull: CullMode::Back,
+            front: if mesh.front_face == Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
+            lighting: Default::default(),
+            index_bits: 16,
+            background: bg,
+        };
+        let mut chip = GoldenChipset::new(screen);
+        let f = render_with(&mesh, &opts, &mut chip).unwrap();
+        (chip, f, bg)
+    }
+
+    fn memories(chip: &GoldenChipset, f: &crate::render::Frame) -> CsMemories {
+        let ibuf = f.hw_index.iter().map(|&i| i as u16).collect();
+        CsMemories::new(ibuf, f.zbuf.clone(), chip.tdbs.clone())
+    }
+
+    #[test]
+    fn color_shader_model_scans_out_the_golden_image_of_every_scene() {
+        for name in builtin::SCENES {
+            for shading in [Shading::Gouraud, Shading::Flat] {
+                let (chip, f, bg) = frame(name, shading, 160, 100);
+                let mut mem = memories(&chip, &f);
+                let (rgb, cycles) = scan_frame(&mut mem, 160, 100, bg, false, |_| true).unwrap();
+                assert!(rgb == f.rgb, "{name} {shading:?}: the model's image differs from the golden one");
+                assert_eq!(cycles, 160 * 100 + CS_PIPELINE_CYCLES, "{name}: one pixel per clock");
+            }
+        }
+    }
+
+    #[test]
+    fn back_pressure_loses_and_repeats_no_pixel_and_clear_behind_clears_both_buffers() {
+        let (chip, f, bg) = frame("castle", Shading::Gouraud, 96, 64);
+        let mut mem = memories(&chip, &f);
+        let mut x = 0x9e3779b97f4a7c15u64;
+        let (rgb, cycles) = scan_frame(&mut mem, 96, 64, bg, true, |_| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x % 3 != 0
+        })
+        .unwrap();
+        assert!(rgb == f.rgb, "image under back-pressure differs");
+        assert!(cycles > 96 * 64 * 4 / 3, "back-pressure had no effect ({cycles} cycles)");
+        assert!(mem.ibuf.iter().all(|&i| i == 0), "I-buffer not cleared behind the scan");
+        assert!(mem.zbuf.iter().all(|&z| z == DEPTH_MAX), "Z-buffer not cleared behind the scan");
+    }
+
+    #[test]
+    fn bad_screen_sizes_set_size_error_and_start_nothing() {
+        for (w, h) in [(0, 10), (10, 0), (1025, 4), (4, 2047)] {
+            let mut mem = CsMemories::new(vec![0; 16], vec![0; 16], vec![TdbsEntry::default()]);
+            let e = scan_frame(&mut mem, w, h, [0; 3], false, |_| true).unwrap_err();
+            assert!(e.contains(&format!("{w}x{h}")), "{e}");
+        }
+    }
+}

@@ -1,0 +1,321 @@
+//! Cycle-accurate model of the colour-setup block (`hdl/src/cs/colour_setup.rs`), seed 001 §2.3.2
+//! eqs. 6-7 and §3.1: one command in, one TdbS record out, exactly one reciprocal per triangle.
+//!
+//! Written from the timing specification below and the algorithmic model ([`colour_setup`],
+//! [`flat_setup`]); it does not look at the RTL's registers, only at its ports.
+//!
+//! ## Ports (one clock)
+//! * command stream in: `cmd_valid`, `cmd` ([`SetupCmd`]), `cmd_ready` (out);
+//! * TdbS write port out: `tdbs_write_enable`, `tdbs_write_address` (the triangle index),
+//!   `tdbs_write_data` (the record, [`TdbsEntry`]); the memory takes the write at the rising edge;
+//! * `busy` (out): a command is being processed (its record is not yet written).
+//!
+//! ## Timing (cycle c0 = the cycle in which `cmd_valid && cmd_ready`; the command is taken at its edge)
+//! | command | cycles after c0 | what happens |
+//! |---|---|---|
+//! | flat | c0+1 | write of `flat_setup(rgb)` (material 0, as the algorithmic model) |
+//! | shaded | c0+1, c0+2 | the two products of `det` (one shared multiplier) |
+//! | | c0+3 | canonical order (swap vertices 1, 2 if `det < 0`), `|det|` to the reciprocal |
+//! | | c0+4 ..= c0+29 | reciprocal: 25 restoring steps, result in c0+29; meanwhile the 12 products of the 6 plane numerators |
+//! | | c0+30 ..= c0+35 | A, B of R, G, B: `sat40(round(n * mant >> (s+4)))`, one per cycle |
+//! | | c0+36 ..= c0+41 | C of R, G, B: two products each |
+//! | | c0+42 | write of `colour_setup(...)` |
+//! | zero area (`det == 0`) | c0+4 ..= c0+9 | A = B = 0 and the C sequence, which gives constant planes at vertex 0's values |
+//! | | c0+10 | write (the algorithmic model has no such case: the RC never flags a zero-area triangle visible) |
+//!
+//! `cmd_ready` is high when the block is idle and in its write cycle, so back-to-back shaded commands
+//! take [`SHADED_CYCLES`] = 42 cycles each and flat ones 1 cycle each. `busy` is high from c0+1 up to
+//! and including the write cycle.
+
+use crate::format::{Plane, WinVertex};
+use crate::render::SetupCommand;
+use crate::shade::{colour_setup, flat_setup, TdbsEntry};
+
+/// Cycles from taking a shaded command to its TdbS write (and between back-to-back shaded commands).
+pub const SHADED_CYCLES: u64 = 42;
+/// Cycles from taking a flat command to its write.
+pub const FLAT_CYCLES: u64 = 1;
+/// Cycles from taking a zero-area command to its write.
+pub const ZERO_AREA_CYCLES: u64 = 10;
+/// Width of the triangle index (TdbS address) on the block's ports.
+pub const SETUP_INDEX_BITS: u32 = 16;
+
+/// One colour-setup command as it travels on the block's input stream: the fields are the port
+/// widths (16-bit S11.4 coordinates, 16-bit signed vertex values, 16-bit index and material).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct SetupCmd {
+    pub index: u16,
+    pub x: [i16; 3],
+    pub y: [i16; 3],
+    /// `values[k][c]`: vertex k, channel c (RGB888 or Q1.14 normal components).
+    pub values: [[i16; 3]; 3],
+    pub material: u16,
+    pub flat: bool,
+    pub flat_rgb: [u8; 3],
+}
+
+impl SetupCmd {
+    /// The port form of a host command; an out-of-range field is an error naming it.
+    pub fn from_command(c: &SetupCommand) -> Result<SetupCmd, String> {
+        if c.index == 0 || c.index >= 1 << SETUP_INDEX_BITS {
+            return Err(format!(
+                "colour setup: triangle index {} does not fit the block's {}-bit TdbS address (1..={})",
+                c.index,
+                SETUP_INDEX_BITS,
+                (1u32 << SETUP_INDEX_BITS) - 1
+            ));
+        }
+        let coord = |v: i32, what: &str, k: usize| -> Result<i16, String> {
+            i16::try_from(v).map_err(|_| format!("colour setup of triangle {}: vertex {k} {what} = {v} subpixels is outside the 16-bit S11.4 range", c.index))
+        };
+        let mut x = [0i16; 3];
+        let mut y = [0i16; 3];
+        for k in 0..3 {
+            x[k] = coord(c.v[k].x, "x", k)?;
+            y[k] = coord(c.v[k].y, "y", k)?;
+        }
+        let mut values = [[0i16; 3]; 3];
+        if c.flat.is_none() {
+            for (k, (out, vin)) in values.iter_mut().zip(&c.values).enumerate() {
+                for (ch, (o, &v)) in out.iter_mut().zip(vin).enumerate() {
+                    *o = i16::try_from(v).map_err(|_| {
+                        format!("colour setup of triangle {}: vertex {k} channel {ch} value {v} does not fit 16 signed bits", c.index)
+                    })?;
+                }
+            }
+        }
+        Ok(SetupCmd {
+            index: c.index as u16,
+            x,
+            y,
+            values,
+            material: c.material,
+            flat: c.flat.is_some(),
+            flat_rgb: c.flat.unwrap_or([0; 3]),
+        })
+    }
+
+    /// The record the block writes for this command (the algorithmic model, plus the defined
+    /// zero-area case).
+    pub fn record(&self) -> TdbsEntry {
+        if self.flat {
+            return flat_setup(self.flat_rgb);
+        }
+        let v = [0, 1, 2].map(|k| WinVertex { x: self.x[k] as i32, y: self.y[k] as i32, z: 0 });
+        let values = self.values.map(|vk| vk.map(|c| c as i64));
+        if crate::raster::det(&v) == 0 {
+            return TdbsEntry { planes: values[0].map(Plane::constant), material: self.material };
+        }
+        colour_setup(&v, values, self.material)
+    }
+
+    /// Cycles from taking the command to its write.
+    pub fn latency(&self) -> u64 {
+        if self.flat {
+            FLAT_CYCLES
+        } else {
+            let v = [0, 1, 2].map(|k| WinVertex { x: self.x[k] as i32, y: self.y[k] as i32, z: 0 });
+            if crate::raster::det(&v) == 0 {
+                ZERO_AREA_CYCLES
+            } else {
+                SHADED_CYCLES
+            }
+        }
+    }
+}
+
+/// The block's inputs in one cycle.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct SetupInputs {
+    pub cmd_valid: bool,
+    pub cmd: SetupCmd,
+}
+
+/// The TdbS memory write port in one cycle.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct TdbsWrite {
+    pub enable: bool,
+    pub address: u16,
+    pub data: TdbsEntry,
+}
+
+/// The block's outputs in one cycle (before its rising edge).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct SetupOutputs {
+    pub cmd_ready: bool,
+    pub busy: bool,
+    pub tdbs_write: TdbsWrite,
+}
+
+/// The cycle-accurate model.
+#[derive(Clone, Debug, Default)]
+pub struct ColourSetupModel {
+    /// Cycles left until the write cycle (0: idle); the write cycle itself has `left == 1`.
+    left: u64,
+    index: u16,
+    record: TdbsEntry,
+    /// Commands taken so far.
+    pub taken: u64,
+}
+
+impl ColourSetupModel {
+    pub fn new() -> ColourSetupModel {
+        ColourSetupModel::default()
+    }
+
+    /// The outputs in the current cycle (they depend on the state only).
+    pub fn outputs(&self) -> SetupOutputs {
+        let writing = self.left == 1;
+        SetupOutputs {
+            cmd_ready: self.left <= 1,
+            busy: self.left >= 1,
+            tdbs_write: TdbsWrite {
+                enable: writing,
+                address: if writing { self.index } else { 0 },
+                data: if writing { self.record } else { TdbsEntry::default() },
+            },
+        }
+    }
+
+    /// One clock: returns this cycle's outputs, then takes the rising edge with `inp`.
+    pub fn step(&mut self, inp: &SetupInputs) -> SetupOutputs {
+        let out = self.outputs();
+        if self.left > 0 {
+            self.left -= 1;
+        }
+        if out.cmd_ready && inp.cmd_valid {
+            self.index = inp.cmd.index;
+            self.record = inp.cmd.record();
+            self.left = inp.cmd.latency();
+            self.taken += 1;
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::format::Screen;
+    use crate::host::Camera;
+    use crate::raster::{CullMode, FrontFace, TriResult};
+    use crate::render::{render_with, Chipset, GoldenChipset, RcCommand, RenderOptions, ScanOut};
+    use crate::scene::{builtin, Winding};
+    use crate::shade::{PhongLights, Shading};
+
+    /// A chipset that records the colour-setup commands the host sends and otherwise is the golden one.
+    struct Recorder {
+        inner: GoldenChipset,
+        cmds: Vec<SetupCommand>,
+    }
+    impl Chipset for Recorder {
+        fn rasterize(&mut self, t: &[RcCommand], c: CullMode, f: FrontFace) -> Result<Vec<TriResult>, String> {
+            self.inner.rasterize(t, c, f)
+        }
+        fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String> {
+            self.cmds.extend_from_slice(cmds);
+            self.inner.colour_setup(cmds)
+        }
+        fn scanout(&mut self, s: Shading, l: &PhongLights, bg: [u8; 3]) -> Result<ScanOut, String> {
+            self.inner.scanout(s, l, bg)
+        }
+    }
+
+    fn record_frame(name: &str, shading: Shading) -> Recorder {
+        let mesh = if name == "teapot" { builtin::teapot(6) } else { builtin::scene(name).unwrap() };
+        let screen = Screen::new(160, 100).unwrap();
+        let opts = RenderOptions {
+            screen,
+            camera: Camera::framing(&mesh, [0.3, 0.45, 1.0], 40.0),
+            shading,
+            cull: CullMode::Back,
+            front: if mesh.front_face == Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
+            lighting: Default::default(),
+            index_bits: 16,
+            background: [10, 20, 30],
+        };
+        let mut rec = Recorder { inner: GoldenChipset::new(screen), cmds: Vec::new() };
+        render_with(&mesh, &opts, &mut rec).unwrap();
+        rec
+    }
+
+    /// Drive the model with the commands (with gaps of `gap` idle cycles) and collect the TdbS it writes.
+    fn run_model(cmds: &[SetupCmd], gap: u64) -> (Vec<TdbsEntry>, u64) {
+        let mut m = ColourSetupModel::new();
+        let mut tdbs = Vec::new();
+        let mut next = 0;
+        let mut idle = 0;
+        let mut cycles = 0;
+        while next < cmds.len() || m.outputs().busy {
+            let valid = next < cmds.len() && idle == 0;
+            let inp = SetupInputs { cmd_valid: valid, cmd: if valid { cmds[next] } else { SetupCmd::default() } };
+            let out = m.step(&inp);
+            cycles += 1;
+            if out.tdbs_write.enable {
+                let a = out.tdbs_write.address as usize;
+                if tdbs.len() <= a {
+                    tdbs.resize(a + 1, TdbsEntry::default());
+                }
+                tdbs[a] = out.tdbs_write.data;
+            }
+            if valid && out.cmd_ready {
+                next += 1;
+                idle = gap;
+            } else if idle > 0 {
+                idle -= 1;
+            }
+        }
+        (tdbs, cycles)
+    }
+
+    #[test]
+    fn colour_setup_model_writes_the_golden_tdbs_of_real_frames() {
+        for name in builtin::SCENES {
+            for shading in [Shading::Gouraud, Shading::Flat, Shading::Phong] {
+                let rec = record_frame(name, shading);
+                assert!(!rec.cmds.is_empty(), "{name}: no visible triangle");
+                let cmds: Vec<SetupCmd> = rec.cmds.iter().map(|c| SetupCmd::from_command(c).unwrap()).collect();
+                let (tdbs, _) = run_model(&cmds, 0);
+                for c in &rec.cmds {
+                    let i = c.index as usize;
+                    assert_eq!(tdbs[i], rec.inner.tdbs[i], "{name} {shading:?}: TdbS record {i}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn back_to_back_shaded_commands_take_forty_two_cycles_each() {
+        let mut cmd = SetupCmd { index: 3, x: [0, 160, 0], y: [0, 0, 160], ..Default::default() };
+        cmd.values = [[255, 0, 0], [0, 255, 0], [0, 0, 255]];
+        let cmds = vec![cmd; 10];
+        let (_, cycles) = run_model(&cmds, 0);
+        // The last write happens in cycle 10*42; plus the cycle in which the model is seen idle.
+        assert_eq!(cycles, 10 * SHADED_CYCLES + 1);
+        let flat = vec![SetupCmd { flat: true, index: 1, ..Default::default() }; 10];
+        let (_, cycles) = run_model(&flat, 0);
+        assert_eq!(cycles, 10 * FLAT_CYCLES + 1);
+    }
+
+    #[test]
+    fn out_of_range_commands_are_rejected_with_the_field_named() {
+        let good = SetupCommand {
+            index: 5,
+            v: [WinVertex { x: 0, y: 0, z: 0 }; 3],
+            values: [[0; 3]; 3],
+            material: 0,
+            flat: None,
+        };
+        assert!(SetupCmd::from_command(&good).is_ok());
+        let e = SetupCmd::from_command(&SetupCommand { index: 70000, ..good }).unwrap_err();
+        assert!(e.contains("index 70000"), "{e}");
+        let mut v = good.v;
+        v[2].y = 40000;
+        let e = SetupCmd::from_command(&SetupCommand { v, ..good }).unwrap_err();
+        assert!(e.contains("vertex 2 y"), "{e}");
+        let mut values = good.values;
+        values[1][2] = -40000;
+        let e = SetupCmd::from_command(&SetupCommand { values, ..good }).unwrap_err();
+        assert!(e.contains("vertex 1 channel 2"), "{e}");
+    }
+}

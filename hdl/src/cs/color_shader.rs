@@ -1,0 +1,519 @@
+//! `color_shader` (top `cs`): the Color Shader's scan-out engine (seed 001 §3.1, Fig. 5: "the CS
+//! utilizes the data in I-buffer and TdbS to generate the final result ... frame buffer can be optional
+//! if the CS can generate pixels in screen scan-out rate"). Reads the I-buffer in raster order, fetches
+//! the TdbS record of each pixel's index, evaluates `R,G,B = clamp(round((c + a*X + b*Y) / 2^16))`
+//! (background where the index is 0) and streams RGB888 out, one pixel per clock.
+//!
+//! ```text
+//!                      +--------------------------------------------------+
+//!  start ------------->| frame control: W, H, background, clear_behind    |--> busy
+//!  width, height ----->| (latched at start; 1..=1024 else size_error)     |--> size_error
+//!  background -------->|                                                  |
+//!  clear_behind ------>|  issue (credit < 8)                              |
+//!                      |   |                                              |--> ibuf_read_enable/_address (20 b)
+//!  ibuf_read_data ---->|   s1 (+1) index arrives; clear-behind writes ----|--> ibuf_write_*, zbuf_write_*
+//!                      |   s2 (+2) TdbS read                              |--> tdbs_read_enable/_address (16 b)
+//!  tdbs_read_data ---->|   s3 (+3) record arrives: 6 products 40x11       |
+//!                      |   s4 (+4) c + aX + bY + 1/2                      |
+//!                      |   s5 (+5) >>16, clamp 0..255, background mux     |
+//!                      |   video_fifo (8 deep) ------------------------- -|--> video_tdata {R,B,G}, _tvalid,
+//!  video_tready ------>|                                                  |    _tuser (SOF), _tlast (EOL)
+//!                      +--------------------------------------------------+
+//! ```
+//!
+//! Timing (`golden::cycle::color_shader` is the reference): a pixel issued in cycle t has its I-buffer
+//! address on the port in t, its index in t+1 (when the clear-behind writes of its address happen), its
+//! TdbS address in t+2, its record in t+3, and its beat in the FIFO at t+5's edge, on the video port
+//! from t+6. A pixel is issued only while fewer than 8 are pending (issued and not yet taken by the
+//! consumer): the FIFO can always hold every pixel in flight, so back-pressure loses or repeats nothing,
+//! and with `video_tready` high 6 are pending, so a pixel is issued every clock. Both memory read ports
+//! have latency 1 (data of the address of cycle t in t+1). All payload outputs are 0 while their
+//! enable / valid is low.
+//!
+//! `video_tdata` follows the AXI4-Stream video convention for RGB (Xilinx UG934): R in 23:16, B in
+//! 15:8, G in 7:0; `background` uses the same packing.
+
+use crate::common::{signed_bit_cast_safe, MulS};
+use crate::cs::video_fifo::VideoFifo;
+use crate::cs::TdbsRecord;
+use rust_hdl::prelude::*;
+
+#[derive(LogicBlock)]
+pub struct ColorShader {
+    pub clock: Signal<In, Clock>,
+    // From the controller
+    /// Start a frame (taken when not busy).
+    pub start: Signal<In, Bit>,
+    /// Screen width in pixels, 1..=1024 (latched at start).
+    pub width: Signal<In, Bits<11>>,
+    /// Screen height in pixels, 1..=1024 (latched at start).
+    pub height: Signal<In, Bits<11>>,
+    /// Background colour where the index is 0, packed as `video_tdata` (latched at start).
+    pub background: Signal<In, Bits<24>>,
+    /// Clear the I-buffer (to 0) and the Z-buffer (to far) behind the scan (latched at start).
+    pub clear_behind: Signal<In, Bit>,
+    // To the controller
+    /// A frame is being scanned (from the cycle after the start to the cycle its last beat is taken).
+    pub busy: Signal<Out, Bit>,
+    /// The last start had a size outside 1..=1024 and was refused.
+    pub size_error: Signal<Out, Bit>,
+    // To / from the I-buffer (synchronous read, latency 1)
+    /// Read the I-buffer at `ibuf_read_address` this cycle.
+    pub ibuf_read_enable: Signal<Out, Bit>,
+    /// Pixel address `y*width + x`.
+    pub ibuf_read_address: Signal<Out, Bits<20>>,
+    /// The index at the address of the previous cycle.
+    pub ibuf_read_data: Signal<In, Bits<16>>,
+    // To / from TdbS (synchronous read, latency 1)
+    /// Read TdbS at `tdbs_read_address` this cycle.
+    pub tdbs_read_enable: Signal<Out, Bit>,
+    /// The triangle index.
+    pub tdbs_read_address: Signal<Out, Bits<16>>,
+    /// The record at the address of the previous cycle.
+    pub tdbs_read_data: Signal<In, TdbsRecord>,
+    // To the I-buffer and the Z-buffer (clear-behind write ports)
+    /// Write `ibuf_write_data` (0, background) at `ibuf_write_address`.
+    pub ibuf_write_enable: Signal<Out, Bit>,
+    pub ibuf_write_address: Signal<Out, Bits<20>>,
+    pub ibuf_write_data: Signal<Out, Bits<16>>,
+    /// Write `zbuf_write_data` (2^24-1, far) at `zbuf_write_address`.
+    pub zbuf_write_enable: Signal<Out, Bit>,
+    pub zbuf_write_address: Signal<Out, Bits<20>>,
+    pub zbuf_write_data: Signal<Out, Bits<24>>,
+    // To the display (AXI4-Stream video)
+    /// RGB888: R 23:16, B 15:8, G 7:0.
+    pub video_tdata: Signal<Out, Bits<24>>,
+    pub video_tvalid: Signal<Out, Bit>,
+    /// The consumer takes the beat at this edge if `video_tvalid`.
+    pub video_tready: Signal<In, Bit>,
+    /// Start of frame: the beat is pixel (0, 0).
+    pub video_tuser: Signal<Out, Bit>,
+    /// End of line: the beat is the last pixel of its row.
+    pub video_tlast: Signal<Out, Bit>,
+
+    fifo: VideoFifo,
+    mul_ra: MulS<40, 11, 51>,
+    mul_rb: MulS<40, 11, 51>,
+    mul_ga: MulS<40, 11, 51>,
+    mul_gb: MulS<40, 11, 51>,
+    mul_ba: MulS<40, 11, 51>,
+    mul_bb: MulS<40, 11, 51>,
+    // Frame control
+    running: DFF<Bit>,
+    size_err: DFF<Bit>,
+    last_x: DFF<Bits<10>>,
+    last_y: DFF<Bits<10>>,
+    bg: DFF<Bits<24>>,
+    clear: DFF<Bit>,
+    x: DFF<Bits<10>>,
+    y: DFF<Bits<10>>,
+    addr: DFF<Bits<20>>,
+    pending: DFF<Bits<4>>,
+    // s1: waiting for the index
+    s1_valid: DFF<Bit>,
+    s1_x: DFF<Bits<10>>,
+    s1_y: DFF<Bits<10>>,
+    s1_addr: DFF<Bits<20>>,
+    s1_sof: DFF<Bit>,
+    s1_eol: DFF<Bit>,
+    // s2: TdbS read
+    s2_valid: DFF<Bit>,
+    s2_x: DFF<Bits<10>>,
+    s2_y: DFF<Bits<10>>,
+    s2_sof: DFF<Bit>,
+    s2_eol: DFF<Bit>,
+    s2_idx: DFF<Bits<16>>,
+    // s3: record arrives, products
+    s3_valid: DFF<Bit>,
+    s3_x: DFF<Bits<10>>,
+    s3_y: DFF<Bits<10>>,
+    s3_sof: DFF<Bit>,
+    s3_eol: DFF<Bit>,
+    s3_bg: DFF<Bit>,
+    // s4: sums
+    s4_valid: DFF<Bit>,
+    s4_sof: DFF<Bit>,
+    s4_eol: DFF<Bit>,
+    s4_bg: DFF<Bit>,
+    s4_pa_r: DFF<Signed<51>>,
+    s4_pb_r: DFF<Signed<51>>,
+    s4_c_r: DFF<Signed<56>>,
+    s4_pa_g: DFF<Signed<51>>,
+    s4_pb_g: DFF<Signed<51>>,
+    s4_c_g: DFF<Signed<56>>,
+    s4_pa_b: DFF<Signed<51>>,
+    s4_pb_b: DFF<Signed<51>>,
+    s4_c_b: DFF<Signed<56>>,
+    // s5: round, clamp, into the FIFO
+    s5_valid: DFF<Bit>,
+    s5_sof: DFF<Bit>,
+    s5_eol: DFF<Bit>,
+    s5_bg: DFF<Bit>,
+    s5_sum_r: DFF<Signed<58>>,
+    s5_sum_g: DFF<Signed<58>>,
+    s5_sum_b: DFF<Signed<58>>,
+    // Combinational
+    issue: Signal<Local, Bit>,
+    pop: Signal<Local, Bit>,
+    at_eol: Signal<Local, Bit>,
+    px: Signal<Local, Signed<11>>,
+    py: Signal<Local, Signed<11>>,
+    sum_r: Signal<Local, Signed<58>>,
+    sum_g: Signal<Local, Signed<58>>,
+    sum_b: Signal<Local, Signed<58>>,
+    ch_r: Signal<Local, Bits<8>>,
+    ch_g: Signal<Local, Bits<8>>,
+    ch_b: Signal<Local, Bits<8>>,
+    rgb: Signal<Local, Bits<24>>,
+    hi_r: Signal<Local, Bits<33>>,
+    sof_bit: Signal<Local, Bits<26>>,
+    eol_bit: Signal<Local, Bits<26>>,
+    hi_g: Signal<Local, Bits<33>>,
+    hi_b: Signal<Local, Bits<33>>,
+    w_ok: Signal<Local, Bit>,
+    h_ok: Signal<Local, Bit>,
+    w_m1: Signal<Local, Bits<11>>,
+    h_m1: Signal<Local, Bits<11>>,
+    k0_4: Constant<Bits<4>>,
+    k1_4: Constant<Bits<4>>,
+    k8_4: Constant<Bits<4>>,
+    k0_10: Constant<Bits<10>>,
+    k1_10: Constant<Bits<10>>,
+    k0_11: Constant<Bits<11>>,
+    k1_11: Constant<Bits<11>>,
+    k1024_11: Constant<Bits<11>>,
+    k1_20: Constant<Bits<20>>,
+    k0_20: Constant<Bits<20>>,
+    k0_16: Constant<Bits<16>>,
+    k0_24: Constant<Bits<24>>,
+    kfar_24: Constant<Bits<24>>,
+    khalf_58: Constant<Signed<58>>,
+    k255_8: Constant<Bits<8>>,
+    k0_8: Constant<Bits<8>>,
+    k0_26: Constant<Bits<26>>,
+    k_sof_26: Constant<Bits<26>>,
+    k_eol_26: Constant<Bits<26>>,
+}
+
+impl Default for ColorShader {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            start: Default::default(),
+            width: Default::default(),
+            height: Default::default(),
+            background: Default::default(),
+            clear_behind: Default::default(),
+            busy: Default::default(),
+            size_error: Default::default(),
+            ibuf_read_enable: Default::default(),
+            ibuf_read_address: Default::default(),
+            ibuf_read_data: Default::default(),
+            tdbs_read_enable: Default::default(),
+            tdbs_read_address: Default::default(),
+            tdbs_read_data: Default::default(),
+            ibuf_write_enable: Default::default(),
+            ibuf_write_address: Default::default(),
+            ibuf_write_data: Default::default(),
+            zbuf_write_enable: Default::default(),
+            zbuf_write_address: Default::default(),
+            zbuf_write_data: Default::default(),
+            video_tdata: Default::default(),
+            video_tvalid: Default::default(),
+            video_tready: Default::default(),
+            video_tuser: Default::default(),
+            video_tlast: Default::default(),
+            fifo: Default::default(),
+            mul_ra: Default::default(),
+            mul_rb: Default::default(),
+            mul_ga: Default::default(),
+            mul_gb: Default::default(),
+            mul_ba: Default::default(),
+            mul_bb: Default::default(),
+            running: Default::default(),
+            size_err: Default::default(),
+            last_x: Default::default(),
+            last_y: Default::default(),
+            bg: Default::default(),
+            clear: Default::default(),
+            x: Default::default(),
+            y: Default::default(),
+            addr: Default::default(),
+            pending: Default::default(),
+            s1_valid: Default::default(),
+            s1_x: Default::default(),
+            s1_y: Default::default(),
+            s1_addr: Default::default(),
+            s1_sof: Default::default(),
+            s1_eol: Default::default(),
+            s2_valid: Default::default(),
+            s2_x: Default::default(),
+            s2_y: Default::default(),
+            s2_sof: Default::default(),
+            s2_eol: Default::default(),
+            s2_idx: Default::default(),
+            s3_valid: Default::default(),
+            s3_x: Default::default(),
+            s3_y: Default::default(),
+            s3_sof: Default::default(),
+            s3_eol: Default::default(),
+            s3_bg: Default::default(),
+            s4_valid: Default::default(),
+            s4_sof: Default::default(),
+            s4_eol: Default::default(),
+            s4_bg: Default::default(),
+            s4_pa_r: Default::default(),
+            s4_pb_r: Default::default(),
+            s4_c_r: Default::default(),
+            s4_pa_g: Default::default(),
+            s4_pb_g: Default::default(),
+            s4_c_g: Default::default(),
+            s4_pa_b: Default::default(),
+            s4_pb_b: Default::default(),
+            s4_c_b: Default::default(),
+            s5_valid: Default::default(),
+            s5_sof: Default::default(),
+            s5_eol: Default::default(),
+            s5_bg: Default::default(),
+            s5_sum_r: Default::default(),
+            s5_sum_g: Default::default(),
+            s5_sum_b: Default::default(),
+            issue: Default::default(),
+            pop: Default::default(),
+            at_eol: Default::default(),
+            px: Default::default(),
+            py: Default::default(),
+            sum_r: Default::default(),
+            sum_g: Default::default(),
+            sum_b: Default::default(),
+            ch_r: Default::default(),
+            ch_g: Default::default(),
+            ch_b: Default::default(),
+            rgb: Default::default(),
+            hi_r: Default::default(),
+            sof_bit: Default::default(),
+            eol_bit: Default::default(),
+            hi_g: Default::default(),
+            hi_b: Default::default(),
+            w_ok: Default::default(),
+            h_ok: Default::default(),
+            w_m1: Default::default(),
+            h_m1: Default::default(),
+            k0_4: Constant::new(0.into()),
+            k1_4: Constant::new(1.into()),
+            k8_4: Constant::new(8.into()),
+            k0_10: Constant::new(0.into()),
+            k1_10: Constant::new(1.into()),
+            k0_11: Constant::new(0.into()),
+            k1_11: Constant::new(1.into()),
+            k1024_11: Constant::new(1024.into()),
+            k1_20: Constant::new(1.into()),
+            k0_20: Constant::new(0.into()),
+            k0_16: Constant::new(0.into()),
+            k0_24: Constant::new(0.into()),
+            kfar_24: Constant::new(0xff_ffff.into()),
+            khalf_58: Constant::new((1i64 << 15).into()),
+            k255_8: Constant::new(255.into()),
+            k0_8: Constant::new(0.into()),
+            k0_26: Constant::new(0.into()),
+            k_sof_26: Constant::new((1u64 << 24).into()),
+            k_eol_26: Constant::new((1u64 << 25).into()),
+        }
+    }
+}
+
+impl Logic for ColorShader {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, running, size_err, last_x, last_y, bg, clear, x, y, addr, pending, s1_valid, s1_x, s1_y,
+            s1_addr, s1_sof, s1_eol, s2_valid, s2_x, s2_y, s2_sof, s2_eol, s2_idx, s3_valid, s3_x, s3_y, s3_sof,
+            s3_eol, s3_bg, s4_valid, s4_sof, s4_eol, s4_bg, s4_pa_r, s4_pb_r, s4_c_r, s4_pa_g, s4_pb_g, s4_c_g,
+            s4_pa_b, s4_pb_b, s4_c_b, s5_valid, s5_sof, s5_eol, s5_bg, s5_sum_r, s5_sum_g, s5_sum_b
+        );
+        clock!(self, clock, fifo);
+
+        // Credit: issue while fewer than 8 pixels are pending; a pixel stops pending when taken.
+        self.issue.next = self.running.q.val() & (self.pending.q.val() != self.k8_4.val());
+        self.pop.next = self.fifo.read_valid.val() & self.video_tready.val();
+        if self.issue.val() & !self.pop.val() {
+            self.pending.d.next = self.pending.q.val() + self.k1_4.val();
+        }
+        if !self.issue.val() & self.pop.val() {
+            self.pending.d.next = self.pending.q.val() - self.k1_4.val();
+        }
+
+        // Issue: raster-order counters.
+        self.at_eol.next = self.x.q.val() == self.last_x.q.val();
+        self.s1_valid.d.next = self.issue.val();
+        self.s1_x.d.next = self.x.q.val();
+        self.s1_y.d.next = self.y.q.val();
+        self.s1_addr.d.next = self.addr.q.val();
+        self.s1_sof.d.next = (self.x.q.val() == self.k0_10.val()) & (self.y.q.val() == self.k0_10.val());
+        self.s1_eol.d.next = self.at_eol.val();
+        if self.issue.val() {
+            self.addr.d.next = self.addr.q.val() + self.k1_20.val();
+            if self.at_eol.val() {
+                self.x.d.next = self.k0_10.val();
+                if self.y.q.val() == self.last_y.q.val() {
+                    self.running.d.next = false;
+                } else {
+                    self.y.d.next = self.y.q.val() + self.k1_10.val();
+                }
+            } else {
+                self.x.d.next = self.x.q.val() + self.k1_10.val();
+            }
+        }
+
+        // s1 -> s2: the index arrives.
+        self.s2_valid.d.next = self.s1_valid.q.val();
+        self.s2_x.d.next = self.s1_x.q.val();
+        self.s2_y.d.next = self.s1_y.q.val();
+        self.s2_sof.d.next = self.s1_sof.q.val();
+        self.s2_eol.d.next = self.s1_eol.q.val();
+        self.s2_idx.d.next = self.ibuf_read_data.val();
+
+        // s2 -> s3: TdbS is read at the index.
+        self.s3_valid.d.next = self.s2_valid.q.val();
+        self.s3_x.d.next = self.s2_x.q.val();
+        self.s3_y.d.next = self.s2_y.q.val();
+        self.s3_sof.d.next = self.s2_sof.q.val();
+        self.s3_eol.d.next = self.s2_eol.q.val();
+        self.s3_bg.d.next = self.s2_idx.q.val() == self.k0_16.val();
+
+        // s3 -> s4: the record arrives; a*X, b*Y for three channels.
+        self.px.next = signed_cast(bit_cast::<11, 10>(self.s3_x.q.val()));
+        self.py.next = signed_cast(bit_cast::<11, 10>(self.s3_y.q.val()));
+        self.mul_ra.a.next = signed_cast(self.tdbs_read_data.val().r_a);
+        self.mul_ra.b.next = self.px.val();
+        self.mul_rb.a.next = signed_cast(self.tdbs_read_data.val().r_b);
+        self.mul_rb.b.next = self.py.val();
+        self.mul_ga.a.next = signed_cast(self.tdbs_read_data.val().g_a);
+        self.mul_ga.b.next = self.px.val();
+        self.mul_gb.a.next = signed_cast(self.tdbs_read_data.val().g_b);
+        self.mul_gb.b.next = self.py.val();
+        self.mul_ba.a.next = signed_cast(self.tdbs_read_data.val().b_a);
+        self.mul_ba.b.next = self.px.val();
+        self.mul_bb.a.next = signed_cast(self.tdbs_read_data.val().b_b);
+        self.mul_bb.b.next = self.py.val();
+        self.s4_valid.d.next = self.s3_valid.q.val();
+        self.s4_sof.d.next = self.s3_sof.q.val();
+        self.s4_eol.d.next = self.s3_eol.q.val();
+        self.s4_bg.d.next = self.s3_bg.q.val();
+        self.s4_pa_r.d.next = self.mul_ra.p.val();
+        self.s4_pb_r.d.next = self.mul_rb.p.val();
+        self.s4_c_r.d.next = signed_cast(self.tdbs_read_data.val().r_c);
+        self.s4_pa_g.d.next = self.mul_ga.p.val();
+        self.s4_pb_g.d.next = self.mul_gb.p.val();
+        self.s4_c_g.d.next = signed_cast(self.tdbs_read_data.val().g_c);
+        self.s4_pa_b.d.next = self.mul_ba.p.val();
+        self.s4_pb_b.d.next = self.mul_bb.p.val();
+        self.s4_c_b.d.next = signed_cast(self.tdbs_read_data.val().b_c);
+
+        // s4 -> s5: c + a*X + b*Y + 2^15 (the rounding half), 58 bits: no overflow for any record.
+        self.sum_r.next = signed_bit_cast_safe::<58, 56>(self.s4_c_r.q.val()) + signed_bit_cast_safe::<58, 51>(self.s4_pa_r.q.val());
+        self.sum_g.next = signed_bit_cast_safe::<58, 56>(self.s4_c_g.q.val()) + signed_bit_cast_safe::<58, 51>(self.s4_pa_g.q.val());
+        self.sum_b.next = signed_bit_cast_safe::<58, 56>(self.s4_c_b.q.val()) + signed_bit_cast_safe::<58, 51>(self.s4_pa_b.q.val());
+        self.s5_valid.d.next = self.s4_valid.q.val();
+        self.s5_sof.d.next = self.s4_sof.q.val();
+        self.s5_eol.d.next = self.s4_eol.q.val();
+        self.s5_bg.d.next = self.s4_bg.q.val();
+        self.s5_sum_r.d.next = self.sum_r.val() + signed_bit_cast_safe::<58, 51>(self.s4_pb_r.q.val()) + self.khalf_58.val();
+        self.s5_sum_g.d.next = self.sum_g.val() + signed_bit_cast_safe::<58, 51>(self.s4_pb_g.q.val()) + self.khalf_58.val();
+        self.s5_sum_b.d.next = self.sum_b.val() + signed_bit_cast_safe::<58, 51>(self.s4_pb_b.q.val()) + self.khalf_58.val();
+
+        // s5 -> FIFO: >> 16 and clamp to 0..=255 (negative -> 0; bits 56:24 not all 0 -> 255).
+        self.ch_r.next = unsigned_cast(self.s5_sum_r.q.val().get_bits::<8>(16));
+        self.hi_r.next = unsigned_cast(self.s5_sum_r.q.val().get_bits::<33>(24));
+        if self.hi_r.val().any() {
+            self.ch_r.next = self.k255_8.val();
+        }
+        if self.s5_sum_r.q.val().get_bit(57) {
+            self.ch_r.next = self.k0_8.val();
+        }
+        self.ch_g.next = unsigned_cast(self.s5_sum_g.q.val().get_bits::<8>(16));
+        self.hi_g.next = unsigned_cast(self.s5_sum_g.q.val().get_bits::<33>(24));
+        if self.hi_g.val().any() {
+            self.ch_g.next = self.k255_8.val();
+        }
+        if self.s5_sum_g.q.val().get_bit(57) {
+            self.ch_g.next = self.k0_8.val();
+        }
+        self.ch_b.next = unsigned_cast(self.s5_sum_b.q.val().get_bits::<8>(16));
+        self.hi_b.next = unsigned_cast(self.s5_sum_b.q.val().get_bits::<33>(24));
+        if self.hi_b.val().any() {
+            self.ch_b.next = self.k255_8.val();
+        }
+        if self.s5_sum_b.q.val().get_bit(57) {
+            self.ch_b.next = self.k0_8.val();
+        }
+        // UG934 RGB order: R 23:16, B 15:8, G 7:0.
+        self.rgb.next = (bit_cast::<24, 8>(self.ch_r.val()) << 16) | (bit_cast::<24, 8>(self.ch_b.val()) << 8) | bit_cast::<24, 8>(self.ch_g.val());
+        if self.s5_bg.q.val() {
+            self.rgb.next = self.bg.q.val();
+        }
+        self.fifo.write.next = self.s5_valid.q.val();
+        self.sof_bit.next = self.k0_26.val();
+        if self.s5_sof.q.val() {
+            self.sof_bit.next = self.k_sof_26.val();
+        }
+        self.eol_bit.next = self.k0_26.val();
+        if self.s5_eol.q.val() {
+            self.eol_bit.next = self.k_eol_26.val();
+        }
+        self.fifo.write_data.next = bit_cast::<26, 24>(self.rgb.val()) | self.sof_bit.val() | self.eol_bit.val();
+
+        // Video out.
+        self.fifo.read.next = self.video_tready.val();
+        self.video_tvalid.next = self.fifo.read_valid.val();
+        self.video_tdata.next = self.fifo.read_data.val().get_bits::<24>(0);
+        self.video_tuser.next = self.fifo.read_data.val().get_bit(24);
+        self.video_tlast.next = self.fifo.read_data.val().get_bit(25);
+
+        // Memory ports (payloads 0 while disabled).
+        self.ibuf_read_enable.next = self.issue.val();
+        self.ibuf_read_address.next = self.k0_20.val();
+        if self.issue.val() {
+            self.ibuf_read_address.next = self.addr.q.val();
+        }
+        self.tdbs_read_enable.next = self.s2_valid.q.val();
+        self.tdbs_read_address.next = self.k0_16.val();
+        if self.s2_valid.q.val() {
+            self.tdbs_read_address.next = self.s2_idx.q.val();
+        }
+        self.ibuf_write_enable.next = self.s1_valid.q.val() & self.clear.q.val();
+        self.ibuf_write_address.next = self.k0_20.val();
+        self.ibuf_write_data.next = self.k0_16.val();
+        self.zbuf_write_enable.next = self.s1_valid.q.val() & self.clear.q.val();
+        self.zbuf_write_address.next = self.k0_20.val();
+        self.zbuf_write_data.next = self.k0_24.val();
+        if self.s1_valid.q.val() & self.clear.q.val() {
+            self.ibuf_write_address.next = self.s1_addr.q.val();
+            self.zbuf_write_address.next = self.s1_addr.q.val();
+            self.zbuf_write_data.next = self.kfar_24.val();
+        }
+
+        // Frame start (only when idle).
+        self.busy.next = self.running.q.val() | (self.pending.q.val() != self.k0_4.val());
+        self.w_ok.next = (self.width.val() != self.k0_11.val()) & (self.width.val() <= self.k1024_11.val());
+        self.h_ok.next = (self.height.val() != self.k0_11.val()) & (self.height.val() <= self.k1024_11.val());
+        self.w_m1.next = self.width.val() - self.k1_11.val();
+        self.h_m1.next = self.height.val() - self.k1_11.val();
+        if self.start.val() & !self.busy.val() {
+            if self.w_ok.val() & self.h_ok.val() {
+                self.size_err.d.next = false;
+                self.running.d.next = true;
+                self.last_x.d.next = self.w_m1.val().get_bits::<10>(0);
+                self.last_y.d.next = self.h_m1.val().get_bits::<10>(0);
+                self.bg.d.next = self.background.val();
+                self.clear.d.next = self.clear_behind.val();
+                self.x.d.next = self.k0_10.val();
+                self.y.d.next = self.k0_10.val();
+                self.addr.d.next = self.k0_20.val();
+            } else {
+                self.size_err.d.next = true;
+            }
+        }
+        self.size_error.next = self.size_err.q.val();
+    }
+}

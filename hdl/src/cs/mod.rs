@@ -1,0 +1,150 @@
+//! `cs`: colour setup and the Color Shader (seed 001 §2.3.2 eqs. 6-7, §3.1; seed 000 §III, TdbS).
+//!
+//! ```text
+//!             SetupCommand                          TdbsRecord
+//!  host ----(valid/ready)--> [ colour_setup ] --(tdbs write port)--> TdbS memory (outside)
+//!                                                                         |
+//!  I-buffer (outside) --(read port, latency 1)--+                         |
+//!                                               v                         v
+//!                        [ color_shader ] <--(tdbs read port, latency 1)--+
+//!                          |  |  clear-behind write ports --> I-buffer, Z-buffer
+//!                          v
+//!          AXI4-Stream video: tdata RGB888 {R,B,G}, tvalid/tready, tuser (SOF), tlast (EOL)
+//! ```
+//!
+//! * [`colour_setup::ColourSetup`] (top `colour_setup`): one command in, planes for R, G, B (or the
+//!   normal's x, y, z) with one reciprocal, one TdbS record written at the triangle's index.
+//! * [`color_shader::ColorShader`] (top `cs`): scan-out, one pixel per clock, lossless back-pressure.
+//! * [`video_fifo::VideoFifo`]: the CS's 8-deep output FIFO (the skid buffer).
+//!
+//! The reciprocal is the RC's [`crate::rc::reciprocal::Reciprocal`] (25-step restoring division).
+//!
+//! Both memories (TdbS: 2^16 records of 424 bits, and the screen-size buffers) are outside the blocks,
+//! behind ports, because they do not fit FPGA block RAM; the testbenches model them.
+
+pub mod color_shader;
+pub mod colour_setup;
+pub mod video_fifo;
+
+use rust_hdl::prelude::*;
+
+/// One TdbS record (seed 000 §III-B, "triangle database for shading"): three planes
+/// `v(X, Y) = (c + a*X + b*Y) / 2^16` at pixel centres, two's complement, 16 fraction bits
+/// (`golden::format::Plane`), and the material (Phong). Channel 0/1/2 = R/G/B for flat and Gouraud,
+/// the normal's x/y/z for Phong.
+///
+/// Packed layout (424 bits, field 0 in the least significant bits):
+///
+/// | bits | field |
+/// |---|---|
+/// | 39:0 | `r_a` | 
+/// | 79:40 | `r_b` |
+/// | 135:80 | `r_c` |
+/// | 175:136 | `g_a` |
+/// | 215:176 | `g_b` |
+/// | 271:216 | `g_c` |
+/// | 311:272 | `b_a` |
+/// | 351:312 | `b_b` |
+/// | 407:352 | `b_c` |
+/// | 423:408 | `material` |
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct TdbsRecord {
+    pub r_a: Bits<40>,
+    pub r_b: Bits<40>,
+    pub r_c: Bits<56>,
+    pub g_a: Bits<40>,
+    pub g_b: Bits<40>,
+    pub g_c: Bits<56>,
+    pub b_a: Bits<40>,
+    pub b_b: Bits<40>,
+    pub b_c: Bits<56>,
+    pub material: Bits<16>,
+}
+
+/// Width of a packed [`TdbsRecord`].
+pub const TDBS_RECORD_BITS: usize = 424;
+
+/// One colour-setup command (`golden::render::SetupCommand` at the port widths). Coordinates are
+/// S11.4 window subpixels, values 16-bit two's complement (RGB888 or Q1.14), all stored as raw bits
+/// (a `LogicStruct` cannot hold `Signed`).
+///
+/// Packed layout (297 bits, LSB first): `index` 15:0, `x0` 31:16, `y0` 47:32, `x1` 63:48, `y1` 79:64,
+/// `x2` 95:80, `y2` 111:96, `v0r v0g v0b v1r v1g v1b v2r v2g v2b` 255:112 (16 bits each, in that
+/// order), `material` 271:256, `flat` 272, `flat_r` 280:273, `flat_g` 288:281, `flat_b` 296:289.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct SetupCommand {
+    pub index: Bits<16>,
+    pub x0: Bits<16>,
+    pub y0: Bits<16>,
+    pub x1: Bits<16>,
+    pub y1: Bits<16>,
+    pub x2: Bits<16>,
+    pub y2: Bits<16>,
+    pub v0r: Bits<16>,
+    pub v0g: Bits<16>,
+    pub v0b: Bits<16>,
+    pub v1r: Bits<16>,
+    pub v1g: Bits<16>,
+    pub v1b: Bits<16>,
+    pub v2r: Bits<16>,
+    pub v2g: Bits<16>,
+    pub v2b: Bits<16>,
+    pub material: Bits<16>,
+    pub flat: Bit,
+    pub flat_r: Bits<8>,
+    pub flat_g: Bits<8>,
+    pub flat_b: Bits<8>,
+}
+
+/// Width of a packed [`SetupCommand`].
+pub const SETUP_COMMAND_BITS: usize = 297;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn packed_widths_are_the_documented_ones() {
+        assert_eq!(TdbsRecord::BITS, TDBS_RECORD_BITS);
+        assert_eq!(SetupCommand::BITS, SETUP_COMMAND_BITS);
+        let r = TdbsRecord { material: 0xabcd.into(), ..Default::default() };
+        let b: Bits<TDBS_RECORD_BITS> = r.into();
+        assert_eq!(b.get_bits::<16>(408).to_u64(), 0xabcd);
+        let c = SetupCommand { flat: true, flat_b: 0x81.into(), ..Default::default() };
+        let b: Bits<SETUP_COMMAND_BITS> = c.into();
+        assert!(b.get_bit(272));
+        assert_eq!(b.get_bits::<8>(289).to_u64(), 0x81);
+    }
+
+    #[test]
+    fn both_tops_pass_the_rust_hdl_checks_and_generate_named_verilog() {
+        let v = colour_setup_verilog().unwrap();
+        assert!(v.contains("module colour_setup("), "colour_setup top module name");
+        let v = color_shader_verilog().unwrap();
+        assert!(v.contains("module cs("), "cs top module name");
+        assert!(v.contains("video_tready") && v.contains("tdbs_read_data"));
+    }
+}
+
+/// The Verilog of a block with its top module named `name` (submodules are `name$child`). Runs
+/// rust-hdl's structural checks first, so a check failure is an `Err` rather than a panic.
+pub fn verilog_named<U: Block>(uut: &U, name: &str) -> Result<String, String> {
+    check_all(uut).map_err(|e| format!("{name}: rust-hdl check failed: {e:?}"))?;
+    let mut defines = ModuleDefines::default();
+    uut.accept(name, &mut defines);
+    Ok(defines.defines())
+}
+
+/// Verilog of the colour-setup top (module `colour_setup`).
+pub fn colour_setup_verilog() -> Result<String, String> {
+    let mut uut = colour_setup::ColourSetup::default();
+    uut.connect_all();
+    verilog_named(&uut, "colour_setup")
+}
+
+/// Verilog of the Color Shader top (module `cs`).
+pub fn color_shader_verilog() -> Result<String, String> {
+    let mut uut = color_shader::ColorShader::default();
+    uut.connect_all();
+    verilog_named(&uut, "cs")
+}

@@ -1,0 +1,366 @@
+//! Every-cycle bench of the Color Shader: the RTL (`hdl::cs::color_shader::ColorShader`, RustHDL,
+//! direct drive, GUIDE §5) and the cycle model (`golden::cycle::color_shader::ColorShaderModel`) get
+//! the same inputs every cycle: frame starts (also while busy, where they must be ignored), random
+//! back-pressure on the video stream, and the read data of the I-buffer and TdbS memory models
+//! ([`CsMemories`], latency 1), which answer the ports. Every output port is compared every cycle; the
+//! first mismatch stops the run with the cycle, the port, both values and the path of a VCD.
+
+use crate::common::{vcd_path, vcd_wanted, Rng};
+use crate::cs::pack::{record_of, tdata_of, BitVector};
+use crate::cs::replay::{port, PortSpec, Recording};
+use golden::cycle::color_shader::{ColorShaderModel, CsInputs, CsMemories, CsOutputs, ReadPort, VideoBeat, WritePort};
+use hdl::cs::color_shader::ColorShader;
+use rust_hdl::core::vcd_probe::VCDProbe;
+use rust_hdl::prelude::*;
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::PathBuf;
+
+/// One frame to scan.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct FrameSpec {
+    pub width: u32,
+    pub height: u32,
+    pub background: [u8; 3],
+    pub clear_behind: bool,
+}
+
+/// How the environment behaves.
+#[derive(Copy, Clone, Debug)]
+pub struct CsDrive {
+    /// Percentage of cycles in which the video consumer is not ready.
+    pub stall_percent: u64,
+    /// Percentage of busy cycles in which `start` is (uselessly) high.
+    pub start_while_busy_percent: u64,
+    /// Idle cycles between frames, at most.
+    pub max_idle: u64,
+    pub seed: u64,
+}
+
+impl CsDrive {
+    /// Consumer always ready, frames back to back.
+    pub fn ideal() -> CsDrive {
+        CsDrive { stall_percent: 0, start_while_busy_percent: 0, max_idle: 0, seed: 1 }
+    }
+}
+
+/// What a run produced.
+#[derive(Clone, Debug, Default)]
+pub struct CsRun {
+    /// Per accepted frame: the beats taken, in order.
+    pub frames: Vec<Vec<VideoBeat>>,
+    /// Starts that were refused (`size_error`).
+    pub refused: u64,
+    /// Cycles of the run.
+    pub cycles: u64,
+    /// Per accepted frame: cycles from its first issue to its last beat taken, both included.
+    pub frame_cycles: Vec<u64>,
+    pub rtl_cycles_per_second: f64,
+    pub recording: Option<Recording>,
+}
+
+/// Ports of the `cs` top in the replay's order.
+pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
+    (
+        vec![
+            port("start", 1),
+            port("width", 11),
+            port("height", 11),
+            port("background", 24),
+            port("clear_behind", 1),
+            port("ibuf_read_data", 16),
+            port("tdbs_read_data", hdl::cs::TDBS_RECORD_BITS),
+            port("video_tready", 1),
+        ],
+        vec![
+            port("busy", 1),
+            port("size_error", 1),
+            port("ibuf_read_enable", 1),
+            port("ibuf_read_address", 20),
+            port("tdbs_read_enable", 1),
+            port("tdbs_read_address", 16),
+            port("ibuf_write_enable", 1),
+            port("ibuf_write_address", 20),
+            port("ibuf_write_data", 16),
+            port("zbuf_write_enable", 1),
+            port("zbuf_write_address", 20),
+            port("zbuf_write_data", 24),
+            port("video_tdata", 24),
+            port("video_tvalid", 1),
+            port("video_tuser", 1),
+            port("video_tlast", 1),
+        ],
+    )
+}
+
+fn in_vector(i: &CsInputs) -> BitVector {
+    let mut v = BitVector::default();
+    v.push(i.start as u128, 1);
+    v.push(i.width as u128, 11);
+    v.push(i.height as u128, 11);
+    v.push(tdata_of(i.background) as u128, 24);
+    v.push(i.clear_behind as u128, 1);
+    v.push(i.ibuf_read_data as u128, 16);
+    v.push_record(&i.tdbs_read_data);
+    v.push(i.video_tready as u128, 1);
+    v
+}
+
+/// Every output port of a cycle as (name, value), in the replay's order.
+fn port_values(o: &CsOutputs) -> [(&'static str, u64, usize); 16] {
+    [
+        ("busy", o.busy as u64, 1),
+        ("size_error", o.size_error as u64, 1),
+        ("ibuf_read_enable", o.ibuf_read.enable as u64, 1),
+        ("ibuf_read_address", o.ibuf_read.address as u64, 20),
+        ("tdbs_read_enable", o.tdbs_read.enable as u64, 1),
+        ("tdbs_read_address", o.tdbs_read.address as u64, 16),
+        ("ibuf_write_enable", o.ibuf_write.enable as u64, 1),
+        ("ibuf_write_address", o.ibuf_write.address as u64, 20),
+        ("ibuf_write_data", o.ibuf_write.data as u64, 16),
+        ("zbuf_write_enable", o.zbuf_write.enable as u64, 1),
+        ("zbuf_write_address", o.zbuf_write.address as u64, 20),
+        ("zbuf_write_data", o.zbuf_write.data as u64, 24),
+        ("video_tdata", tdata_of(o.video.rgb) as u64, 24),
+        ("video_tvalid", o.video_tvalid as u64, 1),
+        ("video_tuser", o.video.sof as u64, 1),
+        ("video_tlast", o.video.eol as u64, 1),
+    ]
+}
+
+fn out_vector(o: &CsOutputs) -> BitVector {
+    let mut v = BitVector::default();
+    for (_, val, w) in port_values(o) {
+        v.push(val as u128, w);
+    }
+    v
+}
+
+fn rtl_outputs(u: &ColorShader) -> CsOutputs {
+    let t = u.video_tdata.val().to_u64() as u32;
+    CsOutputs {
+        busy: u.busy.val(),
+        size_error: u.size_error.val(),
+        ibuf_read: ReadPort { enable: u.ibuf_read_enable.val(), address: u.ibuf_read_address.val().to_u64() as u32 },
+        tdbs_read: ReadPort { enable: u.tdbs_read_enable.val(), address: u.tdbs_read_address.val().to_u64() as u32 },
+        ibuf_write: WritePort {
+            enable: u.ibuf_write_enable.val(),
+            address: u.ibuf_write_address.val().to_u64() as u32,
+            data: u.ibuf_write_data.val().to_u64() as u32,
+        },
+        zbuf_write: WritePort {
+            enable: u.zbuf_write_enable.val(),
+            address: u.zbuf_write_address.val().to_u64() as u32,
+            data: u.zbuf_write_data.val().to_u64() as u32,
+        },
+        video_tvalid: u.video_tvalid.val(),
+        video: VideoBeat { rgb: crate::cs::pack::rgb_of(t), sof: u.video_tuser.val(), eol: u.video_tlast.val() },
+    }
+}
+
+struct Rtl {
+    uut: ColorShader,
+    vcd: Option<VCDProbe<BufWriter<File>>>,
+}
+
+impl Rtl {
+    fn new(vcd: Option<&PathBuf>) -> Result<Rtl, String> {
+        let mut uut = ColorShader::default();
+        uut.connect_all();
+        check_all(&uut).map_err(|e| format!("cs design check: {e:?}"))?;
+        let vcd = match vcd {
+            Some(p) => {
+                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
+                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), &uut), &uut))
+            }
+            None => None,
+        };
+        Ok(Rtl { uut, vcd })
+    }
+    fn settle(&mut self, t: u64) -> Result<(), String> {
+        if !simulate(&mut self.uut, 200) {
+            return Err(format!("cs did not settle at time {t}"));
+        }
+        if let Some(mut v) = self.vcd.take() {
+            v.timestamp(t).map_err(|e| format!("vcd: {e}"))?;
+            self.vcd = Some(write_vcd_change(v, &self.uut));
+        }
+        Ok(())
+    }
+    fn cycle(&mut self, cycle: u64, i: &CsInputs) -> Result<CsOutputs, String> {
+        let u = &mut self.uut;
+        u.start.next = i.start;
+        u.width.next = (i.width as u64 & 0x7ff).into();
+        u.height.next = (i.height as u64 & 0x7ff).into();
+        u.background.next = (tdata_of(i.background) as u64).into();
+        u.clear_behind.next = i.clear_behind;
+        u.ibuf_read_data.next = (i.ibuf_read_data as u64).into();
+        u.tdbs_read_data.next = record_of(&i.tdbs_read_data);
+        u.video_tready.next = i.video_tready;
+        u.clock.next = false.into();
+        self.settle(cycle * 10)?;
+        Ok(rtl_outputs(&self.uut))
+    }
+    fn rising_edge(&mut self, cycle: u64) -> Result<(), String> {
+        self.uut.clock.next = true.into();
+        self.settle(cycle * 10 + 5)
+    }
+}
+
+enum Stop {
+    Mismatch(u64, &'static str, u64, u64),
+    Error(String),
+}
+
+fn run_inner(
+    mem: &mut CsMemories,
+    frames: &[FrameSpec],
+    drive: CsDrive,
+    with_rtl: bool,
+    vcd: Option<&PathBuf>,
+    record: bool,
+) -> Result<CsRun, Stop> {
+    let mut rng = Rng::new(drive.seed);
+    let mut model = ColorShaderModel::new();
+    let mut rtl = if with_rtl { Some(Rtl::new(vcd).map_err(Stop::Error)?) } else { None };
+    let mut rec = if record {
+        let (i, o) = replay_ports();
+        Some(Recording::new(i, o))
+    } else {
+        None
+    };
+    let mut run = CsRun::default();
+    let total_px: u64 = frames.iter().map(|f| f.width as u64 * f.height as u64).sum();
+    let limit = 1000 + (total_px + 100 * frames.len() as u64) * (2 + 100 / (100 - drive.stall_percent.min(95)));
+    let (mut next, mut idle) = (0usize, 0u64);
+    let (mut first_issue, mut last_beat) = (None::<u64>, 0u64);
+    let mut was_busy = false;
+    let t0 = std::time::Instant::now();
+    let mut cycle = 0u64;
+    loop {
+        let busy = model.outputs().busy;
+        if was_busy && !busy {
+            // The frame in flight has finished.
+            run.frame_cycles.push(last_beat + 1 - first_issue.unwrap_or(last_beat + 1));
+            first_issue = None;
+            idle = if drive.max_idle > 0 { rng.below(drive.max_idle + 1) } else { 0 };
+        }
+        was_busy = busy;
+        let spec = frames.get(next).copied();
+        let start = match spec {
+            Some(_) if !busy => idle == 0,
+            _ => busy && drive.start_while_busy_percent > 0 && rng.chance(drive.start_while_busy_percent),
+        };
+        let s = spec.or(frames.last().copied()).unwrap_or(FrameSpec { width: 1, height: 1, background: [0; 3], clear_behind: false });
+        let (ibuf_read_data, tdbs_read_data) = mem.read_data();
+        let inp = CsInputs {
+            start,
+            width: if busy { rng.below(2048) as u32 } else { s.width },
+            height: if busy { rng.below(2048) as u32 } else { s.height },
+            background: if busy { [rng.below(256) as u8, 0, 7] } else { s.background },
+            clear_behind: if busy { rng.chance(50) } else { s.clear_behind },
+            ibuf_read_data,
+            tdbs_read_data,
+            video_tready: !rng.chance(drive.stall_percent),
+        };
+        let expected = model.step(&inp);
+        if let Some(r) = rtl.as_mut() {
+            let actual = r.cycle(cycle, &inp).map_err(Stop::Error)?;
+            for ((p, e, _), (_, a, _)) in port_values(&expected).iter().zip(port_values(&actual).iter()) {
+                if e != a {
+                    return Err(Stop::Mismatch(cycle, p, *e, *a));
+                }
+            }
+            r.rising_edge(cycle).map_err(Stop::Error)?;
+        }
+        if let Some(rc) = rec.as_mut() {
+            rc.push(in_vector(&inp), out_vector(&expected));
+        }
+        if start && !busy {
+            next += 1;
+            if model.outputs().size_error {
+                run.refused += 1;
+            } else {
+                run.frames.push(Vec::new());
+            }
+        }
+        if !busy && idle > 0 {
+            idle -= 1;
+        }
+        if expected.ibuf_read.enable && first_issue.is_none() {
+            first_issue = Some(cycle);
+        }
+        if expected.video_tvalid && inp.video_tready {
+            match run.frames.last_mut() {
+                Some(f) => f.push(expected.video),
+                None => return Err(Stop::Error(format!("cycle {cycle}: a video beat before any frame was started"))),
+            }
+            last_beat = cycle;
+        }
+        mem.edge(&expected);
+        cycle += 1;
+        if next == frames.len() && !model.outputs().busy {
+            if was_busy {
+                run.frame_cycles.push(last_beat + 1 - first_issue.unwrap_or(last_beat + 1));
+            }
+            break;
+        }
+        if cycle > limit {
+            return Err(Stop::Error(format!("the CS did not finish {} frame(s) in {limit} cycles", frames.len())));
+        }
+    }
+    let dt = t0.elapsed().as_secs_f64();
+    run.cycles = cycle;
+    run.rtl_cycles_per_second = if with_rtl && dt > 0.0 { cycle as f64 / dt } else { 0.0 };
+    run.recording = rec;
+    Ok(run)
+}
+
+/// The cycle model alone.
+pub fn run_model(mem: &mut CsMemories, frames: &[FrameSpec], drive: CsDrive) -> Result<CsRun, String> {
+    run_inner(mem, frames, drive, false, None, false).map_err(|s| match s {
+        Stop::Error(e) => e,
+        Stop::Mismatch(..) => unreachable!(),
+    })
+}
+
+/// The RTL against the model, every port every cycle; `mem` is updated by the run's writes. `test`
+/// names the VCD (`target/vcd/cs/<test>.vcd`): written with `VCD=1`, and always for a failing run.
+pub fn run_rtl_vs_model(test: &str, mem: &mut CsMemories, frames: &[FrameSpec], drive: CsDrive, record: bool) -> Result<CsRun, String> {
+    let path = vcd_path("cs", test);
+    let vcd = if vcd_wanted() { Some(&path) } else { None };
+    let start_mem = mem.clone();
+    match run_inner(mem, frames, drive, true, vcd, record) {
+        Ok(r) => Ok(r),
+        Err(Stop::Error(e)) => Err(e),
+        Err(Stop::Mismatch(cycle, port, e, a)) => {
+            let mut again = start_mem;
+            let _ = run_inner(&mut again, frames, drive, true, Some(&path), false);
+            Err(format!(
+                "cs differs from its cycle model in cycle {cycle} (seed {}), port {port}: expected {e:#x}, actual {a:#x}\n  VCD: {}",
+                drive.seed,
+                path.display()
+            ))
+        }
+    }
+}
+
+/// Check a frame's beats: W*H beats, `tuser` on the first only, `tlast` exactly at line ends; returns
+/// the RGB888 image.
+pub fn frame_image(beats: &[VideoBeat], width: u32, height: u32) -> Result<Vec<u8>, String> {
+    if beats.len() != (width * height) as usize {
+        return Err(format!("{} beats for a {width}x{height} frame", beats.len()));
+    }
+    let mut rgb = Vec::with_capacity(beats.len() * 3);
+    for (i, b) in beats.iter().enumerate() {
+        let (x, y) = (i as u32 % width, i as u32 / width);
+        if b.sof != (i == 0) {
+            return Err(format!("tuser is {} at pixel ({x}, {y})", b.sof));
+        }
+        if b.eol != (x == width - 1) {
+            return Err(format!("tlast is {} at pixel ({x}, {y})", b.eol));
+        }
+        rgb.extend_from_slice(&b.rgb);
+    }
+    Ok(rgb)
+}

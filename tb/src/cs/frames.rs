@@ -1,0 +1,66 @@
+//! Real frames for the CS benches: a built-in scene rendered by the golden pipeline
+//! (`golden::render::render_with`) through a recording `Chipset`, which keeps the colour-setup commands
+//! the host sent, the TdbS the golden chipset built from them, and the hardware I-buffer.
+
+use golden::cycle::color_shader::CsMemories;
+use golden::format::Screen;
+use golden::host::Camera;
+use golden::raster::{CullMode, FrontFace, TriResult};
+use golden::render::{render_with, Chipset, Frame, GoldenChipset, RcCommand, RenderOptions, ScanOut, SetupCommand};
+use golden::scene::{builtin, Winding};
+use golden::shade::{PhongLights, Shading};
+
+/// The golden chipset, recording what colour setup was asked to do.
+pub struct Recorder {
+    pub inner: GoldenChipset,
+    pub setups: Vec<SetupCommand>,
+}
+
+impl Chipset for Recorder {
+    fn rasterize(&mut self, t: &[RcCommand], c: CullMode, f: FrontFace) -> Result<Vec<TriResult>, String> {
+        self.inner.rasterize(t, c, f)
+    }
+    fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String> {
+        self.setups.extend_from_slice(cmds);
+        self.inner.colour_setup(cmds)
+    }
+    fn scanout(&mut self, s: Shading, l: &PhongLights, bg: [u8; 3]) -> Result<ScanOut, String> {
+        self.inner.scanout(s, l, bg)
+    }
+}
+
+/// A rendered frame and what the chipset saw.
+pub struct RecordedFrame {
+    pub frame: Frame,
+    pub chip: Recorder,
+    pub background: [u8; 3],
+}
+
+impl RecordedFrame {
+    /// The memories as the CS finds them after colour setup: I-buffer (16-bit hardware indices),
+    /// Z-buffer, TdbS.
+    pub fn memories(&self) -> CsMemories {
+        let ibuf = self.frame.hw_index.iter().map(|&i| i as u16).collect();
+        CsMemories::new(ibuf, self.frame.zbuf.clone(), self.chip.inner.tdbs.clone())
+    }
+}
+
+/// Render built-in scene `name` (the teapot at grid 6 to keep benches short) at `width` x `height`.
+pub fn record(name: &str, shading: Shading, width: u32, height: u32) -> Result<RecordedFrame, String> {
+    let mesh = if name == "teapot" { builtin::teapot(6) } else { builtin::scene(name)? };
+    let screen = Screen::new(width, height)?;
+    let background = [24, 24, 40];
+    let opts = RenderOptions {
+        screen,
+        camera: Camera::framing(&mesh, [0.3, 0.45, 1.0], 40.0),
+        shading,
+        cull: CullMode::Back,
+        front: if mesh.front_face == Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
+        lighting: Default::default(),
+        index_bits: 16,
+        background,
+    };
+    let mut chip = Recorder { inner: GoldenChipset::new(screen), setups: Vec::new() };
+    let frame = render_with(&mesh, &opts, &mut chip)?;
+    Ok(RecordedFrame { frame, chip, background })
+}

@@ -1,0 +1,236 @@
+//! Level 3 of the verification (STYLE.md §5): the generated Verilog replays vectors recorded from the
+//! RustHDL bench (inputs applied every cycle, outputs the cycle model expects every cycle) in a
+//! self-checking Icarus Verilog testbench, and the first mismatches are reported by port and cycle.
+//! Also the lint (`verilator --lint-only -Wall`, named waivers) and synthesis (`yosys synth_ice40 -dsp`)
+//! checks of the blocks.
+
+use crate::cs::pack::BitVector;
+use std::fmt::Write as _;
+use std::path::Path;
+use std::process::Command;
+
+/// A port of the top module: its Verilog name and width.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PortSpec {
+    pub name: String,
+    pub width: usize,
+}
+
+pub fn port(name: &str, width: usize) -> PortSpec {
+    PortSpec { name: name.to_string(), width }
+}
+
+/// Per-cycle vectors: `vin[c]` are the inputs applied in cycle c (the `clock` port excluded), `vout[c]`
+/// the outputs expected before the rising edge of cycle c. Fields are in port order, first port in
+/// the least significant bits.
+#[derive(Clone, Debug, Default)]
+pub struct Recording {
+    pub inputs: Vec<PortSpec>,
+    pub outputs: Vec<PortSpec>,
+    pub vin: Vec<BitVector>,
+    pub vout: Vec<BitVector>,
+}
+
+impl Recording {
+    pub fn new(inputs: Vec<PortSpec>, outputs: Vec<PortSpec>) -> Recording {
+        Recording { inputs, outputs, vin: Vec::new(), vout: Vec::new() }
+    }
+    fn width(ports: &[PortSpec]) -> usize {
+        ports.iter().map(|p| p.width).sum()
+    }
+    pub fn push(&mut self, vin: BitVector, vout: BitVector) {
+        assert_eq!(vin.len(), Self::width(&self.inputs), "input vector width");
+        assert_eq!(vout.len(), Self::width(&self.outputs), "output vector width");
+        self.vin.push(vin);
+        self.vout.push(vout);
+    }
+    pub fn cycles(&self) -> usize {
+        self.vin.len()
+    }
+}
+
+fn ident(name: &str) -> String {
+    name.replace('$', "_")
+}
+
+/// The self-checking testbench for `top` and this recording.
+pub fn testbench(top: &str, rec: &Recording) -> String {
+    let wi = Recording::width(&rec.inputs);
+    let wo = Recording::width(&rec.outputs);
+    let n = rec.cycles();
+    let mut s = String::new();
+    let _ = writeln!(s, "`timescale 1ns/1ps\nmodule replay_tb;");
+    let _ = writeln!(s, "  reg clock = 1'b0;\n  reg [{}:0] vin [0:{}];\n  reg [{}:0] vout [0:{}];", wi - 1, n - 1, wo - 1, n - 1);
+    let _ = writeln!(s, "  reg [{}:0] cur_in;\n  reg [{}:0] cur_out;", wi - 1, wo - 1);
+    let mut off = 0;
+    for p in &rec.inputs {
+        let _ = writeln!(s, "  wire [{}:0] in_{} = cur_in[{}:{}];", p.width - 1, ident(&p.name), off + p.width - 1, off);
+        off += p.width;
+    }
+    for p in &rec.outputs {
+        let _ = writeln!(s, "  wire [{}:0] out_{};", p.width - 1, ident(&p.name));
+    }
+    let mut conns = vec![".clock(clock)".to_string()];
+    conns.extend(rec.inputs.iter().map(|p| format!(".{}(in_{})", p.name, ident(&p.name))));
+    conns.extend(rec.outputs.iter().map(|p| format!(".{}(out_{})", p.name, ident(&p.name))));
+    let _ = writeln!(s, "  {top} dut(\n    {}\n  );", conns.join(",\n    "));
+    let _ = writeln!(s, "  integer cyc, errors;");
+    let _ = writeln!(s, "  initial begin");
+    let _ = writeln!(s, "    $readmemh(\"in.hex\", vin);\n    $readmemh(\"out.hex\", vout);\n    errors = 0;");
+    let _ = writeln!(s, "    for (cyc = 0; cyc < {n}; cyc = cyc + 1) begin");
+    let _ = writeln!(s, "      cur_in = vin[cyc];\n      cur_out = vout[cyc];\n      clock = 1'b0;\n      #5;");
+    let mut off = 0;
+    for p in &rec.outputs {
+        let id = ident(&p.name);
+        let hi = off + p.width - 1;
+        let _ = writeln!(
+            s,
+            "      if (out_{id} !== cur_out[{hi}:{off}]) begin\n        $display(\"MISMATCH cycle %0d port {name} expected %h actual %h\", cyc, cur_out[{hi}:{off}], out_{id});\n        errors = errors + 1;\n      end",
+            name = p.name
+        );
+        off += p.width;
+    }
+    let _ = writeln!(s, "      if (errors >= 8) begin\n        $display(\"REPLAY STOPPED errors %0d\", errors);\n        $finish;\n      end");
+    let _ = writeln!(s, "      clock = 1'b1;\n      #5;\n    end");
+    let _ = writeln!(s, "    $display(\"REPLAY DONE cycles %0d errors %0d\", {n}, errors);\n    $finish;\n  end\nendmodule");
+    s
+}
+
+/// Outcome of a replay.
+#[derive(Clone, Debug)]
+pub struct ReplayReport {
+    pub cycles: usize,
+    pub seconds: f64,
+}
+
+/// Replay `rec` on the Verilog `verilog` (top module `top`) under Icarus Verilog in `dir`. Errors carry
+/// the first mismatching ports with cycle, expected and actual values.
+pub fn replay_iverilog(verilog: &str, top: &str, rec: &Recording, dir: &Path) -> Result<ReplayReport, String> {
+    if rec.cycles() == 0 {
+        return Err("replay: empty recording".into());
+    }
+    std::fs::create_dir_all(dir).map_err(|e| format!("replay: cannot create {}: {e}", dir.display()))?;
+    let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).map_err(|e| format!("replay: cannot write {name}: {e}"));
+    write(&format!("{top}.v"), verilog)?;
+    write("replay_tb.v", &testbench(top, rec))?;
+    write("in.hex", &rec.vin.iter().map(|v| v.hex() + "\n").collect::<String>())?;
+    write("out.hex", &rec.vout.iter().map(|v| v.hex() + "\n").collect::<String>())?;
+    let out = Command::new("iverilog")
+        .current_dir(dir)
+        .args(["-g2005", "-o", "replay.vvp", "replay_tb.v", &format!("{top}.v")])
+        .output()
+        .map_err(|e| format!("replay: cannot run iverilog: {e}"))?;
+    if !out.status.success() {
+        return Err(format!("replay: iverilog failed to compile {top}:\n{}", String::from_utf8_lossy(&out.stderr)));
+    }
+    let t0 = std::time::Instant::now();
+    // A zero-delay oscillation (a combinational loop that Icarus cannot settle) would run forever:
+    // bound the run (Icarus replays these designs at > 5k cycles/s).
+    let limit = 60 + rec.cycles() / 500;
+    let out = Command::new("timeout")
+        .current_dir(dir)
+        .args([limit.to_string().as_str(), "vvp", "-n", "replay.vvp"])
+        .output()
+        .map_err(|e| format!("replay: cannot run vvp: {e}"))?;
+    let seconds = t0.elapsed().as_secs_f64();
+    if out.status.code() == Some(124) {
+        return Err(format!("replay of {top}: vvp did not finish {} cycles in {limit} s (a combinational loop that never settles?); files in {}", rec.cycles(), dir.display()));
+    }
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let mismatches: Vec<&str> = text.lines().filter(|l| l.starts_with("MISMATCH")).collect();
+    if !mismatches.is_empty() {
+        return Err(format!(
+            "the Verilog of {top} differs from the cycle model ({} shown, files in {}):\n{}",
+            mismatches.len(),
+            dir.display(),
+            mismatches.join("\n")
+        ));
+    }
+    let done = format!("REPLAY DONE cycles {} errors 0", rec.cycles());
+    if !text.contains(&done) {
+        return Err(format!("replay of {top} did not finish cleanly:\n{text}\n{}", String::from_utf8_lossy(&out.stderr)));
+    }
+    Ok(ReplayReport { cycles: rec.cycles(), seconds })
+}
+
+/// Verilator warnings the generated Verilog of rust-hdl 0.46 cannot avoid, each with its reason.
+pub const LINT_WAIVERS: &[(&str, &str)] = &[
+    ("WIDTH", "rust-hdl emits `bit_cast` as `x & N'hmask` (wider than x), 64-bit struct-field offsets and 32-bit `index() == i` compares, whatever the operand widths"),
+    ("UNUSEDPARAM", "rust-hdl copies every enum localparam into each DFF module that holds the state"),
+    ("DECLFILENAME", "all modules of a top are emitted into one file"),
+    ("UNOPTFLAT", "colour_setup only: rust-hdl emits one always @(*) block per module, so a block that drives a child multiplier's or reciprocal's inputs and reads its outputs is one vertex on a cycle for Verilator, though no signal depends on itself (rust-hdl's check_all finds no logic loop and Icarus settles every cycle); a scheduling note, not a loop"),
+    ("UNUSEDSIGNAL", "intended: the CS does not read the record's material (Phong only) nor the FIFO's debug overflow flag; truncations (diff[63:36], the rounding shift's cx8[3:0], size-1 bit 10)"),
+];
+
+/// `verilator --lint-only -Wall` with [`LINT_WAIVERS`]; returns the log on failure.
+pub fn lint(verilog: &str, top: &str, dir: &Path) -> Result<(), String> {
+    std::fs::create_dir_all(dir).map_err(|e| e.to_string())?;
+    let file = dir.join(format!("{top}.v"));
+    std::fs::write(&file, verilog).map_err(|e| e.to_string())?;
+    let mut args = vec!["--lint-only".to_string(), "-Wall".to_string(), "--top-module".to_string(), top.to_string()];
+    args.extend(LINT_WAIVERS.iter().map(|w| format!("-Wno-{}", w.0)));
+    args.push(file.display().to_string());
+    let out = Command::new("verilator").args(&args).output().map_err(|e| format!("cannot run verilator: {e}"))?;
+    if !out.status.success() {
+        return Err(format!("verilator --lint-only -Wall on {top}:\n{}", String::from_utf8_lossy(&out.stderr)));
+    }
+    Ok(())
+}
+
+/// Cell counts of `yosys synth_ice40 -dsp`.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct SynthFigures {
+    pub lut4: u64,
+    pub carry: u64,
+    pub ff: u64,
+    pub bram: u64,
+    pub dsp: u64,
+    pub latches: u64,
+}
+
+/// Synthesize with `yosys synth_ice40 -dsp` and count cells; latches are an error.
+pub fn synth_ice40(verilog: &str, top: &str, dir: &Path) -> Result<SynthFigures, String> {
+    std::fs::create_dir_all(dir).map_err(|e| e.to_string())?;
+    let file = dir.join(format!("{top}.v"));
+    std::fs::write(&file, verilog).map_err(|e| e.to_string())?;
+    let script = format!("read_verilog {}; synth_ice40 -dsp -top {top}; stat", file.display());
+    let out = Command::new("yosys").current_dir(dir).args(["-q", "-l", "synth.log", "-p", &script]).output().map_err(|e| format!("cannot run yosys: {e}"))?;
+    let log = std::fs::read_to_string(dir.join("synth.log")).unwrap_or_default();
+    if !out.status.success() {
+        return Err(format!("yosys synth_ice40 of {top} failed:\n{}\n{}", String::from_utf8_lossy(&out.stderr), log));
+    }
+    // The last `stat` block: "   <count>   <cell>" lines (yosys 0.23 prints "     123   SB_LUT4").
+    let stat = &log[log.rfind("Number of cells").unwrap_or(0)..];
+    let count = |cell: &str| -> u64 {
+        stat.lines()
+            .filter_map(|l| {
+                let mut it = l.split_whitespace();
+                let (a, b) = (it.next()?, it.next()?);
+                if b == cell {
+                    a.parse::<u64>().ok()
+                } else if a == cell {
+                    b.parse::<u64>().ok()
+                } else {
+                    None
+                }
+            })
+            .sum()
+    };
+    let ff: u64 = ["SB_DFF", "SB_DFFE", "SB_DFFSR", "SB_DFFR", "SB_DFFS", "SB_DFFESR", "SB_DFFER", "SB_DFFES", "SB_DFFSS", "SB_DFFESS"]
+        .iter()
+        .map(|c| count(c))
+        .sum();
+    let latches = log.lines().filter(|l| l.contains("Latch inferred")).count() as u64 + count("$_DLATCH_P_") + count("$_DLATCH_N_");
+    let f = SynthFigures {
+        lut4: count("SB_LUT4"),
+        carry: count("SB_CARRY"),
+        ff,
+        bram: count("SB_RAM40_4K"),
+        dsp: count("SB_MAC16"),
+        latches,
+    };
+    if f.latches > 0 {
+        return Err(format!("yosys inferred {} latch(es) in {top}; see {}", f.latches, dir.join("synth.log").display()));
+    }
+    Ok(f)
+}

@@ -1,0 +1,299 @@
+//! Tests of colour setup and the Color Shader: RTL vs cycle model every cycle, images and TdbS vs the
+//! algorithmic model on real frames, throughput figures, the Verilog replay, lint and synthesis.
+
+use super::color_shader_bench::{self as csb, CsDrive, FrameSpec};
+use super::colour_setup_bench::{self as setb, SetupDrive};
+use super::frames::record;
+use super::replay::{lint, replay_iverilog, synth_ice40};
+use crate::common::{have_tool, scratch_dir, Rng};
+use golden::cycle::color_shader::{CsMemories, CS_PIPELINE_CYCLES};
+use golden::cycle::colour_setup::{SetupCmd, FLAT_CYCLES, SHADED_CYCLES};
+use golden::format::{Plane, DEPTH_MAX};
+use golden::scene::builtin;
+use golden::shade::{Shading, TdbsEntry};
+
+// ------------------------------------------------------------------------------------------------
+// Stimulus
+
+fn rand_i16(rng: &mut Rng, lo: i32, hi: i32) -> i16 {
+    (lo + rng.below((hi - lo) as u64) as i32) as i16
+}
+
+/// Random colour-setup commands: flat ones, zero-area ones, realistic Gouraud and Phong ones, tiny
+/// triangles with steep gradients (A/B saturation), and full-range 16-bit fields (C saturation).
+fn random_commands(n: usize, rng: &mut Rng) -> Vec<SetupCmd> {
+    (0..n)
+        .map(|i| {
+            let index = 1 + rng.below(65535) as u16;
+            let material = rng.below(4) as u16;
+            let mut c = SetupCmd { index, material, ..Default::default() };
+            let kind = rng.below(10);
+            let (lo, hi, span) = match kind {
+                0 | 1 => (-32768, 32767, 65535),
+                2 => (-4000, 8000, 4),
+                _ => (-5120, 10240, 4000),
+            };
+            let x0 = rand_i16(rng, lo, hi) as i32;
+            let y0 = rand_i16(rng, lo, hi) as i32;
+            for k in 0..3 {
+                let dx = rng.below(2 * span as u64 + 1) as i32 - span;
+                let dy = rng.below(2 * span as u64 + 1) as i32 - span;
+                c.x[k] = (x0 + if k == 0 { 0 } else { dx }).clamp(-32768, 32767) as i16;
+                c.y[k] = (y0 + if k == 0 { 0 } else { dy }).clamp(-32768, 32767) as i16;
+            }
+            for k in 0..3 {
+                for ch in 0..3 {
+                    c.values[k][ch] = match kind {
+                        0 | 2 => rand_i16(rng, -32768, 32767),
+                        4 => rand_i16(rng, -16384, 16385),
+                        _ => rand_i16(rng, 0, 256),
+                    };
+                }
+            }
+            if kind == 3 {
+                // Zero area: vertex 2 on the line through vertices 0 and 1 (or all three equal).
+                let t = if i % 2 == 0 { 2 } else { 0 };
+                c.x[2] = (c.x[0] as i32 + t * (c.x[1] as i32 - c.x[0] as i32)).clamp(-32768, 32767) as i16;
+                c.y[2] = (c.y[0] as i32 + t * (c.y[1] as i32 - c.y[0] as i32)).clamp(-32768, 32767) as i16;
+                if t == 0 {
+                    c.x[1] = c.x[0];
+                    c.y[1] = c.y[0];
+                }
+            }
+            if kind == 5 {
+                c.flat = true;
+                c.flat_rgb = [rng.below(256) as u8, rng.below(256) as u8, rng.below(256) as u8];
+            }
+            c
+        })
+        .collect()
+}
+
+/// A random plane: mostly within the formats' useful range, sometimes at the extremes.
+fn random_plane(rng: &mut Rng) -> Plane {
+    let pick = |rng: &mut Rng, bits: u32, frac_of: u64| -> i64 {
+        match rng.below(8) {
+            0 => -(1i64 << (bits - 1)),
+            1 => (1i64 << (bits - 1)) - 1,
+            2 => (rng.next_u64() as i64) >> (64 - bits),
+            _ => (rng.below(2 * frac_of + 1) as i64) - frac_of as i64,
+        }
+    };
+    Plane { a: pick(rng, 40, 3 << 16), b: pick(rng, 40, 3 << 16), c: pick(rng, 56, 300 << 16) }
+}
+
+/// Memories with random TdbS records and a random I-buffer of `w` x `h` (a quarter background).
+fn random_memories(rng: &mut Rng, w: u32, h: u32, records: usize) -> CsMemories {
+    let tdbs: Vec<TdbsEntry> =
+        (0..records).map(|_| TdbsEntry { planes: [random_plane(rng), random_plane(rng), random_plane(rng)], material: rng.below(65536) as u16 }).collect();
+    let ibuf = (0..w * h).map(|_| if rng.chance(25) { 0 } else { 1 + rng.below(records as u64 - 1) as u16 }).collect();
+    let zbuf = (0..w * h).map(|_| rng.below(1 << 24) as u32).collect();
+    CsMemories::new(ibuf, zbuf, tdbs)
+}
+
+fn seed_for(test: &str, default: u64) -> u64 {
+    let seed = Rng::new(default).seed();
+    println!("{test}: seed {seed} (set SEED={seed} to replay)");
+    seed
+}
+
+// ------------------------------------------------------------------------------------------------
+// Colour setup
+
+#[test]
+fn colour_setup_matches_its_cycle_model_every_cycle_on_random_commands_with_gaps() {
+    let seed = seed_for("colour_setup_random", 0xC0105E7);
+    let mut rng = Rng::new(seed);
+    let cmds = random_commands(300, &mut rng);
+    let run = setb::run_rtl_vs_model("colour_setup_random", &cmds, SetupDrive { gap_percent: 30, seed }, false).unwrap();
+    assert_eq!(run.writes.len(), cmds.len());
+    for (c, (idx, rec)) in cmds.iter().zip(&run.writes) {
+        assert_eq!((*idx, *rec), (c.index, c.record()));
+    }
+    println!("colour_setup: {} commands, {} cycles, RustHDL {:.0} cycles/s", cmds.len(), run.cycles, run.rtl_cycles_per_second);
+}
+
+#[test]
+fn colour_setup_writes_the_golden_tdbs_of_every_builtin_scene() {
+    let seed = seed_for("colour_setup_scenes", 7);
+    for name in builtin::SCENES {
+        for shading in [Shading::Gouraud, Shading::Phong, Shading::Flat] {
+            let f = record(name, shading, 160, 100).unwrap();
+            let cmds: Vec<SetupCmd> = f.chip.setups.iter().map(|c| SetupCmd::from_command(c).unwrap()).collect();
+            assert!(!cmds.is_empty(), "{name}: nothing visible");
+            let test = format!("colour_setup_{name}_{shading:?}").to_lowercase();
+            let run = setb::run_rtl_vs_model(&test, &cmds, SetupDrive { gap_percent: 10, seed }, false).unwrap();
+            for (idx, rec) in &run.writes {
+                assert_eq!(*rec, f.chip.inner.tdbs[*idx as usize], "{name} {shading:?}: record {idx}");
+            }
+            assert_eq!(run.writes.len(), cmds.len());
+        }
+    }
+}
+
+#[test]
+fn colour_setup_takes_42_cycles_per_shaded_triangle_and_1_per_flat_one() {
+    let f = record("castle", Shading::Gouraud, 160, 100).unwrap();
+    let cmds: Vec<SetupCmd> = f.chip.setups.iter().take(50).map(|c| SetupCmd::from_command(c).unwrap()).collect();
+    let run = setb::run_rtl_vs_model("colour_setup_throughput", &cmds, SetupDrive { gap_percent: 0, seed: 1 }, false).unwrap();
+    // Commands back to back: the k-th write is in cycle 42*(k+1); the run ends one cycle after the last.
+    assert_eq!(run.cycles, SHADED_CYCLES * cmds.len() as u64 + 1);
+    println!("colour setup, shaded: {} cycles for {} triangles = {} cycles/triangle", run.cycles - 1, cmds.len(), (run.cycles - 1) / cmds.len() as u64);
+    let flat: Vec<SetupCmd> = cmds.iter().map(|c| SetupCmd { flat: true, flat_rgb: [1, 2, 3], ..*c }).collect();
+    let run = setb::run_rtl_vs_model("colour_setup_throughput_flat", &flat, SetupDrive { gap_percent: 0, seed: 1 }, false).unwrap();
+    assert_eq!(run.cycles, FLAT_CYCLES * flat.len() as u64 + 1);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Color Shader
+
+#[test]
+fn cs_matches_its_cycle_model_every_cycle_under_random_back_pressure() {
+    let seed = seed_for("cs_random", 0xC5);
+    let mut rng = Rng::new(seed);
+    let mut mem = random_memories(&mut rng, 64, 24, 200);
+    let frames = [
+        FrameSpec { width: 64, height: 24, background: [1, 2, 3], clear_behind: false },
+        FrameSpec { width: 0, height: 5, background: [0; 3], clear_behind: false },
+        FrameSpec { width: 1, height: 1, background: [9, 8, 7], clear_behind: false },
+        FrameSpec { width: 1, height: 17, background: [9, 8, 7], clear_behind: false },
+        FrameSpec { width: 1025, height: 1, background: [0; 3], clear_behind: false },
+        FrameSpec { width: 37, height: 3, background: [200, 100, 50], clear_behind: true },
+        FrameSpec { width: 64, height: 24, background: [5, 5, 5], clear_behind: false },
+    ];
+    let reference = mem.clone();
+    let drive = CsDrive { stall_percent: 40, start_while_busy_percent: 20, max_idle: 5, seed };
+    let run = csb::run_rtl_vs_model("cs_random", &mut mem, &frames, drive, false).unwrap();
+    assert_eq!(run.refused, 2);
+    let accepted: Vec<&FrameSpec> = frames.iter().filter(|f| (1..=1024).contains(&f.width) && (1..=1024).contains(&f.height)).collect();
+    assert_eq!(run.frames.len(), accepted.len());
+    // The first frame against the algorithmic evaluation, pixel by pixel.
+    let img = csb::frame_image(&run.frames[0], 64, 24).unwrap();
+    for (i, px) in img.chunks(3).enumerate() {
+        let idx = reference.ibuf[i];
+        let want = golden::cycle::color_shader::pixel_colour(idx, &reference.tdbs[idx as usize], i as u32 % 64, i as u32 / 64, [1, 2, 3]);
+        assert_eq!(px, want, "pixel {i}");
+    }
+    for (f, beats) in accepted.iter().zip(&run.frames) {
+        csb::frame_image(beats, f.width, f.height).unwrap();
+    }
+    // The 37x3 frame cleared the first 111 pixels behind itself: the last frame shows background there.
+    let last = csb::frame_image(run.frames.last().unwrap(), 64, 24).unwrap();
+    assert!(last[..111 * 3].chunks(3).all(|p| p == [5, 5, 5]));
+    assert!(mem.ibuf[..111].iter().all(|&i| i == 0) && mem.ibuf[111..] == reference.ibuf[111..]);
+    assert!(mem.zbuf[..111].iter().all(|&z| z == DEPTH_MAX) && mem.zbuf[111..] == reference.zbuf[111..]);
+    println!("cs: {} cycles, RustHDL {:.0} cycles/s", run.cycles, run.rtl_cycles_per_second);
+}
+
+#[test]
+fn cs_scans_out_the_golden_image_of_every_builtin_scene_under_back_pressure() {
+    let seed = seed_for("cs_scenes", 11);
+    for (name, shading) in builtin::SCENES.iter().map(|n| (*n, Shading::Gouraud)).chain([("dolphins", Shading::Flat)]) {
+        let f = record(name, shading, 96, 60).unwrap();
+        let mut mem = f.memories();
+        let spec = FrameSpec { width: 96, height: 60, background: f.background, clear_behind: true };
+        let drive = CsDrive { stall_percent: 30, start_while_busy_percent: 10, max_idle: 0, seed };
+        let test = format!("cs_{name}_{shading:?}").to_lowercase();
+        let run = csb::run_rtl_vs_model(&test, &mut mem, &[spec], drive, false).unwrap();
+        let img = csb::frame_image(&run.frames[0], 96, 60).unwrap();
+        assert!(img == f.frame.rgb, "{name} {shading:?}: the RTL's image differs from the golden one");
+        assert!(mem.ibuf.iter().all(|&i| i == 0) && mem.zbuf.iter().all(|&z| z == DEPTH_MAX), "{name}: clear-behind");
+    }
+}
+
+#[test]
+fn cs_streams_one_pixel_per_clock_on_a_320x200_frame() {
+    let f = record("teapot", Shading::Gouraud, 320, 200).unwrap();
+    let mut mem = f.memories();
+    let spec = FrameSpec { width: 320, height: 200, background: f.background, clear_behind: false };
+    let run = csb::run_rtl_vs_model("cs_320x200", &mut mem, &[spec], CsDrive::ideal(), false).unwrap();
+    let img = csb::frame_image(&run.frames[0], 320, 200).unwrap();
+    assert!(img == f.frame.rgb, "teapot 320x200: image differs");
+    let cycles = run.frame_cycles[0];
+    assert_eq!(cycles, 64000 + CS_PIPELINE_CYCLES);
+    println!(
+        "cs 320x200: {cycles} cycles from the first I-buffer read to the last beat for 64000 pixels = {:.4} pixels/clock; RustHDL {:.0} cycles/s",
+        64000.0 / cycles as f64,
+        run.rtl_cycles_per_second
+    );
+}
+
+// ------------------------------------------------------------------------------------------------
+// Generated Verilog
+
+#[test]
+fn colour_setup_verilog_replays_the_recorded_vectors() {
+    if !have_tool("iverilog") {
+        panic!("iverilog is not installed (the test script installs it)");
+    }
+    let seed = seed_for("colour_setup_replay", 0xC0105E7);
+    let mut rng = Rng::new(seed);
+    let cmds = random_commands(60, &mut rng);
+    let run = setb::run_rtl_vs_model("colour_setup_replay", &cmds, SetupDrive { gap_percent: 30, seed }, true).unwrap();
+    let rec = run.recording.unwrap();
+    let v = hdl::verilog_top("colour_setup").unwrap();
+    let r = replay_iverilog(&v, "colour_setup", &rec, &scratch_dir("cs/colour_setup_replay")).unwrap();
+    println!("colour_setup Verilog (iverilog): {} cycles replayed in {:.2} s, 0 mismatches", r.cycles, r.seconds);
+}
+
+#[test]
+fn cs_verilog_replays_the_recorded_vectors() {
+    if !have_tool("iverilog") {
+        panic!("iverilog is not installed (the test script installs it)");
+    }
+    let seed = seed_for("cs_replay", 0xC5);
+    let mut rng = Rng::new(seed);
+    let mut mem = random_memories(&mut rng, 40, 12, 100);
+    let frames = [
+        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: true },
+        FrameSpec { width: 2000, height: 1, background: [0; 3], clear_behind: false },
+        FrameSpec { width: 40, height: 12, background: [4, 5, 6], clear_behind: false },
+    ];
+    let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed };
+    let run = csb::run_rtl_vs_model("cs_replay", &mut mem, &frames, drive, true).unwrap();
+    let rec = run.recording.unwrap();
+    let v = hdl::verilog_top("cs").unwrap();
+    let r = replay_iverilog(&v, "cs", &rec, &scratch_dir("cs/cs_replay")).unwrap();
+    println!("cs Verilog (iverilog): {} cycles replayed in {:.2} s, 0 mismatches", r.cycles, r.seconds);
+}
+
+#[test]
+fn the_verilog_replay_catches_a_changed_constant() {
+    if !have_tool("iverilog") {
+        panic!("iverilog is not installed (the test script installs it)");
+    }
+    let mut rng = Rng::new(3);
+    let mut mem = random_memories(&mut rng, 8, 4, 10);
+    let frames = [FrameSpec { width: 8, height: 4, background: [1, 2, 3], clear_behind: true }];
+    let run = csb::run_rtl_vs_model("cs_replay_broken", &mut mem, &frames, CsDrive::ideal(), true).unwrap();
+    let v = hdl::verilog_top("cs").unwrap();
+    let far = "24'hffffff";
+    assert!(v.contains(far), "the far depth constant is not in the Verilog");
+    let broken = v.replacen(far, "24'hfffffe", 1);
+    let e = replay_iverilog(&broken, "cs", run.recording.as_ref().unwrap(), &scratch_dir("cs/cs_replay_broken")).unwrap_err();
+    assert!(e.contains("port zbuf_write_data expected ffffff actual fffffe"), "{e}");
+}
+
+#[test]
+fn colour_setup_and_cs_pass_verilator_lint() {
+    if !have_tool("verilator") {
+        panic!("verilator is not installed (the test script installs it)");
+    }
+    for top in ["colour_setup", "cs"] {
+        let v = hdl::verilog_top(top).unwrap();
+        lint(&v, top, &scratch_dir(&format!("cs/lint_{top}"))).unwrap();
+    }
+}
+
+#[test]
+fn colour_setup_and_cs_synthesize_for_ice40_without_latches() {
+    if !have_tool("yosys") {
+        panic!("yosys is not installed (the test script installs it)");
+    }
+    for top in ["colour_setup", "cs"] {
+        let v = hdl::verilog_top(top).unwrap();
+        let f = synth_ice40(&v, top, &scratch_dir(&format!("cs/synth_{top}"))).unwrap();
+        println!("{top}: yosys synth_ice40 -dsp: {} SB_LUT4, {} SB_CARRY, {} FF, {} SB_RAM40_4K, {} SB_MAC16, 0 latches", f.lut4, f.carry, f.ff, f.bram, f.dsp);
+        assert!(f.lut4 > 0 && f.ff > 0);
+    }
+}
