@@ -4,13 +4,14 @@
 //!
 //! `--backend golden` renders with the algorithmic model and also runs the OPP's cycle model (checked
 //! against the algorithmic lists) for the cycle count; `--backend rtl` builds the object lists with the
-//! RustHDL simulation of the OPP (`tb::proof`), checked against the cycle model every cycle, then shades
-//! and filters them.
+//! RustHDL simulation of the OPP and colours every entry with the RustHDL shading stage (`tb::proof`),
+//! both checked against their cycle models every cycle, then filters them (golden filter: the filter
+//! RTL is not written yet). `--vcd` writes `frame.vcd` (OPP) and `shade.vcd` (shading stage).
 
 use crate::cli::{BackendArg, RenderArgs};
 use golden::proof::cycle_opp::run_opp;
 use golden::proof::filter::FilterArea;
-use golden::proof::render::{list_stats, object_lists, ops_needed, shade_and_filter};
+use golden::proof::render::{filter_lists, list_stats, object_lists, ops_needed, shade_and_filter};
 use golden::proof::setup::scene_setup;
 use golden::render::RenderOptions;
 use golden::scene::Mesh;
@@ -43,14 +44,14 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
             "the frame needs {needed} object processors with OP reuse, but --ops is {n_ops}: raise --ops or leave it out"
         ));
     }
-    let (lists, cycles, backend) = match args.backend {
+    let (lists, cycles, backend, colours) = match args.backend {
         BackendArg::Golden => {
             let lists = object_lists(scene.screen, &scene.objects);
             let run = run_opp(scene.screen, &scene.objects, n_ops, args.fifo_depth, None)?;
             if run.lists != lists {
                 return Err("internal error: the OPP cycle model's lists differ from the algorithmic model's".into());
             }
-            (lists, run, "golden")
+            (lists, run, "golden", None)
         }
         BackendArg::Rtl => {
             let vcd = if args.vcd {
@@ -60,10 +61,15 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
                 None
             };
             let (lists, run) = tb::proof::backend::opp_lists_rtl(&scene, n_ops, args.fifo_depth, vcd.as_deref())?;
-            (lists, run, "rtl")
+            let shade_vcd = if args.vcd { Some(args.out.join("shade.vcd")) } else { None };
+            let (colours, _) = tb::proof::backend::shade_lists_rtl(&scene, &lists, shade_vcd.as_deref())?;
+            (lists, run, "rtl", Some(colours))
         }
     };
-    let (rgb, covered) = shade_and_filter(&scene, &lists, area);
+    let (rgb, covered) = match &colours {
+        Some(c) => filter_lists(&scene, &lists, c, area),
+        None => shade_and_filter(&scene, &lists, area),
+    };
     let stats = list_stats(&scene, &lists, &covered);
     let secs = t0.elapsed().as_secs_f64();
     let (w, h) = (scene.screen.width, scene.screen.height);

@@ -17,6 +17,7 @@ pub mod rc;
 /// The tops that can be generated, and what each is.
 pub const TOPS: &[(&str, &str)] = &[
     ("opp", "PROOF object-processor pipeline: 8 object processors, FIFO depth 1 (seed 002 section 4)"),
+    ("proof_shade", "PROOF shading stage: 1 light-source processor, 1024-entry object table, one entry per clock (seed 002 section 5)"),
     ("rc", "Rasterizer Controller for a 320x200 screen: setup, traversal, Z-test, Z/I-buffer ports"),
     ("colour_setup", "Colour setup: 3 planes with one reciprocal per triangle, TdbS write port (seed 001 eqs. 6-7)"),
     ("cs", "Color Shader: I-buffer + TdbS scan-out, 1 pixel/clock, AXI4-Stream video, clear-behind ports"),
@@ -26,6 +27,7 @@ pub const TOPS: &[(&str, &str)] = &[
 pub fn verilog_top(block: &str) -> Result<String, String> {
     match block {
         "opp" => proof::verilog_opp("opp", 8, 1),
+        "proof_shade" => proof::verilog_shading("proof_shade", 1, 10),
         "rc" => rc::verilog(320, 200),
         "colour_setup" => cs::colour_setup_verilog(),
         "cs" => cs::color_shader_verilog(),

@@ -10,11 +10,13 @@
 //! * [`setup`]: the host's object setup and the look-up tables between stages;
 //! * [`shade`], [`filter`]: the shading and filter stages' arithmetic;
 //! * [`render`]: the algorithmic renderer (what a frame is);
+//! * [`cycle_shade`]: cycle-accurate model of the shading stage (register by register);
 //! * [`cycle_op`], [`cycle_opp`]: cycle-accurate models of the OP and of the OPP with its
 //!   object loader (when each port changes), which the RTL in `hdl/src/proof/` must match.
 
 pub mod cycle_op;
 pub mod cycle_opp;
+pub mod cycle_shade;
 pub mod filter;
 pub mod format;
 pub mod good_nature;

@@ -96,18 +96,25 @@ pub fn dirs_of(scene: &ProofScene, id: u16) -> [(i16, i16); 3] {
 /// Shading and filter stages over given object lists (from the algorithmic OPP, its cycle model or the
 /// RTL): the anti-aliased image and the covered subpixels per pixel.
 pub fn shade_and_filter(scene: &ProofScene, lists: &[Vec<Entry>], area: FilterArea) -> (Vec<u8>, Vec<u8>) {
+    let colours: Vec<Vec<[u8; 3]>> =
+        lists.iter().map(|l| l.iter().map(|e| shade_entry(&scene.lights, e.normal, scene.material[e.id as usize])).collect()).collect();
+    filter_lists(scene, lists, &colours, area)
+}
+
+/// The filter stage over object lists whose entries are already shaded (`colours[p][k]` is the colour
+/// of entry k of pixel p, from the golden shading or the RTL shading stage).
+pub fn filter_lists(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8; 3]>], area: FilterArea) -> (Vec<u8>, Vec<u8>) {
     let s = scene.screen;
     let dirs = |id: u16| dirs_of(scene, id);
     let mut rgb = Vec::with_capacity(s.pixels() * 3);
     let mut quads = Vec::new();
     let mut covered = Vec::with_capacity(s.pixels());
-    for l in lists {
-        let colours: Vec<[u8; 3]> = l.iter().map(|e| shade_entry(&scene.lights, e.normal, scene.material[e.id as usize])).collect();
+    for (l, colours) in lists.iter().zip(colours) {
         let (owners, taken) = visible_masks(l, &dirs);
         covered.push(taken.count_ones() as u8);
         match area {
-            FilterArea::Box1 => rgb.extend_from_slice(&combine(&owners, &colours, taken, scene.background)),
-            FilterArea::Box2 => quads.push(quadrant_sums(&owners, &colours, taken, scene.background)),
+            FilterArea::Box1 => rgb.extend_from_slice(&combine(&owners, colours, taken, scene.background)),
+            FilterArea::Box2 => quads.push(quadrant_sums(&owners, colours, taken, scene.background)),
         }
     }
     if area == FilterArea::Box2 {

@@ -1,16 +1,21 @@
-//! PROOF's blocks (seed 002): the object processor and its FIFO, the object-processor pipeline.
+//! PROOF's blocks (seed 002): the object processor and its FIFO, the object-processor pipeline, the
+//! shading stage (light-source processors, look-up table RAMs).
 //! Payload formats in [`types`]; cycle behaviour specified by `golden::proof::cycle_op` and
 //! `golden::proof::cycle_opp`.
 
+pub mod light_processor;
 pub mod object_processor;
 pub mod opp;
+pub mod shading;
 pub mod slot_fifo;
+pub mod table_ram;
 pub mod types;
 
 pub use object_processor::ObjectProcessor;
 pub use opp::Opp;
 pub use slot_fifo::SlotFifo;
-pub use types::{ObjParams, ProofSlot};
+pub use shading::{verilog_shading, ShadingStage};
+pub use types::{ObjParams, ProofSlot, ShadeWork, ShadedSlot};
 
 use rust_hdl::prelude::*;
 

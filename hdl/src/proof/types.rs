@@ -73,3 +73,53 @@ pub struct ObjParams {
     pub nz_dx: Bits<32>,
     pub nz_dy: Bits<32>,
 }
+
+/// A shaded time slot (shading stage -> filter): the slot without depth and normal, with the entry's
+/// colour (0 for an empty slot).
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct ShadedSlot {
+    pub x: Bits<10>,
+    pub y: Bits<10>,
+    pub last: bool,
+    pub has_entry: bool,
+    pub id: Bits<16>,
+    pub full: bool,
+    /// Edge distances, S1.14 (signed).
+    pub d0: Bits<16>,
+    pub d1: Bits<16>,
+    pub d2: Bits<16>,
+    /// Colour of the entry.
+    pub r: Bits<8>,
+    pub g: Bits<8>,
+    pub b: Bits<8>,
+}
+
+/// What one register of the shading pipeline holds (`golden::proof::cycle_shade::Work`).
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct ShadeWork {
+    /// The register holds an entry or empty slot of the stream.
+    pub valid: bool,
+    pub x: Bits<10>,
+    pub y: Bits<10>,
+    pub last: bool,
+    pub has_entry: bool,
+    pub id: Bits<16>,
+    pub full: bool,
+    pub d0: Bits<16>,
+    pub d1: Bits<16>,
+    pub d2: Bits<16>,
+    /// Normal, Q1.14 (signed), not normalised.
+    pub nx: Bits<16>,
+    pub ny: Bits<16>,
+    pub nz: Bits<16>,
+    /// Material index and log2 of its gloss.
+    pub mat: Bits<8>,
+    pub gloss: Bits<3>,
+    /// N.L clamped to [0, 1] (Q1.14) and the specular power (N.H)^k.
+    pub nl: Bits<15>,
+    pub sp: Bits<15>,
+    /// Intensity sums per channel, 22 fraction bits.
+    pub acc_r: Bits<40>,
+    pub acc_g: Bits<40>,
+    pub acc_b: Bits<40>,
+}

@@ -7,5 +7,9 @@ pub mod backend;
 pub mod bench;
 pub mod convert;
 pub mod replay;
+pub mod shade_bench;
+pub mod stage_replay;
+#[cfg(test)]
+mod stage_tests;
 #[cfg(test)]
 mod tests;

@@ -139,9 +139,9 @@ fn scene_options(mesh: &golden::scene::Mesh, w: u32, h: u32) -> golden::render::
 }
 
 #[test]
-fn rtl_backend_builds_the_golden_lists_and_image_for_polyhedron_and_a_256_triangle_teapot() {
+fn rtl_opp_and_shading_build_the_golden_lists_and_image_for_polyhedron_and_a_256_triangle_teapot() {
     use golden::proof::filter::FilterArea;
-    use golden::proof::render::{render_scene, shade_and_filter};
+    use golden::proof::render::{filter_lists, render_scene};
     use golden::proof::setup::scene_setup;
     use golden::scene::builtin;
     for (mesh, w, h) in [(builtin::polyhedron(), 64, 40), (builtin::teapot(2), 48, 30)] {
@@ -152,7 +152,9 @@ fn rtl_backend_builds_the_golden_lists_and_image_for_polyhedron_and_a_256_triang
         let (lists, run) = super::backend::opp_lists_rtl(&sc, n, 1, None).unwrap();
         println!("{} {w}x{h}: {} triangles, {} objects, {n} OPs, {} cycles in {:?}", mesh.name, mesh.triangles.len(), sc.objects.len(), run.cycles, t0.elapsed());
         assert_eq!(lists, golden.lists, "{}", mesh.name);
-        let (rgb, _) = shade_and_filter(&sc, &lists, FilterArea::Box1);
+        let (colours, shade_cycles) = super::backend::shade_lists_rtl(&sc, &lists, None).unwrap();
+        println!("  RTL shading stage: {} slots in {shade_cycles} cycles", golden.stats.slots);
+        let (rgb, _) = filter_lists(&sc, &lists, &colours, FilterArea::Box1);
         assert_eq!(rgb, golden.rgb, "{}", mesh.name);
     }
 }
