@@ -9,6 +9,7 @@
 //! [`format`] is the one source of truth for number formats; [`host`] is the CPU side (geometry,
 //! lighting, operation counts); [`scene`] holds the built-in scenes and the OBJ loader.
 
+pub mod analysis;
 pub mod cycle;
 pub mod format;
 pub mod host;
