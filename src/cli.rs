@@ -4,7 +4,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use golden::format::{Screen, INDEX_BITS_DEFAULT};
 use golden::host::{Camera, Lighting};
 use golden::raster::{CullMode, FrontFace};
-use golden::render::{render, RenderOptions};
+use golden::render::RenderOptions;
 use golden::scene::{builtin, obj, Mesh, Winding};
 use golden::shade::Shading;
 use std::path::PathBuf;
@@ -123,9 +123,12 @@ pub struct RenderArgs {
     /// What computes the frame.
     #[arg(long, value_enum, default_value_t = BackendArg::Golden)]
     pub backend: BackendArg,
-    /// Also write the simulation's waveform (frame.vcd) into --out (RTL backends).
+    /// Also write the simulation's waveform (frame.vcd) into --out (RTL backends): the top-level ports.
     #[arg(long)]
     pub vcd: bool,
+    /// With --vcd: every signal of every block instead of the top-level ports (hundreds of MB per frame).
+    #[arg(long, requires = "vcd")]
+    pub vcd_full: bool,
 }
 
 fn parse_size(s: &str) -> Result<Screen, String> {
@@ -226,50 +229,8 @@ pub fn run(cli: Cli) -> Result<(), String> {
 fn run_render(args: &RenderArgs) -> Result<(), String> {
     let mesh = load_scene(args)?;
     let opts = render_options(args, &mesh)?;
-    if args.arch == ArchArg::Proof {
-        return crate::proof::run_render(args, &mesh, &opts);
+    match args.arch {
+        ArchArg::Proof => crate::proof::run_render(args, &mesh, &opts),
+        ArchArg::Index => crate::render::run_render(args, &mesh, &opts),
     }
-    if args.backend != BackendArg::Golden || args.vcd {
-        return Err(format!(
-            "--arch {:?} --backend {:?}{} is not available yet: only --arch index --backend golden",
-            args.arch,
-            args.backend,
-            if args.vcd { " --vcd" } else { "" }
-        ));
-    }
-    let t0 = std::time::Instant::now();
-    let frame = render(&mesh, &opts)?;
-    let secs = t0.elapsed().as_secs_f64();
-    let stats = serde_json::json!({
-        "scene": mesh.name,
-        "size": [opts.screen.width, opts.screen.height],
-        "shading": opts.shading,
-        "cull": opts.cull,
-        "front_face": opts.front,
-        "camera": opts.camera,
-        "index_bits": opts.index_bits,
-        "backend": "golden",
-        "stats": frame.stats,
-    });
-    let files = crate::output::write_frame(&args.out, &frame, &stats)?;
-    let s = &frame.stats;
-    crate::say!(
-        "{}: {}x{} {:?}, {} triangles in (a), {} after culling (b), {} flagged visible, {} visible in the image (c)",
-        mesh.name, opts.screen.width, opts.screen.height, opts.shading, s.triangles_in, s.after_culling, s.flagged_visible, s.visible_final
-    );
-    crate::say!(
-        "  {} fragments, {} Z passes, {} covered pixels, depth complexity {:.2}; host cost {} (Type I {}, Type II {}); {:.3} s",
-        s.rc.fragments,
-        s.rc.z_passes,
-        s.covered_pixels,
-        s.depth_complexity,
-        s.host_ops.cost(),
-        s.host_type_i.ops().cost(),
-        s.host_type_ii.ops().cost(),
-        secs
-    );
-    for f in files {
-        crate::say!("  wrote {}", f.display());
-    }
-    Ok(())
 }

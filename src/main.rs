@@ -8,6 +8,7 @@ mod analyze;
 mod cli;
 mod output;
 mod proof;
+mod render;
 mod verilog;
 
 use clap::Parser;

@@ -268,6 +268,17 @@ pub fn render_with(mesh: &Mesh, opts: &RenderOptions, chip: &mut dyn Chipset) ->
     let out = chip.scanout(opts.shading, &lights, opts.background)?;
 
     // Final-image statistics.
+    // A chipset is checked, not trusted: an index it never received is an error, not a panic.
+    if out.ibuf.len() != opts.screen.pixels() || out.rgb.len() != 3 * opts.screen.pixels() {
+        return Err(format!("the chipset returned {} I-buffer words and {} colour bytes for {} pixels", out.ibuf.len(), out.rgb.len(), opts.screen.pixels()));
+    }
+    if let Some(p) = out.ibuf.iter().position(|&h| h as usize > geo.hw.len()) {
+        let w = opts.screen.width as usize;
+        return Err(format!(
+            "the chipset's I-buffer holds index {} at pixel ({}, {}), but only {} triangles were sent",
+            out.ibuf[p], p % w, p / w, geo.hw.len()
+        ));
+    }
     let index: Vec<u32> = out.ibuf.iter().map(|&h| if h == INDEX_BACKGROUND { 0 } else { geo.hw[h as usize - 1].source + 1 }).collect();
     let mut in_final = vec![false; n];
     let mut covered = 0u64;

@@ -9,6 +9,7 @@
 //!
 //! [`verilog_top`] generates the Verilog of a top by name (what `idxrender verilog --block` writes).
 
+pub mod chipset;
 pub mod common;
 pub mod cs;
 pub mod proof;
@@ -20,6 +21,7 @@ pub const TOPS: &[(&str, &str)] = &[
     ("proof_shade", "PROOF shading stage: 1 light-source processor, 1024-entry object table, one entry per clock (seed 002 section 5)"),
     ("rc", "Rasterizer Controller for a 320x200 screen: setup, traversal, Z-test, Z/I-buffer ports"),
     ("colour_setup", "Colour setup: 3 planes with one reciprocal per triangle, TdbS write port (seed 001 eqs. 6-7)"),
+    ("chipset", "The raster chipset for 320x200: RC + colour setup + CS around Z/I-buffer and TdbS memory ports"),
     ("cs", "Color Shader: I-buffer + TdbS scan-out, 1 pixel/clock, AXI4-Stream video, clear-behind ports"),
 ];
 
@@ -31,6 +33,7 @@ pub fn verilog_top(block: &str) -> Result<String, String> {
         "rc" => rc::verilog(320, 200),
         "colour_setup" => cs::colour_setup_verilog(),
         "cs" => cs::color_shader_verilog(),
+        "chipset" => chipset::verilog(320, 200),
         _ => Err(format!(
             "unknown block '{block}': known blocks are {}",
             TOPS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")

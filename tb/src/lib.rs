@@ -9,6 +9,7 @@
 //!
 //! [`common`] holds what every bench shares: VCD locations, a seeded random source, tool discovery.
 
+pub mod chipset;
 pub mod common;
 pub mod cs;
 pub mod rc;

@@ -15,6 +15,15 @@ pub use stream::{StreamIn, StreamOut};
 
 use rust_hdl::prelude::*;
 
+/// The Verilog of a block with its top module named `name` (submodules are `name$child`). Runs
+/// rust-hdl's structural checks first, so a failed check is an `Err` rather than a panic.
+pub fn verilog_named<U: Block>(uut: &U, name: &str) -> Result<String, String> {
+    check_all(uut).map_err(|e| format!("{name}: rust-hdl check failed: {e:?}"))?;
+    let mut defines = ModuleDefines::default();
+    uut.accept(name, &mut defines);
+    Ok(defines.defines())
+}
+
 /// `signed_bit_cast` without the stack overflow: sign-extends (M > N) or truncates (M < N); N, M <= 64.
 pub fn signed_bit_cast_safe<const M: usize, const N: usize>(x: Signed<N>) -> Signed<M> {
     from_i64::<M>(to_i64(x))

@@ -1,0 +1,196 @@
+//! `idxrender render --arch index`: a frame through seed 001's dual pipeline (host geometry, RC,
+//! deferred lighting of the flagged triangles, colour setup, CS scan-out).
+//!
+//! `--backend golden` runs the algorithmic model. `--backend rtl` runs the RustHDL simulation of the
+//! `chipset` top (`tb::chipset::RtlChipset`: RC + colour setup + CS with modelled Z/I/TdbS memories)
+//! under the same host program, then compares its frame with the golden model's (image, I-buffer,
+//! Z-buffer, per-triangle results) and fails, after writing its outputs, if they differ. It also
+//! writes `cycles.json` (cycles per phase), `chipset.v` (the Verilog of the simulated top, for this
+//! screen size) and, with `--vcd`, `frame.vcd` (the top's ports; `--vcd-full`: every signal).
+
+use crate::cli::{BackendArg, RenderArgs};
+use golden::render::{render, render_with, Frame, RenderOptions};
+use golden::scene::Mesh;
+use golden::shade::Shading;
+use indicatif::{ProgressBar, ProgressStyle};
+use std::path::PathBuf;
+
+/// The RTL's triangle index is this wide (`hdl::rc`).
+const RTL_INDEX_BITS: u32 = 16;
+
+pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<(), String> {
+    if args.vcd && args.backend != BackendArg::Rtl {
+        return Err("--vcd needs --backend rtl".into());
+    }
+    if args.backend == BackendArg::Rtl {
+        if opts.index_bits > RTL_INDEX_BITS {
+            return Err(format!(
+                "--index-bits {}: the RTL's triangle index is {RTL_INDEX_BITS} bits; use --backend golden for wider indices",
+                opts.index_bits
+            ));
+        }
+        if opts.shading == Shading::Phong {
+            return Err("--shading phong: the CS RTL does flat and Gouraud only (Phong is in the golden model); use --backend golden".into());
+        }
+    }
+    let t0 = std::time::Instant::now();
+    let golden_frame = render(mesh, opts)?;
+    let golden_secs = t0.elapsed().as_secs_f64();
+    let (frame, rtl) = match args.backend {
+        BackendArg::Golden => (golden_frame, None),
+        BackendArg::Rtl => {
+            let run = run_rtl(args, mesh, opts)?;
+            let diff = compare(&golden_frame, &run.frame);
+            (run.frame, Some((run.phases, run.secs, run.vcd, diff)))
+        }
+    };
+    let mut stats = serde_json::json!({
+        "scene": mesh.name,
+        "size": [opts.screen.width, opts.screen.height],
+        "shading": opts.shading,
+        "cull": opts.cull,
+        "front_face": opts.front,
+        "camera": opts.camera,
+        "index_bits": opts.index_bits,
+        "backend": match args.backend { BackendArg::Golden => "golden", BackendArg::Rtl => "rtl" },
+        "stats": frame.stats,
+    });
+    let mut files = crate::output::write_frame(&args.out, &frame, &stats)?;
+    let s = &frame.stats;
+    crate::say!(
+        "{}: {}x{} {:?}, {} triangles in (a), {} after culling (b), {} flagged visible, {} visible in the image (c)",
+        mesh.name, opts.screen.width, opts.screen.height, opts.shading, s.triangles_in, s.after_culling, s.flagged_visible, s.visible_final
+    );
+    crate::say!(
+        "  {} fragments, {} Z passes, {} covered pixels, depth complexity {:.2}; host cost {} (Type I {}, Type II {})",
+        s.rc.fragments,
+        s.rc.z_passes,
+        s.covered_pixels,
+        s.depth_complexity,
+        s.host_ops.cost(),
+        s.host_type_i.ops().cost(),
+        s.host_type_ii.ops().cost()
+    );
+    let Some((phases, secs, vcd, diff)) = rtl else {
+        crate::say!("  golden model: {golden_secs:.3} s");
+        for f in files {
+            crate::say!("  wrote {}", f.display());
+        }
+        return Ok(());
+    };
+    let pixels = (opts.screen.width * opts.screen.height) as f64;
+    let cycles = serde_json::json!({
+        "clear": phases.clear,
+        "geometry_transfer": phases.geometry_transfer,
+        "rasterization": phases.rasterization,
+        "colour_setup": phases.colour_setup,
+        "scan_out": phases.scan_out,
+        "total": phases.total,
+        "scan_out_pixels_per_clock": pixels / phases.scan_out.max(1) as f64,
+        "simulation_seconds": secs,
+        "simulated_cycles_per_second": phases.total as f64 / secs.max(1e-9),
+        "equal_to_golden": diff.is_none(),
+    });
+    stats["cycles"] = cycles.clone();
+    // stats.json again, now with the cycle counts.
+    crate::output::write_atomic(&args.out, "stats.json", serde_json::to_string_pretty(&stats).unwrap().as_bytes())?;
+    files.push(crate::output::write_atomic(&args.out, "cycles.json", serde_json::to_string_pretty(&cycles).unwrap().as_bytes())?);
+    let v = hdl::chipset::verilog(opts.screen.width, opts.screen.height)?;
+    files.push(crate::output::write_atomic(&args.out, "chipset.v", v.as_bytes())?);
+    if let Some(p) = vcd {
+        files.push(p);
+    }
+    crate::say!(
+        "  RTL: {} cycles (clear {}, geometry transfer {}, rasterization {}, colour setup {}, scan-out {} = {:.4} px/clk); \
+         {:.1} s simulated, {:.0} cycles/s",
+        phases.total,
+        phases.clear,
+        phases.geometry_transfer,
+        phases.rasterization,
+        phases.colour_setup,
+        phases.scan_out,
+        pixels / phases.scan_out.max(1) as f64,
+        secs,
+        phases.total as f64 / secs.max(1e-9)
+    );
+    for f in files {
+        crate::say!("  wrote {}", f.display());
+    }
+    match diff {
+        None => {
+            crate::say!("  RTL frame equals the golden model's (image, I-buffer, Z-buffer, per-triangle results)");
+            Ok(())
+        }
+        Some(d) => Err(format!("the RTL frame differs from the golden model's: {d} (outputs above are the RTL's)")),
+    }
+}
+
+struct RtlRun {
+    frame: Frame,
+    phases: tb::chipset::PhaseCycles,
+    secs: f64,
+    vcd: Option<PathBuf>,
+}
+
+fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<RtlRun, String> {
+    std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create output directory {}: {e}", args.out.display()))?;
+    // The waveform streams into a temporary file, renamed when the frame is complete.
+    let vcd_tmp = args.out.join(".frame.vcd.tmp");
+    let bar = ProgressBar::new(1);
+    bar.set_style(
+        ProgressStyle::with_template("{msg:>14} [{bar:40}] {pos}/{len} ({elapsed})")
+            .map_err(|e| format!("progress bar: {e}"))?
+            .progress_chars("=> "),
+    );
+    let b = bar.clone();
+    let t0 = std::time::Instant::now();
+    let scope = if args.vcd_full { tb::chipset::VcdScope::Full } else { tb::chipset::VcdScope::Ports };
+    let mut chip = tb::chipset::RtlChipset::with_vcd_scope(opts.screen, args.vcd.then(|| vcd_tmp.clone()), scope)?.with_progress(Box::new(
+        move |phase: &str, done: u64, total: u64| {
+            if b.message() != phase {
+                b.set_message(phase.to_string());
+            }
+            b.set_length(total.max(1));
+            b.set_position(done);
+        },
+    ));
+    let result = render_with(mesh, opts, &mut chip);
+    chip.finish_vcd();
+    bar.finish_and_clear();
+    let secs = t0.elapsed().as_secs_f64();
+    let frame = match result {
+        Ok(f) => f,
+        Err(e) => {
+            let _ = std::fs::remove_file(&vcd_tmp);
+            return Err(format!("RTL simulation: {e}"));
+        }
+    };
+    let vcd = if args.vcd {
+        let p = args.out.join("frame.vcd");
+        std::fs::rename(&vcd_tmp, &p).map_err(|e| format!("cannot write {}: {e}", p.display()))?;
+        Some(p)
+    } else {
+        None
+    };
+    Ok(RtlRun { frame, phases: chip.phases.clone(), secs, vcd })
+}
+
+/// The first difference between two frames of the same scene, if any.
+fn compare(golden: &Frame, rtl: &Frame) -> Option<String> {
+    let w = golden.screen.width as usize;
+    let at = |i: usize| format!("pixel ({}, {})", i % w, i / w);
+    if let Some(i) = (0..golden.hw_index.len()).find(|&i| golden.hw_index[i] != rtl.hw_index[i]) {
+        return Some(format!("I-buffer at {}: golden {}, RTL {}", at(i), golden.hw_index[i], rtl.hw_index[i]));
+    }
+    if let Some(i) = (0..golden.zbuf.len()).find(|&i| golden.zbuf[i] != rtl.zbuf[i]) {
+        return Some(format!("Z-buffer at {}: golden {:#x}, RTL {:#x}", at(i), golden.zbuf[i], rtl.zbuf[i]));
+    }
+    if let Some(i) = (0..golden.rgb.len() / 3).find(|&i| golden.rgb[3 * i..3 * i + 3] != rtl.rgb[3 * i..3 * i + 3]) {
+        return Some(format!("colour at {}: golden {:?}, RTL {:?}", at(i), &golden.rgb[3 * i..3 * i + 3], &rtl.rgb[3 * i..3 * i + 3]));
+    }
+    if golden.results != rtl.results {
+        let k = golden.results.iter().zip(&rtl.results).position(|(a, b)| a != b).unwrap_or(golden.results.len().min(rtl.results.len()));
+        return Some(format!("per-triangle result {k}: golden {:?}, RTL {:?}", golden.results.get(k), rtl.results.get(k)));
+    }
+    None
+}

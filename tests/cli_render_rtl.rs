@@ -1,0 +1,109 @@
+//! `render --backend rtl`: the RustHDL simulation of the `chipset` top behind the same host program.
+//! Its files are byte-identical to `--backend golden`'s, it adds `cycles.json`, `chipset.v` and (with
+//! `--vcd`) `frame.vcd`, and bad input still gives clean errors that leave earlier outputs untouched.
+//! Small screens keep the simulations short; the full 320x200 frames are in `tb/tests/chipset_frames.rs`.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn run(args: &[&str]) -> (bool, String, String) {
+    let o = Command::new(env!("CARGO_BIN_EXE_idxrender")).args(args).output().expect("run idxrender");
+    (o.status.success(), String::from_utf8_lossy(&o.stdout).into(), String::from_utf8_lossy(&o.stderr).into())
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("idxrender-rtl-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn assert_clean_error(args: &[&str], needle: &str) {
+    let (ok, _, err) = run(args);
+    assert!(!ok, "{args:?} should fail");
+    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    assert!(err.to_lowercase().contains(&needle.to_lowercase()), "{args:?}: error does not mention '{needle}': {err}");
+}
+
+fn read(dir: &Path, f: &str) -> Vec<u8> {
+    std::fs::read(dir.join(f)).unwrap_or_else(|e| panic!("{}: {e}", dir.join(f).display()))
+}
+
+#[test]
+fn rtl_backend_writes_the_golden_files_byte_for_byte_plus_cycles_verilog_and_vcd() {
+    let d = temp_dir("poly");
+    let (g, r) = (d.join("golden"), d.join("rtl"));
+    let common = ["render", "--scene", "polyhedron", "--size", "48x32"];
+    let (ok, _, err) = run(&[&common[..], &["--out", g.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    let (ok, out, err) = run(&[&common[..], &["--backend", "rtl", "--vcd", "--out", r.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    assert!(out.contains("RTL frame equals the golden model's"), "{out}");
+    for f in ["frame.png", "index.bin", "index.png"] {
+        assert!(read(&g, f) == read(&r, f), "{f} differs between --backend golden and --backend rtl");
+    }
+    let cycles: serde_json::Value = serde_json::from_slice(&read(&r, "cycles.json")).unwrap();
+    for k in ["clear", "geometry_transfer", "rasterization", "colour_setup", "scan_out", "total"] {
+        assert!(cycles[k].is_u64(), "cycles.json lacks {k}: {cycles}");
+    }
+    // The first frame after reset clears every pixel once; scan-out reads every pixel once.
+    assert_eq!(cycles["clear"], 48 * 32);
+    assert!(cycles["scan_out"].as_u64().unwrap() >= 48 * 32);
+    let total = cycles["total"].as_u64().unwrap();
+    let parts = ["rasterization", "colour_setup", "scan_out"].iter().map(|k| cycles[k].as_u64().unwrap()).sum::<u64>();
+    assert_eq!(total, parts, "total is the sum of the sequential phases: {cycles}");
+    let v = String::from_utf8(read(&r, "chipset.v")).unwrap();
+    assert!(v.contains("module chipset("), "chipset.v has no top module named chipset");
+    // A waveform of the whole run: a header declaring the top's clock, then value changes (the
+    // `vcd-diff` tests parse such files with the `vcd` crate).
+    let vcd = String::from_utf8(read(&r, "frame.vcd")).unwrap();
+    let (header, body) = vcd.split_once("$enddefinitions").expect("frame.vcd has a VCD header");
+    assert!(header.contains(" clock $end"), "frame.vcd declares no clock");
+    assert!(body.matches("\n#").count() as u64 >= 2 * total, "frame.vcd has fewer timestamps than half-cycles");
+    assert!(!r.join(".frame.vcd.tmp").exists());
+}
+
+#[test]
+fn bad_input_through_the_rtl_backend_gives_clean_errors_and_keeps_earlier_outputs() {
+    let d = temp_dir("bad");
+    let o = d.join("out");
+    let os = o.to_str().unwrap();
+    let (ok, _, err) = run(&["render", "--scene", "polyhedron", "--size", "32x24", "--backend", "rtl", "--out", os]);
+    assert!(ok, "{err}");
+    let files = ["frame.png", "index.bin", "index.png", "stats.json", "cycles.json", "chipset.v"];
+    let before: Vec<Vec<u8>> = files.iter().map(|f| read(&o, f)).collect();
+
+    let nan = d.join("nan.obj");
+    std::fs::write(&nan, "v 0 0 0\nv 1 0 0\nv 0 nan 0\nf 1 2 3\n").unwrap();
+    assert_clean_error(&["render", "--obj", nan.to_str().unwrap(), "--backend", "rtl", "--out", os], "nan.obj:3");
+    assert_clean_error(&["render", "--scene", "teapot", "--grid", "4", "--index-bits", "4", "--backend", "rtl", "--out", os], "4-bit triangle index");
+    assert_clean_error(&["render", "--scene", "polyhedron", "--index-bits", "20", "--backend", "rtl", "--out", os], "16 bits");
+    assert_clean_error(&["render", "--scene", "polyhedron", "--shading", "phong", "--backend", "rtl", "--out", os], "phong");
+    assert_clean_error(&["render", "--scene", "polyhedron", "--vcd", "--out", os], "--vcd needs --backend rtl");
+    assert_clean_error(&["render", "--scene", "polyhedron", "--backend", "fpga", "--out", os], "fpga");
+
+    let after: Vec<Vec<u8>> = files.iter().map(|f| read(&o, f)).collect();
+    assert!(before == after, "a failed run changed earlier outputs");
+}
+
+#[test]
+fn degenerate_and_off_screen_triangles_go_through_the_rtl_like_the_golden_model() {
+    let d = temp_dir("objok");
+    let f = d.join("mixed.obj");
+    // A quad, a zero-area triangle, a triangle off to the side, one crossing the near plane.
+    std::fs::write(
+        &f,
+        "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nv 0 0 0\nv 0 0 0\nv 50 0 0\nv 51 0 0\nv 50 1 0\n\
+         v -0.5 -0.5 0.5\nv 0.5 -0.5 0.5\nv 0 0 6\nf 1 2 3 4\nf 5 6 5\nf 7 8 9\nf 10 11 12\n",
+    )
+    .unwrap();
+    let (g, r) = (d.join("golden"), d.join("rtl"));
+    let common = ["render", "--obj", f.to_str().unwrap(), "--eye", "0,0,4", "--center", "0,0,0", "--cull", "none", "--size", "40x30"];
+    let (ok, _, err) = run(&[&common[..], &["--out", g.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    let (ok, out, err) = run(&[&common[..], &["--backend", "rtl", "--out", r.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    assert!(out.contains("RTL frame equals"), "{out}");
+    assert!(read(&g, "frame.png") == read(&r, "frame.png"));
+    assert!(read(&g, "index.bin") == read(&r, "index.bin"));
+}
