@@ -40,6 +40,8 @@ pub enum BackendArg {
     Golden,
     /// The RustHDL simulation of the RTL.
     Rtl,
+    /// The generated Verilog of chipset under Verilator.
+    Verilator,
 }
 
 #[derive(Copy, Clone, Debug, ValueEnum)]

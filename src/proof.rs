@@ -3,10 +3,11 @@
 //! (anti-aliased), `coverage.png` (covered subpixels per pixel, 0..64 as grey) and `stats.json`.
 //!
 //! `--backend golden` renders with the algorithmic model and also runs the OPP's cycle model (checked
-//! against the algorithmic lists) for the cycle count; `--backend rtl` builds the object lists with the
-//! RustHDL simulation of the OPP and colours every entry with the RustHDL shading stage (`tb::proof`),
-//! both checked against their cycle models every cycle, then filters them (golden filter: the filter
-//! RTL is not written yet). `--vcd` writes `frame.vcd` (OPP) and `shade.vcd` (shading stage).
+//! against the algorithmic lists) for the cycle count; `--backend rtl` runs the frame through the
+//! RustHDL simulations of the OPP, the shading stage and the filter stage (`tb::proof`), each checked
+//! against its cycle model every cycle. The filter RTL is the 1x1 box: with `--filter 2x2` the RTL
+//! backend filters the RTL's shaded entries with the golden 2x2 filter and says so. `--vcd` writes
+//! `frame.vcd` (OPP), `shade.vcd` (shading stage) and `filter.vcd` (filter stage).
 
 use crate::cli::{BackendArg, RenderArgs};
 use golden::proof::cycle_opp::run_opp;
@@ -44,32 +45,48 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
             "the frame needs {needed} object processors with OP reuse, but --ops is {n_ops}: raise --ops or leave it out"
         ));
     }
-    let (lists, cycles, backend, colours) = match args.backend {
+    let (lists, cycles, backend, image, stage_cycles) = match args.backend {
         BackendArg::Golden => {
             let lists = object_lists(scene.screen, &scene.objects);
             let run = run_opp(scene.screen, &scene.objects, n_ops, args.fifo_depth, None)?;
             if run.lists != lists {
                 return Err("internal error: the OPP cycle model's lists differ from the algorithmic model's".into());
             }
-            (lists, run, "golden", None)
+            let image = shade_and_filter(&scene, &lists, area);
+            (lists, run, "golden", image, None)
         }
         BackendArg::Rtl => {
-            let vcd = if args.vcd {
+            let vcd_of = |name: &str| -> Result<Option<std::path::PathBuf>, String> {
+                if !args.vcd {
+                    return Ok(None);
+                }
                 std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create output directory {}: {e}", args.out.display()))?;
-                Some(args.out.join("frame.vcd"))
-            } else {
-                None
+                Ok(Some(args.out.join(name)))
             };
-            let (lists, run) = tb::proof::backend::opp_lists_rtl(&scene, n_ops, args.fifo_depth, vcd.as_deref())?;
-            let shade_vcd = if args.vcd { Some(args.out.join("shade.vcd")) } else { None };
-            let (colours, _) = tb::proof::backend::shade_lists_rtl(&scene, &lists, shade_vcd.as_deref())?;
-            (lists, run, "rtl", Some(colours))
+            let (lists, run) = tb::proof::backend::opp_lists_rtl(&scene, n_ops, args.fifo_depth, vcd_of("frame.vcd")?.as_deref())?;
+            let (shaded, shade_cycles) = tb::proof::backend::shade_slots_rtl(&scene, &lists, vcd_of("shade.vcd")?.as_deref())?;
+            let (image, filter_cycles) = match area {
+                FilterArea::Box1 => {
+                    let (rgb, covered, c) = tb::proof::backend::filter_rtl(&scene, &shaded, vcd_of("filter.vcd")?.as_deref())?;
+                    ((rgb, covered), Some(c))
+                }
+                FilterArea::Box2 => {
+                    crate::say!("  note: the filter RTL is the 1x1 box; the 2x2 area is filtered by the golden model from the RTL's colours");
+                    let mut colours: Vec<Vec<[u8; 3]>> = lists.iter().map(|l| Vec::with_capacity(l.len())).collect();
+                    let w = scene.screen.width as usize;
+                    for o in shaded.iter().filter(|o| o.has_entry) {
+                        colours[o.y as usize * w + o.x as usize].push(o.rgb);
+                    }
+                    (filter_lists(&scene, &lists, &colours, area), None)
+                }
+            };
+            (lists, run, "rtl", image, Some((shade_cycles, filter_cycles)))
+        }
+        BackendArg::Verilator => {
+            return Err("--backend verilator runs the index-rendering chipset (--arch index); PROOF has --backend golden and rtl".into())
         }
     };
-    let (rgb, covered) = match &colours {
-        Some(c) => filter_lists(&scene, &lists, c, area),
-        None => shade_and_filter(&scene, &lists, area),
-    };
+    let (rgb, covered) = image;
     let stats = list_stats(&scene, &lists, &covered);
     let secs = t0.elapsed().as_secs_f64();
     let (w, h) = (scene.screen.width, scene.screen.height);
@@ -88,6 +105,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "front_face": opts.front,
         "camera": opts.camera,
         "opp": cycles,
+        "rtl_stage_cycles": stage_cycles.map(|(s, f)| serde_json::json!({ "shading": s, "filter": f, "filter_backend": if f.is_some() { "rtl" } else { "golden (2x2 has no RTL)" } })),
         "stats": stats,
     });
     std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create output directory {}: {e}", args.out.display()))?;

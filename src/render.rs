@@ -19,10 +19,10 @@ use std::path::PathBuf;
 const RTL_INDEX_BITS: u32 = 16;
 
 pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<(), String> {
-    if args.vcd && args.backend != BackendArg::Rtl {
-        return Err("--vcd needs --backend rtl".into());
+    if args.vcd && args.backend == BackendArg::Golden {
+        return Err("--vcd needs --backend rtl or --backend verilator".into());
     }
-    if args.backend == BackendArg::Rtl {
+    if args.backend != BackendArg::Golden {
         if opts.index_bits > RTL_INDEX_BITS {
             return Err(format!(
                 "--index-bits {}: the RTL's triangle index is {RTL_INDEX_BITS} bits; use --backend golden for wider indices",
@@ -38,7 +38,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     let golden_secs = t0.elapsed().as_secs_f64();
     let (frame, rtl) = match args.backend {
         BackendArg::Golden => (golden_frame, None),
-        BackendArg::Rtl => {
+        BackendArg::Rtl | BackendArg::Verilator => {
             let run = run_rtl(args, mesh, opts)?;
             let diff = compare(&golden_frame, &run.frame);
             (run.frame, Some((run.phases, run.secs, run.vcd, diff)))
@@ -52,7 +52,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "front_face": opts.front,
         "camera": opts.camera,
         "index_bits": opts.index_bits,
-        "backend": match args.backend { BackendArg::Golden => "golden", BackendArg::Rtl => "rtl" },
+        "backend": match args.backend { BackendArg::Golden => "golden", BackendArg::Rtl => "rtl", BackendArg::Verilator => "verilator" },
         "stats": frame.stats,
     });
     let mut files = crate::output::write_frame(&args.out, &frame, &stats)?;
@@ -143,18 +143,24 @@ fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<RtlRu
             .progress_chars("=> "),
     );
     let b = bar.clone();
-    let t0 = std::time::Instant::now();
     let scope = if args.vcd_full { tb::chipset::VcdScope::Full } else { tb::chipset::VcdScope::Ports };
-    let mut chip = tb::chipset::RtlChipset::with_vcd_scope(opts.screen, args.vcd.then(|| vcd_tmp.clone()), scope)?.with_progress(Box::new(
-        move |phase: &str, done: u64, total: u64| {
-            if b.message() != phase {
-                b.set_message(phase.to_string());
-            }
-            b.set_length(total.max(1));
-            b.set_position(done);
-        },
-    ));
-    let result = render_with(mesh, opts, &mut chip);
+    let progress: tb::chipset::Progress = Box::new(move |phase: &str, done: u64, total: u64| {
+        if b.message() != phase {
+            b.set_message(phase.to_string());
+        }
+        b.set_length(total.max(1));
+        b.set_position(done);
+    });
+    let vcd_file = args.vcd.then(|| vcd_tmp.clone());
+    // --backend verilator: the same host program and memories around the generated Verilog (built
+    // once per screen size into target/verilator/, see tb::verilator).
+    let mut chip: Box<dyn tb::backend::CycleChipset> = match args.backend {
+        BackendArg::Verilator => Box::new(tb::verilator::VerilatorChipset::with_vcd_scope(opts.screen, vcd_file, scope)?.with_progress(progress)),
+        _ => Box::new(tb::chipset::RtlChipset::with_vcd_scope(opts.screen, vcd_file, scope)?.with_progress(progress)),
+    };
+    // Simulation time, not the Verilator build (or the cache lookup) in the constructor.
+    let t0 = std::time::Instant::now();
+    let result = render_with(mesh, opts, chip.as_mut());
     chip.finish_vcd();
     bar.finish_and_clear();
     let secs = t0.elapsed().as_secs_f64();
@@ -172,7 +178,7 @@ fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<RtlRu
     } else {
         None
     };
-    Ok(RtlRun { frame, phases: chip.phases.clone(), secs, vcd })
+    Ok(RtlRun { frame, phases: chip.phases(), secs, vcd })
 }
 
 /// The first difference between two frames of the same scene, if any.

@@ -37,6 +37,8 @@ fn proof_render_writes_an_antialiased_frame_a_coverage_image_and_stats() {
     assert!(stats["opp"]["cycles"].as_u64().unwrap() >= 96 * 60);
 }
 
+/// The OPP, shading and filter stages all in RTL (OPP -> shading -> filter), against the golden
+/// model: the PNG files must be identical.
 #[test]
 fn proof_rtl_backend_frame_equals_the_golden_frame_byte_for_byte() {
     for (scene, extra) in [("polyhedron", vec!["--size", "64x40"]), ("teapot", vec!["--grid", "2", "--size", "48x30"])] {
@@ -59,11 +61,29 @@ fn proof_bad_options_are_clear_errors() {
         (vec!["--filter", "3x3"], "filter"),
         (vec!["--fifo-depth", "0"], "fifo-depth"),
         (vec!["--ops", "1"], "needs 2 object processors"),
+        (vec!["--backend", "verilator"], "PROOF has --backend golden and rtl"),
     ] {
         let out = temp_dir("bad");
         let mut a = vec!["render", "--arch", "proof", "--scene", "polyhedron", "--size", "32x20", "--out", out.to_str().unwrap()];
         a.extend(args.iter());
         let (ok, _, err) = run(&a);
         assert!(!ok && !err.contains("panicked") && err.contains(needle), "{a:?}: {err}");
+    }
+}
+
+/// The figures in docs/proof.md come from `golden::proof::study` (`proof_figures`): it must set the
+/// scene up exactly as the CLI does by default, so the OPs needed and the OPP cycles agree.
+#[test]
+fn the_proof_study_uses_the_clis_default_camera_and_options() {
+    for scene in ["castle", "dolphins"] {
+        let out = temp_dir(&format!("study-{scene}"));
+        let (ok, _, err) = run(&["render", "--arch", "proof", "--scene", scene, "--size", "80x50", "--out", out.to_str().unwrap()]);
+        assert!(ok, "{scene}: {err}");
+        let stats: serde_json::Value = serde_json::from_slice(&std::fs::read(out.join("stats.json")).unwrap()).unwrap();
+        let mesh = golden::scene::builtin::scene(scene).unwrap();
+        let row = golden::proof::study::fifo_row(scene, &mesh, 80, 50, &[1]).unwrap();
+        assert_eq!(stats["stats"]["ops_needed"].as_u64().unwrap() as usize, row.ops_needed, "{scene}: OPs needed");
+        assert_eq!(stats["opp"]["cycles"].as_u64().unwrap(), row.runs[0].cycles, "{scene}: OPP cycles");
+        assert_eq!(stats["stats"]["setup"]["objects"].as_u64().unwrap() as usize, row.objects, "{scene}: objects");
     }
 }

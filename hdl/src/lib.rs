@@ -19,6 +19,7 @@ pub mod rc;
 pub const TOPS: &[(&str, &str)] = &[
     ("opp", "PROOF object-processor pipeline: 8 object processors, FIFO depth 1 (seed 002 section 4)"),
     ("proof_shade", "PROOF shading stage: 1 light-source processor, 1024-entry object table, one entry per clock (seed 002 section 5)"),
+    ("proof_filter", "PROOF filter stage: 8x8 subpixel masks by the tree of multiples, 1x1 box, 1024-entry direction table, one entry per clock (seed 002 section 6)"),
     ("rc", "Rasterizer Controller for a 320x200 screen: setup, traversal, Z-test, Z/I-buffer ports"),
     ("colour_setup", "Colour setup: 3 planes with one reciprocal per triangle, TdbS write port (seed 001 eqs. 6-7)"),
     ("chipset", "The raster chipset for 320x200: RC + colour setup + CS around Z/I-buffer and TdbS memory ports"),
@@ -30,6 +31,7 @@ pub fn verilog_top(block: &str) -> Result<String, String> {
     match block {
         "opp" => proof::verilog_opp("opp", 8, 1),
         "proof_shade" => proof::verilog_shading("proof_shade", 1, 10),
+        "proof_filter" => proof::verilog_filter("proof_filter", 10),
         "rc" => rc::verilog(320, 200),
         "colour_setup" => cs::colour_setup_verilog(),
         "cs" => cs::color_shader_verilog(),

@@ -14,3 +14,5 @@ pub mod common;
 pub mod cs;
 pub mod rc;
 pub mod proof;
+pub mod verilator;
+pub mod backend;

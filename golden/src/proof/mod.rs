@@ -10,10 +10,13 @@
 //! * [`setup`]: the host's object setup and the look-up tables between stages;
 //! * [`shade`], [`filter`]: the shading and filter stages' arithmetic;
 //! * [`render`]: the algorithmic renderer (what a frame is);
-//! * [`cycle_shade`]: cycle-accurate model of the shading stage (register by register);
+//! * [`cycle_shade`], [`cycle_filter`]: cycle-accurate models of the shading and filter stages
+//!   (register by register);
+//! * [`study`]: the per-scene figures (OPs, cycles, FIFO depths) with the CLI's default options;
 //! * [`cycle_op`], [`cycle_opp`]: cycle-accurate models of the OP and of the OPP with its
 //!   object loader (when each port changes), which the RTL in `hdl/src/proof/` must match.
 
+pub mod cycle_filter;
 pub mod cycle_op;
 pub mod cycle_opp;
 pub mod cycle_shade;
@@ -23,3 +26,4 @@ pub mod good_nature;
 pub mod render;
 pub mod setup;
 pub mod shade;
+pub mod study;

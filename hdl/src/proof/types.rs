@@ -123,3 +123,33 @@ pub struct ShadeWork {
     pub acc_g: Bits<40>,
     pub acc_b: Bits<40>,
 }
+
+/// What the filter stage's registers F1..F6 carry beside the arithmetic
+/// (`golden::proof::cycle_filter::Tag`).
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct FilterTag {
+    /// The register holds a slot of the stream.
+    pub valid: bool,
+    pub x: Bits<10>,
+    pub y: Bits<10>,
+    /// The pixel's final slot.
+    pub last: bool,
+    pub has_entry: bool,
+    pub full: bool,
+    /// The entry's colour.
+    pub r: Bits<8>,
+    pub g: Bits<8>,
+    pub b: Bits<8>,
+}
+
+/// One anti-aliased pixel leaving the filter stage (one per object list).
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct FilteredPixel {
+    pub x: Bits<10>,
+    pub y: Bits<10>,
+    pub r: Bits<8>,
+    pub g: Bits<8>,
+    pub b: Bits<8>,
+    /// Subpixels covered by some object, 0..=64.
+    pub covered: Bits<7>,
+}

@@ -1,12 +1,16 @@
 //! The RTL backend of `idxrender render --arch proof --backend rtl`: the frame's object lists come from
 //! the RustHDL OPP, checked against the cycle model in every cycle (`bench`), and every list entry is
 //! coloured by the RustHDL shading stage, checked against its cycle model in every cycle
-//! (`shade_bench`). The filter stage is still the golden model's (its RTL is not written yet).
+//! (`shade_bench`), and the shaded slots are filtered by the RustHDL filter stage (1x1 box), checked
+//! against its cycle model in every cycle (`filter_bench`).
 
 use super::bench::run_frame;
+use super::filter_bench::run_filter;
 use super::shade_bench::run_shade;
 use golden::proof::cycle_opp::OppRun;
-use golden::proof::cycle_shade::{shade_config, slots_of_lists};
+use golden::proof::cycle_filter::filter_config;
+use golden::proof::cycle_shade::{shade_config, slots_of_lists, ShadedSlot};
+use golden::proof::render::dirs_of;
 use golden::proof::format::Entry;
 use golden::proof::setup::ProofScene;
 use std::path::Path;
@@ -25,15 +29,47 @@ pub fn table_bits(objects: usize) -> usize {
 /// The colour of every list entry, from the RTL shading stage (one light-source processor per light);
 /// returns the colours per pixel and the stage's cycles.
 pub fn shade_lists_rtl(scene: &ProofScene, lists: &[Vec<Entry>], vcd: Option<&Path>) -> Result<(Vec<Vec<[u8; 3]>>, u64), String> {
-    let n_lights = scene.lights.l.len();
-    let bits = table_bits(scene.objects.len());
-    let cfg = shade_config(&scene.lights, &scene.material, n_lights, bits as u32)?;
-    let slots = slots_of_lists(scene.screen.width, lists);
-    let (out, cycles, _) = run_shade(n_lights, bits, &cfg, &slots, None, vcd, None)?;
+    let (out, cycles) = shade_slots_rtl(scene, lists, vcd)?;
     let mut colours: Vec<Vec<[u8; 3]>> = lists.iter().map(|l| Vec::with_capacity(l.len())).collect();
     let w = scene.screen.width as usize;
     for o in out.iter().filter(|o| o.has_entry) {
         colours[o.y as usize * w + o.x as usize].push(o.rgb);
     }
     Ok((colours, cycles))
+}
+
+/// Every time slot of the frame's lists through the RTL shading stage (one light-source processor per
+/// light): the shaded slots in stream order and the stage's cycles.
+pub fn shade_slots_rtl(scene: &ProofScene, lists: &[Vec<Entry>], vcd: Option<&Path>) -> Result<(Vec<ShadedSlot>, u64), String> {
+    let n_lights = scene.lights.l.len();
+    let bits = table_bits(scene.objects.len());
+    let cfg = shade_config(&scene.lights, &scene.material, n_lights, bits as u32)?;
+    let slots = slots_of_lists(scene.screen.width, lists);
+    let (out, cycles, _) = run_shade(n_lights, bits, &cfg, &slots, None, vcd, None)?;
+    Ok((out, cycles))
+}
+
+/// The shaded slots through the RTL filter stage (1x1 box), its direction table loaded with the
+/// scene's edge directions: the RGB888 image, the covered subpixels per pixel and the stage's cycles
+/// (after the table loads).
+pub fn filter_rtl(scene: &ProofScene, slots: &[ShadedSlot], vcd: Option<&Path>) -> Result<(Vec<u8>, Vec<u8>, u64), String> {
+    let bits = table_bits(scene.objects.len());
+    let dirs: Vec<_> = (0..scene.objects.len()).map(|i| dirs_of(scene, i as u16)).collect();
+    let cfg = filter_config(&dirs, scene.background, bits as u32)?;
+    let run = run_filter(bits, &cfg, slots, None, vcd, None)?;
+    let s = scene.screen;
+    if run.pixels.len() != s.pixels() {
+        return Err(format!("the filter stage gave {} pixels for a {}x{} frame", run.pixels.len(), s.width, s.height));
+    }
+    let mut rgb = Vec::with_capacity(s.pixels() * 3);
+    let mut covered = Vec::with_capacity(s.pixels());
+    for (p, px) in run.pixels.iter().enumerate() {
+        let want = ((p as u32 % s.width) as u16, (p as u32 / s.width) as u16);
+        if (px.x, px.y) != want {
+            return Err(format!("the filter stage gave pixel ({}, {}) where ({}, {}) was due", px.x, px.y, want.0, want.1));
+        }
+        rgb.extend_from_slice(&px.rgb);
+        covered.push(px.covered);
+    }
+    Ok((rgb, covered, run.cycles))
 }

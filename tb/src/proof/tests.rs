@@ -139,7 +139,7 @@ fn scene_options(mesh: &golden::scene::Mesh, w: u32, h: u32) -> golden::render::
 }
 
 #[test]
-fn rtl_opp_and_shading_build_the_golden_lists_and_image_for_polyhedron_and_a_256_triangle_teapot() {
+fn rtl_opp_shading_and_filter_build_the_golden_lists_and_image_for_polyhedron_and_a_256_triangle_teapot() {
     use golden::proof::filter::FilterArea;
     use golden::proof::render::{filter_lists, render_scene};
     use golden::proof::setup::scene_setup;
@@ -155,7 +155,17 @@ fn rtl_opp_and_shading_build_the_golden_lists_and_image_for_polyhedron_and_a_256
         let (colours, shade_cycles) = super::backend::shade_lists_rtl(&sc, &lists, None).unwrap();
         println!("  RTL shading stage: {} slots in {shade_cycles} cycles", golden.stats.slots);
         let (rgb, _) = filter_lists(&sc, &lists, &colours, FilterArea::Box1);
-        assert_eq!(rgb, golden.rgb, "{}", mesh.name);
+        assert_eq!(rgb, golden.rgb, "{}: RTL colours, golden filter", mesh.name);
+        // The whole chain in RTL: the shaded slots through the RTL filter stage.
+        let (shaded, _) = super::backend::shade_slots_rtl(&sc, &lists, None).unwrap();
+        let t1 = std::time::Instant::now();
+        let (rgb, covered, filter_cycles) = super::backend::filter_rtl(&sc, &shaded, None).unwrap();
+        println!("  RTL filter stage: {} slots in {filter_cycles} cycles ({:?})", shaded.len(), t1.elapsed());
+        assert_eq!(rgb, golden.rgb, "{}: RTL filter", mesh.name);
+        assert_eq!(covered, golden.covered, "{}: RTL filter coverage", mesh.name);
+        // One slot per clock: the last pixel leaves the latency after the last slot entered.
+        let latency = golden::proof::cycle_filter::FILTER_LATENCY as u64;
+        assert_eq!(filter_cycles, shaded.len() as u64 + latency, "{}: the filter should take one slot per clock", mesh.name);
     }
 }
 

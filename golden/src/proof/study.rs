@@ -1,0 +1,85 @@
+//! PROOF's figures: the OPs and cycles each built-in scene needs, and the FIFO-depth study (seed 002
+//! §4.3: "a FIFO that can store the description of only one object is sufficient; increasing the
+//! length of the FIFO will result in performance gains less than 2 %"), with the camera and options
+//! that `idxrender render --arch proof` uses by default. Run by `cargo run --release -p tb --bin
+//! proof_figures -- fifo` (see docs/proof.md).
+
+use super::cycle_opp::{run_opp, OppRun};
+use super::render::{object_lists, ops_needed};
+use super::setup::scene_setup;
+use crate::format::Screen;
+use crate::host::{Camera, Lighting};
+use crate::raster::{CullMode, FrontFace};
+use crate::render::RenderOptions;
+use crate::scene::{Mesh, Winding};
+use crate::shade::Shading;
+
+/// The options of `idxrender render --arch proof --scene S --size WxH` with no other flag: the
+/// default view framed for the screen's aspect ratio, Gouraud normals, back-face culling, the mesh's
+/// own front face, the default lighting and background. `tests/proof_cli.rs` checks that the CLI
+/// reports the same figures.
+pub fn cli_options(mesh: &Mesh, w: u32, h: u32) -> RenderOptions {
+    let screen = Screen::new(w, h).expect("study screen size");
+    RenderOptions {
+        screen,
+        camera: Camera::default_view(mesh, screen),
+        shading: Shading::Gouraud,
+        cull: CullMode::Back,
+        front: if mesh.front_face == Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
+        lighting: Lighting::default(),
+        index_bits: crate::format::INDEX_BITS_DEFAULT,
+        background: [24, 24, 40],
+    }
+}
+
+/// One scene's row of the FIFO table.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct FifoRow {
+    pub scene: String,
+    pub objects: usize,
+    pub ops_needed: usize,
+    /// Runs of the OPP cycle model, one per depth, with exactly `ops_needed` OPs and no gaps.
+    pub runs: Vec<OppRun>,
+}
+
+impl FifoRow {
+    /// Cycle gain from the first to the last depth, in percent of the first.
+    pub fn gain_percent(&self) -> f64 {
+        let (a, b) = (self.runs[0].cycles as f64, self.runs[self.runs.len() - 1].cycles as f64);
+        100.0 * (a - b) / a
+    }
+}
+
+/// Run `mesh` at `w`x`h` through the OPP cycle model for each FIFO depth; each run's lists are checked
+/// against the algorithmic model.
+pub fn fifo_row(name: &str, mesh: &Mesh, w: u32, h: u32, depths: &[usize]) -> Result<FifoRow, String> {
+    let sc = scene_setup(mesh, &cli_options(mesh, w, h))?;
+    let need = (ops_needed(sc.screen, &sc.objects) as usize).max(1);
+    let lists = object_lists(sc.screen, &sc.objects);
+    let mut runs = Vec::new();
+    for &d in depths {
+        let r = run_opp(sc.screen, &sc.objects, need, d, None)?;
+        if r.lists != lists {
+            return Err(format!("{name} depth {d}: the OPP cycle model's lists differ from the algorithmic lists"));
+        }
+        runs.push(r);
+    }
+    Ok(FifoRow { scene: name.to_string(), objects: sc.objects.len(), ops_needed: need, runs })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::builtin;
+
+    #[test]
+    fn deeper_fifos_never_change_the_lists_and_one_slot_keeps_one_pixel_per_clock_on_a_small_frame() {
+        let mesh = builtin::teapot(2);
+        let row = fifo_row("teapot", &mesh, 64, 40, &[1, 2, 8]).unwrap();
+        assert!(row.ops_needed > 5 && row.ops_needed < row.objects, "{row:?}");
+        for r in &row.runs {
+            // At least one cycle per output slot; the lists were checked in fifo_row.
+            assert!(r.cycles >= r.slots_out && r.slots_out >= 64 * 40, "{r:?}");
+        }
+    }
+}

@@ -1,0 +1,330 @@
+//! PROOF's filter stage (seed 002 §6), 1x1 box: per list entry the 8x8 subpixel mask from its edge
+//! distances (the tree of multiples of sin a and cos a, [`EdgeMask`]), the subpixels the entry owns
+//! (nearest first: those no earlier entry of the pixel took), and per pixel the colours combined with
+//! weights equal to the subpixels each object owns, the background filling the rest. One list entry
+//! per clock in, one pixel per list out. Cycle behaviour: `golden::proof::cycle_filter::FilterModel`,
+//! which the bench compares every cycle.
+//!
+//! ```text
+//!            cfg_write cfg_sel cfg_addr cfg_data  (0: direction table, id -> cos/sin of 3 edges; 1: background)
+//!              │
+//!            +─┴────────────────────────────────────────────────────────────────────────────+
+//! upstream ─▶| F0 ─▶ edge masks x3 (F1 base, F2 rows, F3 mask) ─▶ F4 visible ─▶ F5 weights    |─▶ downstream
+//!  .data     | dir            tree of multiples                  = m & ~taken   popcounts     |   .data (FilteredPixel)
+//! (ShadedSlot)| table                                                                         |   .valid
+//!  .valid    |  ─▶ F6 sums += w c ─▶ OUT (last slot): (sum + (64 - covered) bg + 32) >> 6       |
+//!  .ready  ◀─|  ready = adv = !out_valid | downstream.ready (global stall)                    |◀─ .ready
+//!            +──────────────────────────────────────────────────────────────────────────────+
+//! ```
+//! Latency from a pixel's last slot to its pixel: 8 clocks. The direction table is a block RAM read
+//! with enable `adv` at the edge where F0 loads, so a stalled F0 keeps its word (as in the shading
+//! stage). The pixel states `taken` (F4) and `sum` (F6) change only when a valid slot passes, and
+//! return to 0 after a pixel's last slot.
+//!
+//! The paper's 2x2 filter area (`golden::proof::filter::box2`) is not in this RTL: it needs line
+//! buffers of quadrant sums; the golden model implements it.
+
+use super::edge_mask::EdgeMask;
+use super::popcount::Popcount64;
+use super::table_ram::TableRam;
+use super::types::{FilterTag, FilteredPixel, ShadedSlot};
+use crate::common::{MulU, StreamIn, StreamOut};
+use rust_hdl::prelude::*;
+
+#[derive(LogicBlock)]
+pub struct FilterStage {
+    pub clock: Signal<In, Clock>,
+    // From the host
+    /// Write `cfg_data` to target `cfg_sel` at `cfg_addr` at this edge (layouts:
+    /// `golden::proof::cycle_filter::filter_config`).
+    pub cfg_write: Signal<In, Bit>,
+    pub cfg_sel: Signal<In, Bits<4>>,
+    pub cfg_addr: Signal<In, Bits<16>>,
+    pub cfg_data: Signal<In, Bits<96>>,
+    // From the shading stage
+    /// The shaded list entries, one slot per entry (one empty slot for an empty list).
+    pub upstream: StreamIn<ShadedSlot>,
+    // To the frame buffer
+    /// One anti-aliased pixel per list, raster order.
+    pub downstream: StreamOut<FilteredPixel>,
+
+    // Registers, tables and sub-blocks (pub: the bench compares them with the model).
+    pub dir_table: TableRam<Bits<96>>,
+    pub background: DFF<Bits<24>>,
+    pub f0: DFF<ShadedSlot>,
+    pub f0_valid: DFF<Bit>,
+    pub e0: EdgeMask,
+    pub e1: EdgeMask,
+    pub e2: EdgeMask,
+    pub f1: DFF<FilterTag>,
+    pub f2: DFF<FilterTag>,
+    pub f3: DFF<FilterTag>,
+    pub taken: DFF<Bits<64>>,
+    pub f4: DFF<FilterTag>,
+    pub f4_visible: DFF<Bits<64>>,
+    pub f4_union: DFF<Bits<64>>,
+    pub pc_visible: Popcount64,
+    pub pc_union: Popcount64,
+    pub f5: DFF<FilterTag>,
+    pub f5_w: DFF<Bits<7>>,
+    pub f5_covered: DFF<Bits<7>>,
+    pub sum_r: DFF<Bits<16>>,
+    pub sum_g: DFF<Bits<16>>,
+    pub sum_b: DFF<Bits<16>>,
+    pub f6: DFF<FilterTag>,
+    pub f6_r: DFF<Bits<16>>,
+    pub f6_g: DFF<Bits<16>>,
+    pub f6_b: DFF<Bits<16>>,
+    pub f6_covered: DFF<Bits<7>>,
+    pub out_valid: DFF<Bit>,
+    pub out_data: DFF<FilteredPixel>,
+    // Weights times colours.
+    wc_r: MulU<7, 8, 15>,
+    wc_g: MulU<7, 8, 15>,
+    wc_b: MulU<7, 8, 15>,
+    bg_r: MulU<7, 8, 15>,
+    bg_g: MulU<7, 8, 15>,
+    bg_b: MulU<7, 8, 15>,
+
+    adv: Signal<Local, Bit>,
+    tag0: Signal<Local, FilterTag>,
+    emask: Signal<Local, Bits<64>>,
+    visible: Signal<Local, Bits<64>>,
+    uni: Signal<Local, Bits<64>>,
+    acc_r: Signal<Local, Bits<16>>,
+    acc_g: Signal<Local, Bits<16>>,
+    acc_b: Signal<Local, Bits<16>>,
+    wbg: Signal<Local, Bits<7>>,
+    t_r: Signal<Local, Bits<16>>,
+    t_g: Signal<Local, Bits<16>>,
+    t_b: Signal<Local, Bits<16>>,
+    c_r: Signal<Local, Bits<16>>,
+    c_g: Signal<Local, Bits<16>>,
+    c_b: Signal<Local, Bits<16>>,
+    all64: Constant<Bits<64>>,
+    zero64: Constant<Bits<64>>,
+    zero16: Constant<Bits<16>>,
+    n64: Constant<Bits<7>>,
+    half16: Constant<Bits<16>>,
+    sel_dirs: Constant<Bits<4>>,
+    sel_bg: Constant<Bits<4>>,
+}
+
+impl FilterStage {
+    /// A filter stage with a direction table of 2^`obj_addr_bits` entries (1..=16).
+    pub fn new(obj_addr_bits: usize) -> Result<FilterStage, String> {
+        Ok(FilterStage {
+            clock: Default::default(),
+            cfg_write: Default::default(),
+            cfg_sel: Default::default(),
+            cfg_addr: Default::default(),
+            cfg_data: Default::default(),
+            upstream: Default::default(),
+            downstream: Default::default(),
+            dir_table: TableRam::new(obj_addr_bits)?,
+            background: Default::default(),
+            f0: Default::default(),
+            f0_valid: Default::default(),
+            e0: Default::default(),
+            e1: Default::default(),
+            e2: Default::default(),
+            f1: Default::default(),
+            f2: Default::default(),
+            f3: Default::default(),
+            taken: Default::default(),
+            f4: Default::default(),
+            f4_visible: Default::default(),
+            f4_union: Default::default(),
+            pc_visible: Default::default(),
+            pc_union: Default::default(),
+            f5: Default::default(),
+            f5_w: Default::default(),
+            f5_covered: Default::default(),
+            sum_r: Default::default(),
+            sum_g: Default::default(),
+            sum_b: Default::default(),
+            f6: Default::default(),
+            f6_r: Default::default(),
+            f6_g: Default::default(),
+            f6_b: Default::default(),
+            f6_covered: Default::default(),
+            out_valid: Default::default(),
+            out_data: Default::default(),
+            wc_r: Default::default(),
+            wc_g: Default::default(),
+            wc_b: Default::default(),
+            bg_r: Default::default(),
+            bg_g: Default::default(),
+            bg_b: Default::default(),
+            adv: Default::default(),
+            tag0: Default::default(),
+            emask: Default::default(),
+            visible: Default::default(),
+            uni: Default::default(),
+            acc_r: Default::default(),
+            acc_g: Default::default(),
+            acc_b: Default::default(),
+            wbg: Default::default(),
+            t_r: Default::default(),
+            t_g: Default::default(),
+            t_b: Default::default(),
+            c_r: Default::default(),
+            c_g: Default::default(),
+            c_b: Default::default(),
+            all64: Constant::new(u64::MAX.into()),
+            zero64: Constant::new(0u64.into()),
+            zero16: Constant::new(0u64.into()),
+            n64: Constant::new(64u64.into()),
+            half16: Constant::new(32u64.into()),
+            sel_dirs: Constant::new(0u64.into()),
+            sel_bg: Constant::new(1u64.into()),
+        })
+    }
+}
+
+impl Logic for FilterStage {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, background, f0, f0_valid, f1, f2, f3, taken, f4, f4_visible, f4_union, f5, f5_w, f5_covered, sum_r, sum_g,
+            sum_b, f6, f6_r, f6_g, f6_b, f6_covered, out_valid, out_data
+        );
+        self.dir_table.clock.next = self.clock.val();
+        self.e0.clock.next = self.clock.val();
+        self.e1.clock.next = self.clock.val();
+        self.e2.clock.next = self.clock.val();
+        self.adv.next = !self.out_valid.q.val() | self.downstream.ready.val();
+        self.upstream.ready.next = self.adv.val();
+        self.downstream.valid.next = self.out_valid.q.val();
+        self.downstream.data.next = self.out_data.q.val();
+
+        // ---- Host writes: the direction table and the background colour.
+        self.dir_table.write_enable.next = self.cfg_write.val() & (self.cfg_sel.val() == self.sel_dirs.val());
+        self.dir_table.write_address.next = self.cfg_addr.val();
+        self.dir_table.write_data.next = self.cfg_data.val();
+        if self.cfg_write.val() & (self.cfg_sel.val() == self.sel_bg.val()) {
+            self.background.d.next = self.cfg_data.val().get_bits::<24>(0);
+        }
+
+        // ---- F0: the slot; the direction table is read at the same edge.
+        self.dir_table.read_address.next = self.upstream.data.val().id;
+        self.dir_table.read_enable.next = self.adv.val();
+
+        // ---- F1..F3: the three edges' masks (cos at bit 32k, sin at 32k + 16 of the table word).
+        self.e0.adv.next = self.adv.val();
+        self.e1.adv.next = self.adv.val();
+        self.e2.adv.next = self.adv.val();
+        self.e0.d.next = self.f0.q.val().d0;
+        self.e1.d.next = self.f0.q.val().d1;
+        self.e2.d.next = self.f0.q.val().d2;
+        self.e0.cs.next = self.dir_table.read_data.val().get_bits::<16>(0);
+        self.e0.sn.next = self.dir_table.read_data.val().get_bits::<16>(16);
+        self.e1.cs.next = self.dir_table.read_data.val().get_bits::<16>(32);
+        self.e1.sn.next = self.dir_table.read_data.val().get_bits::<16>(48);
+        self.e2.cs.next = self.dir_table.read_data.val().get_bits::<16>(64);
+        self.e2.sn.next = self.dir_table.read_data.val().get_bits::<16>(80);
+        self.tag0.next = self.f1.q.val();
+        self.tag0.next.valid = self.f0_valid.q.val();
+        self.tag0.next.x = self.f0.q.val().x;
+        self.tag0.next.y = self.f0.q.val().y;
+        self.tag0.next.last = self.f0.q.val().last;
+        self.tag0.next.has_entry = self.f0.q.val().has_entry;
+        self.tag0.next.full = self.f0.q.val().full;
+        self.tag0.next.r = self.f0.q.val().r;
+        self.tag0.next.g = self.f0.q.val().g;
+        self.tag0.next.b = self.f0.q.val().b;
+
+        // ---- F4: the entry's mask (all for a full entry, none for an empty slot) against the
+        // subpixels nearer entries of the pixel took.
+        self.emask.next = self.e0.mask.val() & self.e1.mask.val() & self.e2.mask.val();
+        if self.f3.q.val().full {
+            self.emask.next = self.all64.val();
+        }
+        if !self.f3.q.val().has_entry {
+            self.emask.next = self.zero64.val();
+        }
+        self.visible.next = self.emask.val() & !self.taken.q.val();
+        self.uni.next = self.taken.q.val() | self.emask.val();
+
+        // ---- F5: weights.
+        self.pc_visible.x.next = self.f4_visible.q.val();
+        self.pc_union.x.next = self.f4_union.q.val();
+
+        // ---- F6: sums += w c.
+        self.wc_r.a.next = self.f5_w.q.val();
+        self.wc_g.a.next = self.f5_w.q.val();
+        self.wc_b.a.next = self.f5_w.q.val();
+        self.wc_r.b.next = self.f5.q.val().r;
+        self.wc_g.b.next = self.f5.q.val().g;
+        self.wc_b.b.next = self.f5.q.val().b;
+        self.acc_r.next = self.sum_r.q.val() + bit_cast::<16, 15>(self.wc_r.p.val());
+        self.acc_g.next = self.sum_g.q.val() + bit_cast::<16, 15>(self.wc_g.p.val());
+        self.acc_b.next = self.sum_b.q.val() + bit_cast::<16, 15>(self.wc_b.p.val());
+
+        // ---- OUT: the background fills the uncovered subpixels; round and divide by 64.
+        self.wbg.next = self.n64.val() - self.f6_covered.q.val();
+        self.bg_r.a.next = self.wbg.val();
+        self.bg_g.a.next = self.wbg.val();
+        self.bg_b.a.next = self.wbg.val();
+        self.bg_r.b.next = self.background.q.val().get_bits::<8>(0);
+        self.bg_g.b.next = self.background.q.val().get_bits::<8>(8);
+        self.bg_b.b.next = self.background.q.val().get_bits::<8>(16);
+        self.t_r.next = self.f6_r.q.val() + bit_cast::<16, 15>(self.bg_r.p.val());
+        self.t_g.next = self.f6_g.q.val() + bit_cast::<16, 15>(self.bg_g.p.val());
+        self.t_b.next = self.f6_b.q.val() + bit_cast::<16, 15>(self.bg_b.p.val());
+        self.c_r.next = self.t_r.val() + self.half16.val();
+        self.c_g.next = self.t_g.val() + self.half16.val();
+        self.c_b.next = self.t_b.val() + self.half16.val();
+
+        if self.adv.val() {
+            self.f0.d.next = self.upstream.data.val();
+            self.f0_valid.d.next = self.upstream.valid.val();
+            self.f1.d.next = self.tag0.val();
+            self.f2.d.next = self.f1.q.val();
+            self.f3.d.next = self.f2.q.val();
+            self.f4.d.next = self.f3.q.val();
+            self.f4_visible.d.next = self.visible.val();
+            self.f4_union.d.next = self.uni.val();
+            if self.f3.q.val().valid {
+                self.taken.d.next = self.uni.val();
+                if self.f3.q.val().last {
+                    self.taken.d.next = self.zero64.val();
+                }
+            }
+            self.f5.d.next = self.f4.q.val();
+            self.f5_w.d.next = self.pc_visible.count.val();
+            self.f5_covered.d.next = self.pc_union.count.val();
+            self.f6.d.next = self.f5.q.val();
+            self.f6_r.d.next = self.acc_r.val();
+            self.f6_g.d.next = self.acc_g.val();
+            self.f6_b.d.next = self.acc_b.val();
+            self.f6_covered.d.next = self.f5_covered.q.val();
+            if self.f5.q.val().valid {
+                self.sum_r.d.next = self.acc_r.val();
+                self.sum_g.d.next = self.acc_g.val();
+                self.sum_b.d.next = self.acc_b.val();
+                if self.f5.q.val().last {
+                    self.sum_r.d.next = self.zero16.val();
+                    self.sum_g.d.next = self.zero16.val();
+                    self.sum_b.d.next = self.zero16.val();
+                }
+            }
+            self.out_valid.d.next = self.f6.q.val().valid & self.f6.q.val().last;
+            self.out_data.d.next.x = self.f6.q.val().x;
+            self.out_data.d.next.y = self.f6.q.val().y;
+            self.out_data.d.next.r = self.c_r.val().get_bits::<8>(6);
+            self.out_data.d.next.g = self.c_g.val().get_bits::<8>(6);
+            self.out_data.d.next.b = self.c_b.val().get_bits::<8>(6);
+            self.out_data.d.next.covered = self.f6_covered.q.val();
+        }
+    }
+}
+
+/// The Verilog of a filter stage with a direction table of 2^`obj_addr_bits` entries, top module
+/// named `name`.
+pub fn verilog_filter(name: &str, obj_addr_bits: usize) -> Result<String, String> {
+    let mut uut = FilterStage::new(obj_addr_bits)?;
+    uut.connect_all();
+    check_all(&uut).map_err(|e| format!("{name}: design check failed: {e:?}"))?;
+    Ok(super::rename_top(&generate_verilog(&uut), name))
+}

@@ -1,0 +1,325 @@
+//! Level 1 for PROOF's filter stage: the RustHDL `FilterStage` (direct drive) beside
+//! `golden::proof::cycle_filter::FilterModel`, same inputs every cycle; compared before every rising
+//! edge: `upstream.ready`, `downstream.valid`, `downstream.data` (when valid), the pixel states
+//! (`taken`, the colour sums), and every pipeline register's valid bit and, when valid, its contents
+//! (F0's slot, each edge's base/steps, tree rows and mask, the visible and union masks, the weights,
+//! the sums). The first difference stops the run with the cycle, the port or register, both values
+//! and the VCD path.
+
+use super::convert::hex_of;
+use super::shade_bench::{shaded_to_rtl, StageGaps};
+use super::stage_replay::{inp, out, Port, Recorder};
+use golden::proof::cycle_filter::{EdgeF1, EdgeF2, FilterIn, FilterModel, FilterOut, FilteredPixel, Tag};
+use golden::proof::cycle_opp::GapRng;
+use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};
+use hdl::proof::edge_mask::EdgeMask;
+use hdl::proof::{FilterStage, FilterTag, FilteredPixel as RtlPixel, ShadedSlot as RtlShaded};
+use rust_hdl::core::vcd_probe::VCDProbe;
+use rust_hdl::prelude::*;
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+
+fn sext(v: u64, bits: u32) -> i64 {
+    ((v << (64 - bits)) as i64) >> (64 - bits)
+}
+
+pub fn pixel_from_rtl(p: &RtlPixel) -> FilteredPixel {
+    FilteredPixel {
+        x: p.x.to_u64() as u16,
+        y: p.y.to_u64() as u16,
+        rgb: [p.r.to_u64() as u8, p.g.to_u64() as u8, p.b.to_u64() as u8],
+        covered: p.covered.to_u64() as u8,
+    }
+}
+
+pub fn pixel_to_rtl(p: &FilteredPixel) -> RtlPixel {
+    RtlPixel {
+        x: (p.x as u64).into(),
+        y: (p.y as u64).into(),
+        r: (p.rgb[0] as u64).into(),
+        g: (p.rgb[1] as u64).into(),
+        b: (p.rgb[2] as u64).into(),
+        covered: (p.covered as u64).into(),
+    }
+}
+
+/// (valid, x, y, last, has_entry, full, rgb) of a register's tag.
+type TagKey = (bool, u16, u16, bool, bool, bool, [u8; 3]);
+
+fn tag_rtl(t: &FilterTag) -> TagKey {
+    (
+        t.valid,
+        t.x.to_u64() as u16,
+        t.y.to_u64() as u16,
+        t.last,
+        t.has_entry,
+        t.full,
+        [t.r.to_u64() as u8, t.g.to_u64() as u8, t.b.to_u64() as u8],
+    )
+}
+fn tag_model(t: &Tag) -> TagKey {
+    let s = &t.slot;
+    (t.valid, s.x, s.y, s.last, s.has_entry, s.full, s.rgb)
+}
+
+fn f1_rtl(e: &EdgeMask) -> EdgeF1 {
+    EdgeF1 { base: sext(e.base.q.val().to_u64(), 22), sx: sext(e.sx.q.val().to_u64(), 22), sy: sext(e.sy.q.val().to_u64(), 22) }
+}
+fn f2_rtl(e: &EdgeMask) -> EdgeF2 {
+    let mut rows = [0i64; 8];
+    for (j, r) in rows.iter_mut().enumerate() {
+        *r = sext(e.rows[j].q.val().to_u64(), 22);
+    }
+    EdgeF2 { rows, sx: sext(e.sx2.q.val().to_u64(), 22) }
+}
+
+/// The filter top's ports, for the Verilog replay.
+pub fn filter_ports() -> Vec<Port> {
+    vec![
+        inp("cfg_write", 1),
+        inp("cfg_sel", 4),
+        inp("cfg_addr", 16),
+        inp("cfg_data", 96),
+        inp("upstream$valid", 1),
+        inp("upstream$data", RtlShaded::BITS),
+        inp("downstream$ready", 1),
+        out("upstream$ready", 1, None),
+        out("downstream$valid", 1, None),
+        out("downstream$data", RtlPixel::BITS, Some("downstream$valid")),
+    ]
+}
+
+pub struct FilterBench {
+    pub uut: FilterStage,
+    pub model: FilterModel,
+    pub cycle: u64,
+    vcd: Option<VCDProbe<BufWriter<File>>>,
+    vcd_path: Option<PathBuf>,
+    pub vectors: Option<Recorder>,
+}
+
+fn bits96(v: u128) -> Bits<96> {
+    Bits::<96>::from(v as u64) | (Bits::<96>::from((v >> 64) as u64) << 64)
+}
+
+impl FilterBench {
+    pub fn new(obj_addr_bits: usize, vcd: Option<&Path>, vectors: Option<PathBuf>) -> Result<FilterBench, String> {
+        let model = FilterModel::new(obj_addr_bits as u32)?;
+        let mut uut = FilterStage::new(obj_addr_bits)?;
+        uut.connect_all();
+        check_all(&uut).map_err(|e| format!("proof_filter: design check failed: {e:?}"))?;
+        let vcd_probe = match vcd {
+            Some(p) => {
+                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
+                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), &uut), &uut))
+            }
+            None => None,
+        };
+        Ok(FilterBench {
+            uut,
+            model,
+            cycle: 0,
+            vcd: vcd_probe,
+            vcd_path: vcd.map(|p| p.to_path_buf()),
+            vectors: vectors.map(|p| Recorder::create(p, &filter_ports())).transpose()?,
+        })
+    }
+
+    fn dump(&mut self, t: u64) {
+        if let Some(mut v) = self.vcd.take() {
+            let _ = v.timestamp(t);
+            self.vcd = Some(write_vcd_change(v, &self.uut));
+        }
+    }
+
+    fn fail(&self, what: String) -> String {
+        match &self.vcd_path {
+            Some(p) => format!("cycle {}: {what} (waveform: {})", self.cycle, p.display()),
+            None => format!("cycle {}: {what}", self.cycle),
+        }
+    }
+
+    fn compare(&self, exp: &FilterOut) -> Result<(), String> {
+        let u = &self.uut;
+        let m = &self.model;
+        if u.upstream.ready.val() != exp.up_ready {
+            return Err(self.fail(format!("upstream.ready rtl {} model {}", u.upstream.ready.val(), exp.up_ready)));
+        }
+        if u.downstream.valid.val() != exp.down_valid {
+            return Err(self.fail(format!("downstream.valid rtl {} model {}", u.downstream.valid.val(), exp.down_valid)));
+        }
+        let got = pixel_from_rtl(&u.downstream.data.val());
+        if exp.down_valid && got != exp.down_data {
+            return Err(self.fail(format!("downstream.data rtl {got:?} model {:?}", exp.down_data)));
+        }
+        let diff = |what: &str, r: String, e: String| -> Result<(), String> {
+            if r != e {
+                Err(self.fail(format!("register {what} rtl {r} model {e}")))
+            } else {
+                Ok(())
+            }
+        };
+        // F0 and the direction table's output.
+        diff("F0 valid", format!("{}", u.f0_valid.q.val()), format!("{}", m.f0.valid))?;
+        if m.f0.valid {
+            let f0 = super::shade_bench::shaded_from_rtl(&u.f0.q.val());
+            diff("F0 slot", format!("{f0:?}"), format!("{:?}", m.f0.slot))?;
+            let q = u.dir_table.read_data.val();
+            let dq: [i16; 6] = [0, 1, 2, 3, 4, 5].map(|k| sext(q.get_bits::<16>(16 * k).to_u64(), 16) as i16);
+            diff("direction table output", format!("{dq:?}"), format!("{:?}", m.dir_q))?;
+        }
+        let edges = [&u.e0, &u.e1, &u.e2];
+        let tags = [(&u.f1, &m.f1.0, "F1"), (&u.f2, &m.f2.0, "F2"), (&u.f3, &m.f3.0, "F3")];
+        for (r, t, name) in tags {
+            let (kr, km) = (tag_rtl(&r.q.val()), tag_model(t));
+            if kr.0 != km.0 || (km.0 && kr != km) {
+                return Err(self.fail(format!("register {name} tag rtl {kr:?} model {km:?} (valid, x, y, last, has_entry, full, rgb)")));
+            }
+        }
+        for k in 0..3 {
+            if m.f1.0.valid {
+                diff(&format!("F1 edge {k}"), format!("{:?}", f1_rtl(edges[k])), format!("{:?}", m.f1.1[k]))?;
+            }
+            if m.f2.0.valid {
+                diff(&format!("F2 edge {k}"), format!("{:?}", f2_rtl(edges[k])), format!("{:?}", m.f2.1[k]))?;
+            }
+            if m.f3.0.valid {
+                diff(&format!("F3 edge {k} mask"), format!("{:#018x}", edges[k].m.q.val().to_u64()), format!("{:#018x}", m.f3.1[k]))?;
+            }
+        }
+        diff("taken", format!("{:#018x}", u.taken.q.val().to_u64()), format!("{:#018x}", m.taken))?;
+        let t4 = (tag_rtl(&u.f4.q.val()), tag_model(&m.f4.tag));
+        if t4.0 .0 != t4.1 .0 || (t4.1 .0 && t4.0 != t4.1) {
+            return Err(self.fail(format!("register F4 tag rtl {:?} model {:?}", t4.0, t4.1)));
+        }
+        if m.f4.tag.valid {
+            diff(
+                "F4 visible/union",
+                format!("{:#018x}/{:#018x}", u.f4_visible.q.val().to_u64(), u.f4_union.q.val().to_u64()),
+                format!("{:#018x}/{:#018x}", m.f4.visible, m.f4.union),
+            )?;
+        }
+        let t5 = (tag_rtl(&u.f5.q.val()), tag_model(&m.f5.tag));
+        if t5.0 .0 != t5.1 .0 || (t5.1 .0 && t5.0 != t5.1) {
+            return Err(self.fail(format!("register F5 tag rtl {:?} model {:?}", t5.0, t5.1)));
+        }
+        if m.f5.tag.valid {
+            diff(
+                "F5 weight/covered",
+                format!("{}/{}", u.f5_w.q.val().to_u64(), u.f5_covered.q.val().to_u64()),
+                format!("{}/{}", m.f5.w, m.f5.covered),
+            )?;
+        }
+        let sums = [u.sum_r.q.val().to_u64() as u32, u.sum_g.q.val().to_u64() as u32, u.sum_b.q.val().to_u64() as u32];
+        diff("sum", format!("{sums:?}"), format!("{:?}", m.sum))?;
+        let t6 = (tag_rtl(&u.f6.q.val()), tag_model(&m.f6.tag));
+        if t6.0 .0 != t6.1 .0 || (t6.1 .0 && t6.0 != t6.1) {
+            return Err(self.fail(format!("register F6 tag rtl {:?} model {:?}", t6.0, t6.1)));
+        }
+        if m.f6.tag.valid {
+            let acc = [u.f6_r.q.val().to_u64() as u32, u.f6_g.q.val().to_u64() as u32, u.f6_b.q.val().to_u64() as u32];
+            diff("F6 sums/covered", format!("{acc:?}/{}", u.f6_covered.q.val().to_u64()), format!("{:?}/{}", m.f6.acc, m.f6.covered))?;
+        }
+        Ok(())
+    }
+
+    /// One clock on both sides; returns the model's outputs before the edge.
+    pub fn cycle(&mut self, i: &FilterIn) -> Result<FilterOut, String> {
+        let c = i.cfg.unwrap_or_default();
+        let u = &mut self.uut;
+        u.cfg_write.next = i.cfg.is_some();
+        u.cfg_sel.next = (c.sel as u64).into();
+        u.cfg_addr.next = (c.addr as u64).into();
+        u.cfg_data.next = bits96(c.data);
+        u.upstream.valid.next = i.up_valid;
+        u.upstream.data.next = shaded_to_rtl(&i.up_data);
+        u.downstream.ready.next = i.down_ready;
+        u.clock.next = false.into();
+        if !simulate(u, 10_000) {
+            return Err(self.fail("the RTL did not settle".into()));
+        }
+        self.dump(10 * self.cycle);
+        let exp = self.model.outputs(i.down_ready);
+        self.compare(&exp)?;
+        if let Some(w) = self.vectors.as_mut() {
+            let up: Bits<{ RtlShaded::BITS }> = shaded_to_rtl(&i.up_data).into();
+            let down: Bits<{ RtlPixel::BITS }> = pixel_to_rtl(&exp.down_data).into();
+            w.cycle(&[
+                format!("{}", i.cfg.is_some() as u8),
+                format!("{:x}", c.sel),
+                format!("{:x}", c.addr),
+                hex_of(bits96(c.data)),
+                format!("{}", i.up_valid as u8),
+                hex_of(up),
+                format!("{}", i.down_ready as u8),
+                format!("{}", exp.up_ready as u8),
+                format!("{}", exp.down_valid as u8),
+                hex_of(down),
+            ])?;
+        }
+        self.model.step(i)?;
+        let u = &mut self.uut;
+        u.clock.next = true.into();
+        if !simulate(u, 10_000) {
+            return Err(self.fail("the RTL did not settle".into()));
+        }
+        self.dump(10 * self.cycle + 5);
+        self.cycle += 1;
+        Ok(exp)
+    }
+}
+
+/// The outcome of a run of the filter bench.
+pub struct FilterRun {
+    pub pixels: Vec<FilteredPixel>,
+    /// Cycles after the configuration writes until the last pixel left.
+    pub cycles: u64,
+    /// The recorded vectors (path, cycles) when asked for.
+    pub vectors: Option<(PathBuf, u64)>,
+}
+
+/// Configure, then stream `slots` through the RTL filter stage beside its model, with optional random
+/// gaps at the input and back-pressure at the output; returns the pixels in order.
+pub fn run_filter(
+    obj_addr_bits: usize,
+    cfg: &[CfgWrite],
+    slots: &[ShadedSlot],
+    gaps: Option<StageGaps>,
+    vcd: Option<&Path>,
+    vectors: Option<PathBuf>,
+) -> Result<FilterRun, String> {
+    let mut b = FilterBench::new(obj_addr_bits, vcd, vectors)?;
+    let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
+    for c in cfg {
+        b.cycle(&FilterIn { cfg: Some(*c), down_ready: true, ..Default::default() })?;
+    }
+    let start = b.cycle;
+    let pixels = slots.iter().filter(|s| s.last).count();
+    let (mut i, mut idle) = (0usize, 0u64);
+    let mut outs = Vec::with_capacity(pixels);
+    while outs.len() < pixels {
+        let go = i < slots.len() && gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
+        let ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
+        let inp = FilterIn { up_valid: go, up_data: slots.get(i).copied().unwrap_or_default(), down_ready: ready, cfg: None };
+        let o = b.cycle(&inp)?;
+        if go && o.up_ready {
+            i += 1;
+        }
+        if o.down_valid && ready {
+            outs.push(o.down_data);
+            idle = 0;
+        } else {
+            idle += 1;
+            if idle > 10_000 {
+                return Err(format!("the filter stage gave no pixel for 10000 cycles at cycle {} (a list without a last slot?)", b.cycle));
+            }
+        }
+    }
+    let cycles = b.cycle - start;
+    let rec = match b.vectors.take() {
+        Some(w) => Some(w.finish()?),
+        None => None,
+    };
+    Ok(FilterRun { pixels: outs, cycles, vectors: rec })
+}

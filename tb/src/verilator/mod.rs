@@ -1,0 +1,489 @@
+//! The Verilator backend: the generated Verilog of the `chipset` top (`hdl::chipset::verilog`),
+//! compiled by Verilator with the C++ harness `tb/verilator/chipset/harness.cpp`, behind
+//! `golden::render::Chipset`, so that the host program of the golden model drives the Verilog through
+//! seed 001's dual pipeline, as it drives the RustHDL simulation in [`crate::chipset::RtlChipset`].
+//!
+//! ```text
+//!   golden::render::render_with (host)                      verilated process (Vchipset)
+//!   +------------------------------+   stdin: commands    +------------------------------------+
+//!   | VerilatorChipset             |--------------------->| harness.cpp: phase loops, memories |
+//!   |  rasterize / colour_setup /  |   "raster n budget"  |  Z (W*H x 24), I (W*H x 16),       |
+//!   |  scanout                     |   + command words    |  TdbS (2^16 x 424, VlWide<14>)     |
+//!   |                              |<---------------------|   <-> chipset.v (top `chipset`)    |
+//!   +------------------------------+  stdout: results,    +------------------------------------+
+//!                                     buffers, pixels, cycles, progress
+//! ```
+//!
+//! The harness runs each phase's loop in C++ (one pipe round trip per phase, not per cycle) with the
+//! same command words (`crate::rc::bench::command_word`, `crate::cs::pack::command_of`), the same
+//! handshakes, the same memory model (synchronous, latency 1, read-before-write; the same garbage after
+//! reset) and the same cycle accounting as `RtlChipset`, so [`PhaseCycles`] of both backends are equal
+//! for the same frame (tested on `polyhedron`).
+//!
+//! The executable is built once per screen size and trace kind into
+//! `target/verilator/chipset_<W>x<H>[_trace|_trace_full]/` and reused while the hash of the Verilog,
+//! the harness, the Verilator flags and `verilator --version` is unchanged (written in `hash` there).
+//!
+//! VCD: with a path, the harness is built with `--trace --trace-depth 1` (and [`PORTS_VLT`]) and dumps
+//! the 38 top-level ports only (scope `uut`, `$` in port names as in the Verilog: `rc_cmd$data`), at time 10*cycle with the clock
+//! low and 10*cycle + 5 after the rising edge: the same instants as `RtlChipset`'s VCD of the same ports
+//! (whose scope is `uut` and whose streams are sub-scopes `rc_cmd` with `data`, `valid`, `ready`), for
+//! a `vcd-diff` of the two. [`VcdScope::Full`] builds without the depth limit (every signal).
+
+use crate::chipset::{PhaseCycles, Progress, VcdScope};
+use crate::common::workspace_target;
+use crate::cs::pack::{command_of, rgb_of, tdata_of};
+use crate::rc::bench::command_word;
+use golden::cycle::colour_setup::SetupCmd;
+use golden::cycle::rc::RcCmd;
+use golden::format::Screen;
+use golden::raster::{Culled, CullMode, FrontFace, TriResult};
+use golden::render::{Chipset, RcCommand, ScanOut, SetupCommand};
+use golden::shade::{PhongLights, Shading};
+use hdl::rc::RcResult;
+use rust_hdl::prelude::*;
+use std::io::{BufRead, BufReader, BufWriter, Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Child, ChildStdin, ChildStdout, Command, Stdio};
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+/// The harness source, compiled into this crate so that the cache key is what gets built.
+pub const HARNESS_CPP: &str = include_str!("../../verilator/chipset/harness.cpp");
+
+/// Verilator warnings on the generated Verilog that the build waives, each with its reason (the same
+/// reasons as `crate::cs::replay::LINT_WAIVERS`, which lists every waiver of `-Wall`).
+pub const BUILD_WAIVERS: &[(&str, &str)] = &[
+    ("WIDTH", "rust-hdl emits `bit_cast` as `x & N'hmask` (wider than x), 64-bit struct-field offsets and 32-bit `index() == i` compares, whatever the operand widths"),
+    ("UNOPTFLAT", "colour_setup: rust-hdl emits one always @(*) block per module, so a block that drives a child's inputs and reads its outputs is one vertex on a cycle for Verilator's scheduler, though no signal depends on itself; a scheduling note, not a loop"),
+];
+
+/// Verilator configuration of the ports-only VCD: `--trace-depth 1` keeps the top-level ports (scope
+/// `uut`) but also the `chipset` module's own signals one level down; this switches those off.
+pub const PORTS_VLT: &str = "`verilator_config\ntracing_off -scope \"chipset\"\n";
+
+/// 32-bit words of the packed ports the harness takes (Verilator's VlWide layout: word 0 = bits 31:0).
+const RC_WORDS: usize = 6;
+const SETUP_WORDS: usize = 10;
+
+/// A built harness.
+#[derive(Clone, Debug)]
+pub struct Build {
+    /// The executable.
+    pub exe: PathBuf,
+    /// It was built by this call (false: taken from the cache).
+    pub fresh: bool,
+    /// Seconds spent generating the Verilog and (if fresh) running Verilator.
+    pub seconds: f64,
+}
+
+fn trace_suffix(vcd: Option<VcdScope>) -> &'static str {
+    match vcd {
+        None => "",
+        Some(VcdScope::Ports) => "_trace",
+        Some(VcdScope::Full) => "_trace_full",
+    }
+}
+
+/// FNV-1a, 64 bits: a cache key that does not change between Rust releases.
+fn fnv1a(parts: &[&[u8]]) -> u64 {
+    let mut h: u64 = 0xcbf29ce484222325;
+    for p in parts {
+        for &b in p.iter().chain(&[0xffu8]) {
+            h ^= b as u64;
+            h = h.wrapping_mul(0x100000001b3);
+        }
+    }
+    h
+}
+
+fn verilator_flags(vcd: Option<VcdScope>) -> Vec<String> {
+    let mut f: Vec<String> = ["--cc", "--exe", "--build", "-O3", "-j", "2", "--top-module", "chipset", "-o", "Vchipset"].iter().map(|s| s.to_string()).collect();
+    f.extend(BUILD_WAIVERS.iter().map(|w| format!("-Wno-{}", w.0)));
+    match vcd {
+        None => {}
+        Some(VcdScope::Ports) => f.extend(["--trace", "--trace-depth", "1"].iter().map(|s| s.to_string())),
+        Some(VcdScope::Full) => f.push("--trace".into()),
+    }
+    f
+}
+
+/// Build the harness for `screen` (with a VCD writer of `vcd`'s kind) unless the cache holds it.
+pub fn build(screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
+    // One build at a time in this process (tests run in threads; the machine has 2 cores); other
+    // processes are kept apart by building in a private directory and renaming it into place.
+    static BUILDING: Mutex<()> = Mutex::new(());
+    let _one = BUILDING.lock().unwrap_or_else(|e| e.into_inner());
+    let t0 = Instant::now();
+    let version = Command::new("verilator")
+        .arg("--version")
+        .output()
+        .map_err(|e| format!("--backend verilator needs Verilator 5 on PATH (e.g. apt-get install verilator): cannot run verilator: {e}"))?;
+    if !version.status.success() {
+        return Err(format!("verilator --version failed: {}", String::from_utf8_lossy(&version.stderr)));
+    }
+    let verilog = hdl::chipset::verilog(screen.width, screen.height)?;
+    let flags = verilator_flags(vcd);
+    let key = format!("{:016x}", fnv1a(&[verilog.as_bytes(), HARNESS_CPP.as_bytes(), PORTS_VLT.as_bytes(), flags.join(" ").as_bytes(), &version.stdout]));
+    let root = workspace_target().join("verilator");
+    let name = format!("chipset_{}x{}{}", screen.width, screen.height, trace_suffix(vcd));
+    let dir = root.join(&name);
+    let exe_in = |d: &Path| d.join("obj").join("Vchipset");
+    let cached = |d: &Path| std::fs::read_to_string(d.join("hash")).map(|h| h.trim() == key).unwrap_or(false) && exe_in(d).is_file();
+    if cached(&dir) {
+        return Ok(Build { exe: exe_in(&dir), fresh: false, seconds: t0.elapsed().as_secs_f64() });
+    }
+    // Build beside the cache entry, then move it into place: concurrent builds never see half a build.
+    let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.subsec_nanos()).unwrap_or(0);
+    let tmp = root.join(format!("{name}.build-{}-{nanos}", std::process::id()));
+    std::fs::create_dir_all(&tmp).map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
+    let write = |f: &str, text: &str| std::fs::write(tmp.join(f), text).map_err(|e| format!("cannot write {}: {e}", tmp.join(f).display()));
+    write("chipset.v", &verilog)?;
+    write("harness.cpp", HARNESS_CPP)?;
+    write("ports.vlt", PORTS_VLT)?;
+    let config: &[&str] = if vcd == Some(VcdScope::Ports) { &["ports.vlt"] } else { &[] };
+    let out = Command::new("verilator")
+        .current_dir(&tmp)
+        .args(&flags)
+        .args(["-Mdir", "obj"])
+        .args(config)
+        .args(["chipset.v", "harness.cpp"])
+        .output()
+        .map_err(|e| format!("cannot run verilator: {e}"))?;
+    let log = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let _ = std::fs::write(tmp.join("build.log"), &log);
+    if !out.status.success() || !exe_in(&tmp).is_file() {
+        return Err(format!("verilator failed to build the chipset harness (files in {}):\n{}", tmp.display(), tail(&log, 4000)));
+    }
+    write("hash", &format!("{key}\n"))?;
+    if dir.exists() && !cached(&dir) {
+        // A stale entry (another Verilog or harness): move it aside and remove it.
+        let old = root.join(format!("{name}.old-{}-{nanos}", std::process::id()));
+        if std::fs::rename(&dir, &old).is_ok() {
+            let _ = std::fs::remove_dir_all(&old);
+        }
+    }
+    let fresh = match std::fs::rename(&tmp, &dir) {
+        Ok(()) => true,
+        // Someone else put the same build in place meanwhile.
+        Err(_) if cached(&dir) => {
+            let _ = std::fs::remove_dir_all(&tmp);
+            false
+        }
+        Err(e) => return Err(format!("cannot move {} to {}: {e}", tmp.display(), dir.display())),
+    };
+    Ok(Build { exe: exe_in(&dir), fresh, seconds: t0.elapsed().as_secs_f64() })
+}
+
+fn tail(s: &str, n: usize) -> &str {
+    let mut i = s.len().saturating_sub(n);
+    while !s.is_char_boundary(i) {
+        i += 1;
+    }
+    &s[i..]
+}
+
+/// The `chipset` Verilog under Verilator, with its memories in the harness.
+pub struct VerilatorChipset {
+    pub screen: Screen,
+    pub cycle: u64,
+    pub phases: PhaseCycles,
+    /// How the harness was obtained (build time, cache hit).
+    pub build: Build,
+    child: Child,
+    to_sim: BufWriter<ChildStdin>,
+    from_sim: BufReader<ChildStdout>,
+    stderr: Arc<Mutex<String>>,
+    frame_start: u64,
+    /// The buffers hold the previous frame's clear-behind (false after reset: memory contents unknown).
+    cleared: bool,
+    ibuf_after_raster: Vec<u32>,
+    zbuf_after_raster: Vec<u32>,
+    vcd_open: bool,
+    progress: Option<Progress>,
+}
+
+impl VerilatorChipset {
+    /// A chipset for `screen`; with `vcd`, the top-level ports in every half cycle are written there.
+    pub fn new(screen: Screen, vcd: Option<PathBuf>) -> Result<VerilatorChipset, String> {
+        Self::with_vcd_scope(screen, vcd, VcdScope::Ports)
+    }
+
+    /// As [`VerilatorChipset::new`], choosing what the VCD holds.
+    pub fn with_vcd_scope(screen: Screen, vcd: Option<PathBuf>, scope: VcdScope) -> Result<VerilatorChipset, String> {
+        if let Some(p) = &vcd {
+            // Fail before a build with a clear message rather than in the harness.
+            std::fs::File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
+        }
+        let b = build(screen, vcd.as_ref().map(|_| scope))?;
+        Self::with_build(screen, vcd, b)
+    }
+
+    fn with_build(screen: Screen, vcd: Option<PathBuf>, build: Build) -> Result<VerilatorChipset, String> {
+        let mut cmd = Command::new(&build.exe);
+        cmd.arg(screen.width.to_string()).arg(screen.height.to_string());
+        if let Some(p) = &vcd {
+            cmd.arg(p);
+        }
+        let mut child = cmd
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .map_err(|e| format!("cannot start {}: {e}", build.exe.display()))?;
+        let stderr = Arc::new(Mutex::new(String::new()));
+        {
+            let log = stderr.clone();
+            let mut err = child.stderr.take().expect("piped stderr");
+            std::thread::spawn(move || {
+                let mut buf = [0u8; 4096];
+                while let Ok(n) = err.read(&mut buf) {
+                    if n == 0 {
+                        break;
+                    }
+                    let mut l = log.lock().unwrap();
+                    if l.len() < 1 << 16 {
+                        l.push_str(&String::from_utf8_lossy(&buf[..n]));
+                    }
+                }
+            });
+        }
+        let to_sim = BufWriter::new(child.stdin.take().expect("piped stdin"));
+        let from_sim = BufReader::new(child.stdout.take().expect("piped stdout"));
+        let mut c = VerilatorChipset {
+            screen,
+            cycle: 0,
+            phases: PhaseCycles::default(),
+            build,
+            child,
+            to_sim,
+            from_sim,
+            stderr,
+            frame_start: 0,
+            cleared: false,
+            ibuf_after_raster: Vec::new(),
+            zbuf_after_raster: Vec::new(),
+            vcd_open: vcd.is_some(),
+            progress: None,
+        };
+        c.expect("READY")?;
+        Ok(c)
+    }
+
+    /// Report progress through `f(phase, done, total)`.
+    pub fn with_progress(mut self, f: Progress) -> VerilatorChipset {
+        self.progress = Some(f);
+        self
+    }
+
+    /// Close the VCD (flushing it); it is also closed when the chipset is dropped.
+    pub fn finish_vcd(&mut self) {
+        if self.vcd_open {
+            self.vcd_open = false;
+            if self.send(b"vcd_close\n", &[]).is_ok() {
+                let _ = self.expect("V");
+            }
+        }
+    }
+
+    /// The buffers as the RC left them at the end of the last rasterization.
+    pub fn buffers_after_raster(&self) -> (&[u32], &[u32]) {
+        (&self.ibuf_after_raster, &self.zbuf_after_raster)
+    }
+
+    /// A cycle budget that no correct frame reaches (as `RtlChipset`'s): a hang is an error.
+    fn budget(&self, work: u64) -> u64 {
+        1_000_000 + 64 * work
+    }
+
+    fn died(&mut self, what: &str) -> String {
+        // Give the stderr reader a moment to collect the last words.
+        let status = self.child.wait().map(|s| s.to_string()).unwrap_or_else(|e| e.to_string());
+        std::thread::sleep(std::time::Duration::from_millis(50));
+        let log = self.stderr.lock().map(|l| l.clone()).unwrap_or_default();
+        format!("verilated chipset ({}) {what} ({status}):\n{}", self.build.exe.display(), tail(&log, 4000))
+    }
+
+    fn send(&mut self, line: &[u8], words: &[u32]) -> Result<(), String> {
+        let mut bytes = Vec::with_capacity(line.len() + 4 * words.len());
+        bytes.extend_from_slice(line);
+        for w in words {
+            bytes.extend_from_slice(&w.to_le_bytes());
+        }
+        if self.to_sim.write_all(&bytes).and_then(|_| self.to_sim.flush()).is_err() {
+            return Err(self.died("stopped taking commands"));
+        }
+        Ok(())
+    }
+
+    /// The next reply that is not a progress report; an `E` reply is the error it carries.
+    fn reply(&mut self) -> Result<Vec<String>, String> {
+        loop {
+            let mut line = String::new();
+            match self.from_sim.read_line(&mut line) {
+                Ok(0) | Err(_) => return Err(self.died("exited unexpectedly")),
+                Ok(_) => {}
+            }
+            let line = line.trim_end();
+            if let Some(m) = line.strip_prefix("E ") {
+                return Err(m.to_string());
+            }
+            if let Some(p) = line.strip_prefix("P ") {
+                let mut it = p.splitn(3, ' ');
+                let done = it.next().and_then(|s| s.parse().ok()).unwrap_or(0);
+                let total = it.next().and_then(|s| s.parse().ok()).unwrap_or(0);
+                let phase = it.next().unwrap_or("").to_string();
+                if let Some(f) = self.progress.as_mut() {
+                    f(&phase, done, total);
+                }
+                continue;
+            }
+            return Ok(line.split(' ').map(str::to_string).collect());
+        }
+    }
+
+    /// The next reply, which must have tag `tag`; returns its numeric fields.
+    fn expect(&mut self, tag: &str) -> Result<Vec<i64>, String> {
+        let f = self.reply()?;
+        if f.first().map(String::as_str) != Some(tag) {
+            return Err(format!("verilated chipset: expected a '{tag}' reply, got '{}'", f.join(" ")));
+        }
+        f[1..].iter().map(|s| s.parse::<i64>().map_err(|_| format!("verilated chipset: bad field '{s}' in '{}'", f.join(" ")))).collect()
+    }
+
+    fn words(&mut self, n: usize) -> Result<Vec<u32>, String> {
+        let mut bytes = vec![0u8; 4 * n];
+        if self.from_sim.read_exact(&mut bytes).is_err() {
+            return Err(self.died("exited in the middle of a reply"));
+        }
+        Ok(bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect())
+    }
+}
+
+impl Drop for VerilatorChipset {
+    fn drop(&mut self) {
+        let _ = self.to_sim.write_all(b"quit\n").and_then(|_| self.to_sim.flush());
+        // The harness exits on `quit` (closing its VCD); do not leave it behind if it hangs.
+        for _ in 0..200 {
+            if let Ok(Some(_)) = self.child.try_wait() {
+                return;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(10));
+        }
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// A packed port word as 32-bit words, bit 0 first (Verilator's VlWide layout).
+fn push_words<const N: usize>(b: Bits<N>, count: usize, out: &mut Vec<u32>) {
+    assert!(32 * count >= N, "{N} bits do not fit {count} words");
+    for k in 0..count {
+        let mut w = 0u32;
+        for j in 0..32 {
+            let i = 32 * k + j;
+            if i < N && b.get_bit(i) {
+                w |= 1 << j;
+            }
+        }
+        out.push(w);
+    }
+}
+
+/// An RC result word (`RcResult`'s bits) in the golden model's terms; `None` for end of frame.
+pub fn result_of(word: u32) -> Option<TriResult> {
+    let r = RcResult::default();
+    let bit = |o: usize| (word >> o) & 1 == 1;
+    if bit(r.get_my_offset_eof()) {
+        return None;
+    }
+    let (zero_area, culled) = (bit(r.get_my_offset_zero_area()), bit(r.get_my_offset_culled()));
+    Some(TriResult {
+        index: (word >> r.get_my_offset_index()) & ((1 << r.get_my_width_index()) - 1),
+        culled: if zero_area {
+            Some(Culled::ZeroArea)
+        } else if culled {
+            Some(Culled::Facing)
+        } else {
+            None
+        },
+        visible: bit(r.get_my_offset_visible()),
+    })
+}
+
+impl Chipset for VerilatorChipset {
+    fn rasterize(&mut self, tris: &[RcCommand], cull: CullMode, front: FrontFace) -> Result<Vec<TriResult>, String> {
+        let mut cmds = vec![RcCmd::frame(!self.cleared)];
+        for t in tris {
+            cmds.push(RcCmd::triangle(t.index, t.v, cull, front)?);
+        }
+        cmds.push(RcCmd::end_of_frame());
+        let mut words = Vec::with_capacity(RC_WORDS * cmds.len());
+        for c in &cmds {
+            let b: Bits<{ hdl::rc::RcCommand::BITS }> = command_word(c).into();
+            push_words(b, RC_WORDS, &mut words);
+        }
+        let start = self.cycle;
+        self.frame_start = start;
+        let budget = self.budget(self.screen.pixels() as u64 + 64 * tris.len() as u64);
+        self.send(format!("raster {} {budget}\n", cmds.len()).as_bytes(), &words)?;
+        let f = self.expect("R")?;
+        let [cycle, clear_writes, first_tri_taken, last_cmd_taken, n] = f[..] else {
+            return Err(format!("verilated chipset: bad raster reply {f:?}"));
+        };
+        let raw = self.words(n as usize)?;
+        let pixels = self.screen.pixels();
+        self.ibuf_after_raster = self.words(pixels)?;
+        self.zbuf_after_raster = self.words(pixels)?;
+        self.cycle = cycle as u64;
+        let results: Vec<TriResult> = raw.iter().filter_map(|&w| result_of(w)).collect();
+        if results.len() != tris.len() {
+            return Err(format!("chipset: {} results for {} triangles", results.len(), tris.len()));
+        }
+        let last = last_cmd_taken as u64;
+        let t0 = if first_tri_taken < 0 { last } else { first_tri_taken as u64 };
+        self.phases.clear = clear_writes as u64;
+        self.phases.geometry_transfer = last - t0;
+        self.phases.rasterization = self.cycle - start;
+        Ok(results)
+    }
+
+    fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String> {
+        let mut words = Vec::with_capacity(SETUP_WORDS * cmds.len());
+        for c in cmds {
+            let b: Bits<{ hdl::cs::SetupCommand::BITS }> = command_of(&SetupCmd::from_command(c)?).into();
+            push_words(b, SETUP_WORDS, &mut words);
+        }
+        let start = self.cycle;
+        let budget = self.budget(64 * cmds.len() as u64);
+        self.send(format!("setup {} {budget}\n", cmds.len()).as_bytes(), &words)?;
+        let f = self.expect("S")?;
+        self.cycle = *f.first().ok_or("verilated chipset: bad setup reply")? as u64;
+        self.phases.colour_setup = self.cycle - start;
+        Ok(())
+    }
+
+    fn scanout(&mut self, shading: Shading, _lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String> {
+        if shading == Shading::Phong {
+            return Err("--backend verilator: the RTL Color Shader evaluates flat and Gouraud planes; Phong lighting per pixel is only in the golden model".into());
+        }
+        let pixels = self.screen.pixels();
+        let start = self.cycle;
+        let budget = self.budget(pixels as u64);
+        self.send(format!("scan {} {budget}\n", tdata_of(background)).as_bytes(), &[])?;
+        let f = self.expect("O")?;
+        let [cycle, n] = f[..] else {
+            return Err(format!("verilated chipset: bad scan-out reply {f:?}"));
+        };
+        let tdata = self.words(n as usize)?;
+        if tdata.len() != pixels {
+            return Err(format!("chipset: scan-out produced {} of {pixels} pixels", tdata.len()));
+        }
+        self.cycle = cycle as u64;
+        self.phases.scan_out = self.cycle - start;
+        self.phases.total = self.cycle - self.frame_start;
+        self.cleared = true;
+        let rgb = tdata.iter().flat_map(|&t| rgb_of(t)).collect();
+        Ok(ScanOut { rgb, ibuf: self.ibuf_after_raster.clone(), zbuf: self.zbuf_after_raster.clone() })
+    }
+}

@@ -1,0 +1,270 @@
+//! Whole frames through the generated Verilog of the `chipset` top under Verilator
+//! (`tb::verilator::VerilatorChipset`), driven by the golden model's host program: equal to the
+//! algorithmic golden model byte for byte, and cycle for cycle equal to the RustHDL simulation of the
+//! same top (`tb::chipset::RtlChipset`). Skipped, with a printed message, where `verilator` is not
+//! installed (the test script installs it).
+
+use golden::format::Screen;
+use golden::host::{Camera, Lighting};
+use golden::raster::{CullMode, FrontFace};
+use golden::render::{render, render_with, Chipset, Frame, RenderOptions};
+use golden::scene::{builtin, Mesh, Winding};
+use golden::shade::{PhongLights, Shading};
+use tb::chipset::RtlChipset;
+use tb::common::{have_tool, vcd_path};
+use tb::verilator::VerilatorChipset;
+
+fn verilator_missing(test: &str) -> bool {
+    if have_tool("verilator") {
+        return false;
+    }
+    eprintln!("SKIPPED {test}: `verilator` is not on PATH (apt-get install verilator)");
+    true
+}
+
+fn options(mesh: &Mesh, screen: Screen, shading: Shading) -> RenderOptions {
+    RenderOptions {
+        screen,
+        camera: Camera::default_view(mesh, screen),
+        shading,
+        cull: CullMode::Back,
+        front: match mesh.front_face {
+            Winding::Ccw => FrontFace::Ccw,
+            Winding::Cw => FrontFace::Cw,
+        },
+        lighting: Lighting::default(),
+        index_bits: 16,
+        background: [24, 24, 40],
+    }
+}
+
+/// The first difference between two frames, named by buffer and pixel.
+fn first_difference(a: &Frame, b: &Frame) -> Option<String> {
+    let w = a.screen.width as usize;
+    for (what, x, y) in [("I-buffer", &a.hw_index, &b.hw_index), ("Z-buffer", &a.zbuf, &b.zbuf), ("index", &a.index, &b.index)] {
+        if x.len() != y.len() {
+            return Some(format!("{what}: {} words vs {}", x.len(), y.len()));
+        }
+        if let Some(i) = (0..x.len()).find(|&i| x[i] != y[i]) {
+            return Some(format!("{what} at ({}, {}): {:#x} vs {:#x}", i % w, i / w, x[i], y[i]));
+        }
+    }
+    if a.rgb.len() != b.rgb.len() {
+        return Some(format!("image: {} bytes vs {}", a.rgb.len(), b.rgb.len()));
+    }
+    if let Some(i) = (0..a.rgb.len() / 3).find(|&i| a.rgb[3 * i..3 * i + 3] != b.rgb[3 * i..3 * i + 3]) {
+        return Some(format!("colour at ({}, {}): {:?} vs {:?}", i % w, i / w, &a.rgb[3 * i..3 * i + 3], &b.rgb[3 * i..3 * i + 3]));
+    }
+    if a.results != b.results {
+        let k = a.results.iter().zip(&b.results).position(|(p, q)| p != q).unwrap_or(a.results.len().min(b.results.len()));
+        return Some(format!("per-triangle result {k}: {:?} vs {:?}", a.results.get(k), b.results.get(k)));
+    }
+    if a.stats != b.stats {
+        return Some(format!("statistics: {:?} vs {:?}", a.stats, b.stats));
+    }
+    None
+}
+
+#[test]
+fn teapot_at_320x200_through_the_verilated_chipset_equals_the_golden_frame() {
+    if verilator_missing("teapot through Verilator") {
+        return;
+    }
+    let screen = Screen::new(320, 200).unwrap();
+    let mesh = builtin::teapot(builtin::TEAPOT_GRID);
+    let opts = options(&mesh, screen, Shading::Gouraud);
+    let golden = render(&mesh, &opts).unwrap();
+    let mut chip = VerilatorChipset::new(screen, None).unwrap();
+    let t0 = std::time::Instant::now();
+    let vl = render_with(&mesh, &opts, &mut chip).unwrap_or_else(|e| panic!("teapot: Verilator run failed: {e}"));
+    let secs = t0.elapsed().as_secs_f64();
+    if let Some(d) = first_difference(&golden, &vl) {
+        panic!("teapot through Verilator differs from the golden model (golden vs Verilator): {d}");
+    }
+    let p = &chip.phases;
+    assert_eq!(p.clear, screen.pixels() as u64, "the first frame clears every pixel once");
+    assert_eq!(p.total, p.rasterization + p.colour_setup + p.scan_out);
+    assert!(vl.stats.flagged_visible > 0, "nothing flagged visible");
+    eprintln!(
+        "teapot 320x200 through Verilator: {p:?}; {secs:.2} s for the frame ({:.0} cycles/s), harness build {:.1} s (fresh: {})",
+        p.total as f64 / secs,
+        chip.build.seconds,
+        chip.build.fresh
+    );
+}
+
+#[test]
+fn polyhedron_cycles_per_phase_through_verilator_equal_the_rusthdl_simulations() {
+    if verilator_missing("polyhedron cycles, Verilator vs RustHDL") {
+        return;
+    }
+    let screen = Screen::new(64, 48).unwrap();
+    let mesh = builtin::polyhedron();
+    let opts = options(&mesh, screen, Shading::Gouraud);
+    let mut rtl = RtlChipset::new(screen, None).unwrap();
+    let a = render_with(&mesh, &opts, &mut rtl).unwrap();
+    let mut vl = VerilatorChipset::new(screen, None).unwrap();
+    let b = render_with(&mesh, &opts, &mut vl).unwrap();
+    if let Some(d) = first_difference(&a, &b) {
+        panic!("polyhedron 64x48: RustHDL vs Verilator: {d}");
+    }
+    assert_eq!(rtl.phases, vl.phases, "cycles per phase: RustHDL (left) vs Verilator (right)");
+    assert_eq!(rtl.cycle, vl.cycle, "cycles since reset");
+    let golden = render(&mesh, &opts).unwrap();
+    assert!(first_difference(&golden, &b).is_none(), "polyhedron 64x48 through Verilator differs from golden");
+    eprintln!("polyhedron 64x48: {:?} in both simulations", vl.phases);
+}
+
+#[test]
+fn a_second_verilated_frame_uses_the_buffers_the_color_shader_cleared_behind_the_first() {
+    if verilator_missing("second frame through Verilator") {
+        return;
+    }
+    // Castle, then dolphins, on the same chipset: no RC clear in the second frame; both simulations
+    // count the same cycles for it, and its frame equals the golden one.
+    let screen = Screen::new(64, 48).unwrap();
+    let castle = builtin::scene("castle").unwrap();
+    let dolphins = builtin::scene("dolphins").unwrap();
+    let (o1, o2) = (options(&castle, screen, Shading::Gouraud), options(&dolphins, screen, Shading::Flat));
+    let mut vl = VerilatorChipset::new(screen, None).unwrap();
+    render_with(&castle, &o1, &mut vl).unwrap();
+    let second = render_with(&dolphins, &o2, &mut vl).unwrap();
+    assert_eq!(vl.phases.clear, 0, "the second frame needs no clear");
+    if let Some(d) = first_difference(&render(&dolphins, &o2).unwrap(), &second) {
+        panic!("second frame through Verilator (golden vs Verilator): {d}");
+    }
+    let mut rtl = RtlChipset::new(screen, None).unwrap();
+    render_with(&castle, &o1, &mut rtl).unwrap();
+    render_with(&dolphins, &o2, &mut rtl).unwrap();
+    assert_eq!(rtl.phases, vl.phases, "second frame's cycles: RustHDL (left) vs Verilator (right)");
+}
+
+#[test]
+fn phong_and_an_unwritable_vcd_path_are_clear_errors_through_verilator() {
+    if verilator_missing("Verilator bad input") {
+        return;
+    }
+    let screen = Screen::new(64, 48).unwrap();
+    let mut vl = VerilatorChipset::new(screen, None).unwrap();
+    let e = vl.scanout(Shading::Phong, &PhongLights { l: vec![], h: vec![], materials: vec![] }, [0, 0, 0]).err().expect("Phong must be refused");
+    assert!(e.contains("Phong"), "{e}");
+    // An unwritable VCD path is named.
+    let e = VerilatorChipset::new(screen, Some("/nonexistent-dir/x.vcd".into())).err().expect("bad VCD path must fail");
+    assert!(e.contains("/nonexistent-dir/x.vcd"), "{e}");
+}
+
+/// A VCD as a list of (time, full state after that time's changes) of its variables, each variable
+/// named by its path under the root scope joined with `$` (RustHDL's sub-scope `rc_cmd` with field
+/// `data$kind` becomes `rc_cmd$data$kind`). Values are bit strings, most significant bit first.
+struct Waves {
+    names: Vec<(String, usize)>,
+    states: Vec<(u64, Vec<Vec<bool>>)>,
+}
+
+fn parse_vcd(text: &str) -> Waves {
+    let (head, body) = text.split_at(text.find("$enddefinitions").expect("no $enddefinitions"));
+    let mut scopes: Vec<String> = Vec::new();
+    let mut names = Vec::new();
+    let mut codes: std::collections::HashMap<String, Vec<usize>> = Default::default();
+    let tokens: Vec<&str> = head.split_whitespace().collect();
+    let mut i = 0;
+    while i < tokens.len() {
+        match tokens[i] {
+            "$scope" => {
+                scopes.push(tokens[i + 2].to_string());
+                i += 3;
+            }
+            "$upscope" => {
+                scopes.pop();
+                i += 1;
+            }
+            "$var" => {
+                let (width, code, name) = (tokens[i + 2].parse::<usize>().unwrap(), tokens[i + 3], tokens[i + 4]);
+                let path: Vec<&str> = scopes[1..].iter().map(String::as_str).chain([name]).collect();
+                codes.entry(code.to_string()).or_default().push(names.len());
+                names.push((path.join("$"), width));
+                i += 5;
+            }
+            _ => i += 1,
+        }
+    }
+    let mut state: Vec<Vec<bool>> = names.iter().map(|(_, w)| vec![false; *w]).collect();
+    let mut states = Vec::new();
+    let mut time: Option<u64> = None;
+    let set = |state: &mut Vec<Vec<bool>>, code: &str, bits: &str| {
+        for &k in codes.get(code).unwrap_or_else(|| panic!("unknown VCD code {code}")) {
+            let w = state[k].len();
+            let v: Vec<bool> = bits.chars().map(|c| c == '1').collect();
+            // Left-extend with zeros (VCD drops leading zeros).
+            state[k] = (0..w).map(|j| if j + v.len() >= w { v[j + v.len() - w] } else { false }).collect();
+        }
+    };
+    let mut toks = body.split_whitespace().skip(2);
+    while let Some(t) = toks.next() {
+        if let Some(ts) = t.strip_prefix('#') {
+            if let Some(prev) = time {
+                states.push((prev, state.clone()));
+            }
+            time = Some(ts.parse().unwrap());
+        } else if let Some(bits) = t.strip_prefix('b') {
+            set(&mut state, toks.next().unwrap(), bits);
+        } else if let Some(code) = t.strip_prefix(['0', '1']) {
+            set(&mut state, code, &t[..1]);
+        }
+    }
+    if let Some(prev) = time {
+        states.push((prev, state));
+    }
+    Waves { names, states }
+}
+
+impl Waves {
+    /// The value of a port at each time: the variables named `port` or `port$field...`, concatenated
+    /// in declaration order, first one in the least significant bits (LogicStruct packing).
+    fn port(&self, port: &str) -> Vec<(u64, Vec<bool>)> {
+        let parts: Vec<usize> = (0..self.names.len()).filter(|&k| self.names[k].0 == port || self.names[k].0.starts_with(&format!("{port}$"))).collect();
+        assert!(!parts.is_empty(), "no variable for port {port}");
+        self.states
+            .iter()
+            .map(|(t, s)| {
+                // LSB first: each field's bits reversed, fields in order.
+                let lsb_first: Vec<bool> = parts.iter().flat_map(|&k| s[k].iter().rev().copied()).collect();
+                (*t, lsb_first)
+            })
+            .collect()
+    }
+}
+
+#[test]
+fn the_verilated_chipsets_port_waveforms_equal_the_rusthdl_simulations_at_every_half_cycle() {
+    if verilator_missing("Verilator vs RustHDL waveforms") {
+        return;
+    }
+    let screen = Screen::new(16, 8).unwrap();
+    let mesh = builtin::polyhedron();
+    let opts = options(&mesh, screen, Shading::Gouraud);
+    let (pr, pv) = (vcd_path("chipset_verilator", "polyhedron_16x8_rusthdl"), vcd_path("chipset_verilator", "polyhedron_16x8_verilator"));
+    let mut rtl = RtlChipset::new(screen, Some(pr.clone())).unwrap();
+    render_with(&mesh, &opts, &mut rtl).unwrap();
+    rtl.finish_vcd();
+    let mut vl = VerilatorChipset::new(screen, Some(pv.clone())).unwrap();
+    render_with(&mesh, &opts, &mut vl).unwrap();
+    vl.finish_vcd();
+    let (a, b) = (parse_vcd(&std::fs::read_to_string(&pr).unwrap()), parse_vcd(&std::fs::read_to_string(&pv).unwrap()));
+    assert_eq!(b.names.len(), 38, "the Verilator VCD holds the 38 ports and nothing else: {:?}", b.names);
+    for (port, width) in &b.names {
+        let (x, y) = (a.port(port), b.port(port));
+        assert_eq!(x.len(), y.len(), "{port}: {} vs {} timestamps", x.len(), y.len());
+        for ((t, u), (s, v)) in x.iter().zip(&y) {
+            assert_eq!(t, s, "{port}: timestamps differ");
+            assert_eq!(u.len(), *width, "{port}: RustHDL fields make {} bits, the Verilog port {width}", u.len());
+            if u != v {
+                let hex = |bits: &Vec<bool>| (0..bits.len().div_ceil(4)).rev().map(|d| char::from_digit((0..4).filter(|j| bits.get(4 * d + j) == Some(&true)).map(|j| 1 << j).sum(), 16).unwrap()).collect::<String>();
+                panic!("{port} at time {t}: RustHDL {} Verilator {} ({} and {})", hex(u), hex(v), pr.display(), pv.display());
+            }
+        }
+    }
+    // The last rising edge of the frame is at 10 * (cycles - 1) + 5 in both.
+    assert_eq!(b.states.last().map(|s| s.0), Some(10 * (vl.cycle - 1) + 5), "last VCD time vs {} cycles", vl.cycle);
+    eprintln!("{} ports equal at {} timestamps ({} cycles)", b.names.len(), b.states.len(), vl.cycle);
+}
