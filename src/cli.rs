@@ -24,6 +24,10 @@ pub enum Command {
     Verilog(crate::verilog::VerilogArgs),
     /// Reproduce the seeds' analysis (lighting operations, CPU cost, buffer sizes, bandwidth).
     Analyze(crate::analyze::AnalyzeArgs),
+    /// Synthesize and place and route the tops on iCE40 UP5K/HX8K; write a utilisation and Fmax table.
+    FpgaReport(crate::fpga::FpgaArgs),
+    /// Compare two VCD traces of the same top cycle by cycle on its ports; report the first difference.
+    VcdDiff(crate::vcd_diff::VcdDiffArgs),
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -225,6 +229,8 @@ pub fn run(cli: Cli) -> Result<(), String> {
         Command::Render(args) => run_render(&args),
         Command::Verilog(args) => crate::verilog::run(&args),
         Command::Analyze(args) => crate::analyze::run(&args),
+        Command::FpgaReport(args) => crate::fpga::run(&args),
+        Command::VcdDiff(args) => crate::vcd_diff::run(&args),
     }
 }
 

@@ -6,9 +6,11 @@
 
 mod analyze;
 mod cli;
+mod fpga;
 mod output;
 mod proof;
 mod render;
+mod vcd_diff;
 mod verilog;
 
 use clap::Parser;

@@ -109,6 +109,15 @@ fn run(cmd: &mut Command, what: &str) -> Result<String, String> {
 /// Build the testbench with the RC for `screen` (once per screen and simulator; reused if built) and
 /// replay `vectors`; returns the number of cycles checked.
 pub fn replay(sim: Simulator, screen: Screen, vectors: &Path) -> Result<u64, String> {
+    replay_dumping(sim, screen, vectors, None)
+}
+
+/// As [`replay`]; with `vcd` (Icarus only) the testbench also dumps the ports and top-level nets of
+/// the `rc` instance (`$dumpvars(1, dut)`) into that file, for `idxrender vcd-diff`.
+pub fn replay_dumping(sim: Simulator, screen: Screen, vectors: &Path, vcd: Option<&Path>) -> Result<u64, String> {
+    if vcd.is_some() && sim != Simulator::Icarus {
+        return Err("replay: VCD dumping is wired for Icarus only".into());
+    }
     let tag = format!("rc_replay_{}x{}_{:?}", screen.width, screen.height, sim).to_lowercase();
     let dir = scratch_dir(&tag);
     let rc_v = write_rc_verilog(screen, &dir)?;
@@ -116,12 +125,19 @@ pub fn replay(sim: Simulator, screen: Screen, vectors: &Path) -> Result<u64, Str
     let plusarg = format!("+vectors={}", vectors.display());
     let text = match sim {
         Simulator::Icarus => {
-            let exe = dir.join("tb_rc.vvp");
-            run(
-                Command::new("iverilog").args(["-g2012", "-o"]).arg(&exe).arg(format!("-Ptb_rc.WORDS={words}")).arg(harness()).arg(&rc_v),
-                "iverilog",
-            )?;
-            run(Command::new("vvp").arg("-n").arg(&exe).arg(&plusarg), "vvp")?
+            let exe = dir.join(if vcd.is_some() { "tb_rc_vcd.vvp" } else { "tb_rc.vvp" });
+            let mut c = Command::new("iverilog");
+            c.args(["-g2012", "-o"]).arg(&exe).arg(format!("-Ptb_rc.WORDS={words}"));
+            if vcd.is_some() {
+                c.arg("-DDUMP_VCD");
+            }
+            run(c.arg(harness()).arg(&rc_v), "iverilog")?;
+            let mut c = Command::new("vvp");
+            c.arg("-n").arg(&exe).arg(&plusarg);
+            if let Some(v) = vcd {
+                c.arg(format!("+vcd={}", v.display()));
+            }
+            run(&mut c, "vvp")?
         }
         Simulator::Verilator => {
             let obj = dir.join("obj");

@@ -26,6 +26,15 @@ module tb_rc;
          .z_re(z_re), .z_rd_addr(z_rd_addr), .z_we(z_we), .z_wr_addr(z_wr_addr), .z_wr_data(z_wr_data),
          .z_rd_data(z_rd_data), .i_we(i_we), .i_wr_addr(i_wr_addr), .i_wr_data(i_wr_data));
 
+`ifdef DUMP_VCD
+  // With -DDUMP_VCD and +vcd=FILE: the ports and top-level nets of the rc instance, for `idxrender vcd-diff`.
+  reg [8*1024-1:0] vcd_path;
+  initial if ($value$plusargs("vcd=%s", vcd_path)) begin
+    $dumpfile(vcd_path);
+    $dumpvars(1, dut);
+  end
+`endif
+
   always @(posedge clock) begin
     if (z_re) z_rd_data <= zmem[z_rd_addr];
     if (z_we) zmem[z_wr_addr] <= z_wr_data;

@@ -1,0 +1,544 @@
+//! `idxrender fpga-report`: out-of-context utilisation and timing of the RTL tops on iCE40 parts.
+//!
+//! For each top and device: yosys `synth_ice40` (with `-dsp` on the UP5K; the HX8K has no SB_MAC16,
+//! so there the multipliers are built from LUTs), then `nextpnr-ice40` place and route with a fixed
+//! seed; the cell counts come from yosys's `stat` of the top's own module, Fmax and the critical path
+//! from nextpnr's log, and a placement failure is reported with its reason.
+//!
+//! **Pins.** The tops have hundreds of port bits (the TdbS record alone is 424), far more than any
+//! iCE40 package has pins. As is usual for an out-of-context report, each top is placed inside a thin
+//! generated wrapper `fpga_<top>` with 10 pins: `clock`, a serial input `fpga_si` that feeds a shift
+//! register driving every input bit of the top, and 8 registered outputs `fpga_so`, each the XOR of
+//! an eighth of the top's output bits. Every input is thus controllable and every output observable,
+//! so synthesis cannot remove any of the top's logic, and every timing path inside the top starts
+//! and ends at a register. The top is kept as its own module (`keep_hierarchy`), so its cell counts
+//! are its own; the wrapper's (one FF per input bit, an XOR tree) are reported separately, and the
+//! device utilisation nextpnr reports includes them. Paths from the top's combinational outputs run
+//! through the wrapper's XOR tree (at most ceil(log4(bits/8)) + 1 LUT levels) before a register,
+//! which can only lower the reported Fmax, never raise it.
+//!
+//! The screen-size buffers are outside the tops by construction (their ports are top-level ports);
+//! the report checks that no top holds a memory array of screen size all the same.
+
+use crate::verilog::{parse_ports, selected_tops, verilog_facts, Dir, Port};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Device {
+    /// iCE40 UP5K, package SG48: 5280 LCs, 30 BRAM, 8 DSP.
+    Up5k,
+    /// iCE40 HX8K, package CT256: 7680 LCs, 32 BRAM, no DSP.
+    Hx8k,
+}
+
+impl Device {
+    fn name(self) -> &'static str {
+        match self {
+            Device::Up5k => "up5k",
+            Device::Hx8k => "hx8k",
+        }
+    }
+    fn nextpnr_args(self) -> [&'static str; 3] {
+        match self {
+            Device::Up5k => ["--up5k", "--package", "sg48"],
+            Device::Hx8k => ["--hx8k", "--package", "ct256"],
+        }
+    }
+    /// Whether yosys may map multipliers to SB_MAC16 (only the UltraPlus parts have them).
+    fn dsp(self) -> bool {
+        self == Device::Up5k
+    }
+}
+
+#[derive(clap::Args, Debug)]
+pub struct FpgaArgs {
+    /// One top (of `hdl::TOPS`); all of them when left out.
+    #[arg(long)]
+    pub block: Option<String>,
+    /// Devices to place and route on (repeat or comma-separate); both when left out.
+    #[arg(long, value_enum, value_delimiter = ',')]
+    pub device: Vec<Device>,
+    /// The Markdown table to write.
+    #[arg(long, default_value = "out/fpga-report.md")]
+    pub out: PathBuf,
+    /// nextpnr's placer seed (fixed, so that a rerun gives the same figures).
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Clock target given to nextpnr, MHz (timing-driven placement aims at it; Fmax is what it reaches).
+    #[arg(long, default_value_t = 100.0)]
+    pub freq: f64,
+    /// Limit per tool run (yosys or nextpnr), seconds.
+    #[arg(long, default_value_t = 3600)]
+    pub timeout: u64,
+    /// Scratch directory for the Verilog, netlists and logs.
+    #[arg(long, default_value = "target/fpga")]
+    pub work: PathBuf,
+}
+
+/// Cell counts of one module in yosys's `stat`.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Cells {
+    pub lut4: u64,
+    pub ff: u64,
+    pub carry: u64,
+    pub bram: u64,
+    pub dsp: u64,
+    /// Cells that are none of the above (SB_IO, SB_GB, ... or unmapped ones).
+    pub other: Vec<(String, u64)>,
+}
+
+/// The cells of module `module` in the last `stat` of a yosys log.
+pub fn parse_stat(log: &str, module: &str) -> Option<Cells> {
+    let head = format!("=== {module} ===");
+    let at = log.rfind(&head)?;
+    let section = &log[at + head.len()..];
+    let section = &section[..section.find("===").unwrap_or(section.len())];
+    let mut c = Cells::default();
+    let mut seen = false;
+    for l in section.lines() {
+        let mut it = l.split_whitespace();
+        let (Some(name), Some(n), None) = (it.next(), it.next(), it.next()) else { continue };
+        let Ok(n) = n.parse::<u64>() else { continue };
+        if name.starts_with("SB_DFF") {
+            c.ff += n;
+        } else {
+            match name {
+                "SB_LUT4" => c.lut4 += n,
+                "SB_CARRY" => c.carry += n,
+                "SB_RAM40_4K" => c.bram += n,
+                "SB_MAC16" => c.dsp += n,
+                _ if name.starts_with("SB_") || name.starts_with('$') => c.other.push((name.to_string(), n)),
+                _ => {}
+            }
+        }
+        seen = true;
+    }
+    seen.then_some(c)
+}
+
+/// What nextpnr said.
+#[derive(Clone, Debug, Default)]
+pub struct PnrResult {
+    /// Fmax of `clock` after routing, MHz.
+    pub fmax: Option<f64>,
+    /// "does not fit: ..." or another failure, when there is no Fmax.
+    pub failure: Option<String>,
+    /// (resource, used, available) from "Device utilisation".
+    pub utilisation: Vec<(String, u64, u64)>,
+    /// One line: from cell, to cell, first and last net, delay split.
+    pub critical_path: Option<String>,
+}
+
+const RESOURCE_NAMES: &[(&str, &str)] = &[("ICESTORM_LC", "LC"), ("ICESTORM_RAM", "BRAM"), ("ICESTORM_DSP", "DSP (MAC16)"), ("SB_IO", "IO")];
+
+/// Read a nextpnr-ice40 log.
+pub fn parse_nextpnr(log: &str) -> PnrResult {
+    let mut r = PnrResult::default();
+    // The utilisation table ("Info: \t ICESTORM_LC:  2409/ 5280    45%"), printed before packing fails or succeeds.
+    for l in log.lines() {
+        let t = l.trim_start_matches("Info:").trim();
+        if let Some((name, rest)) = t.split_once(':') {
+            if let Some((u, a)) = rest.split_once('/') {
+                let used = u.trim().parse::<u64>();
+                let avail = a.split_whitespace().next().and_then(|x| x.parse::<u64>().ok());
+                if let (Ok(used), Some(avail)) = (used, avail) {
+                    if !name.contains(' ') && !r.utilisation.iter().any(|x| x.0 == name) {
+                        r.utilisation.push((name.to_string(), used, avail));
+                    }
+                }
+            }
+        }
+    }
+    // "Max frequency for clock 'clock$SB_IO_IN_$glb_clk': 57.88 MHz (...)", the last one (after routing);
+    // other "clocks" (a MAC16's constant clock, '$PACKER_GND_NET') are not the design's.
+    r.fmax = log.lines().rev().find_map(|l| {
+        let (_, x) = l.split_once("Max frequency for clock")?;
+        let (name, x) = x.trim().trim_start_matches('\'').split_once("': ")?;
+        if !name.starts_with("clock") {
+            return None;
+        }
+        x.split_whitespace().next()?.parse::<f64>().ok()
+    });
+    let over: Vec<String> = r
+        .utilisation
+        .iter()
+        .filter(|(_, u, a)| u > a)
+        .map(|(n, u, a)| format!("needs {u} {}, device has {a}", RESOURCE_NAMES.iter().find(|x| x.0 == n).map(|x| x.1).unwrap_or(n)))
+        .collect();
+    // A missed clock target is not a failure here (`--timing-allow-fail`; older logs say "ERROR: Max frequency ... FAIL").
+    if let Some(err) = log.lines().find(|l| l.starts_with("ERROR:") && !l.contains("Max frequency for clock")) {
+        r.fmax = None;
+        r.failure = Some(if !over.is_empty() {
+            format!("does not fit: {}", over.join("; "))
+        } else {
+            let e = err.trim_start_matches("ERROR:").trim();
+            let e: String = e.chars().take(160).collect();
+            format!("failed: {e}")
+        });
+    }
+    r.critical_path = critical_path(log);
+    r
+}
+
+/// The last clock-to-clock critical path of the log in one line.
+fn critical_path(log: &str) -> Option<String> {
+    let at = log.rfind("Critical path report for clock 'clock")?;
+    let block = &log[at..];
+    let block = &block[..block.find("\nInfo: \n").or_else(|| block.find("\n\n")).unwrap_or(block.len())];
+    let fields = |key: &str| -> Vec<String> {
+        block
+            .lines()
+            .filter_map(|l| {
+                let t = l.trim_start_matches("Info:").trim();
+                let mut it = t.split_whitespace();
+                // "1.4  1.4  Source cell.O" / "1.8  3.2    Net name budget ..." / "Sink cell.I1"
+                let words: Vec<&str> = it.by_ref().take(4).collect();
+                let k = words.iter().position(|w| *w == key)?;
+                words.get(k + 1).map(|s| s.to_string())
+            })
+            .collect()
+    };
+    let (sources, nets, sinks) = (fields("Source"), fields("Net"), fields("Sink"));
+    let split = block.lines().find_map(|l| {
+        let t = l.trim_start_matches("Info:").trim();
+        t.contains("ns logic").then(|| t.to_string())
+    })?;
+    Some(format!(
+        "from `{}` to `{}`; nets `{}` .. `{}`; {}",
+        sources.first()?,
+        sinks.last()?,
+        nets.first().map(String::as_str).unwrap_or("-"),
+        nets.last().map(String::as_str).unwrap_or("-"),
+        split
+    ))
+}
+
+/// The wrapper `fpga_<top>` around a top: see the module doc.
+pub fn wrapper(top: &str, ports: &[Port]) -> String {
+    let inputs: Vec<&Port> = ports.iter().filter(|p| p.dir == Dir::In && p.name != "clock").collect();
+    let outputs: Vec<&Port> = ports.iter().filter(|p| p.dir == Dir::Out).collect();
+    let nin: usize = inputs.iter().map(|p| p.width).sum();
+    let nout: usize = outputs.iter().map(|p| p.width).sum();
+    let mut s = String::new();
+    let _ = writeln!(s, "// Out-of-context wrapper for `{top}` (idxrender fpga-report): {nin} input bits from a shift register fed by fpga_si,");
+    let _ = writeln!(s, "// {nout} output bits XOR-folded into 8 registered pins; keeps every input controllable and every output observable.");
+    let _ = writeln!(s, "module fpga_{top}(input wire clock, input wire fpga_si, output reg [7:0] fpga_so);");
+    let sh = nin.max(1);
+    let _ = writeln!(s, "  reg [{}:0] fpga_sh = {sh}'d0;", sh - 1);
+    if sh == 1 {
+        let _ = writeln!(s, "  always @(posedge clock) fpga_sh <= fpga_si;");
+    } else {
+        let _ = writeln!(s, "  always @(posedge clock) fpga_sh <= {{fpga_sh[{}:0], fpga_si}};", sh - 2);
+    }
+    let mut conns = vec![".clock(clock)".to_string()];
+    let mut off = 0;
+    for p in &inputs {
+        conns.push(format!(".{}(fpga_sh[{}:{}])", p.name, off + p.width - 1, off));
+        off += p.width;
+    }
+    let mut names = Vec::new();
+    for (k, p) in outputs.iter().enumerate() {
+        let _ = writeln!(s, "  wire [{}:0] fpga_o{k};", p.width - 1);
+        conns.push(format!(".{}(fpga_o{k})", p.name));
+        names.push(format!("fpga_o{k}"));
+    }
+    let _ = writeln!(s, "  {top} core(\n    {}\n  );", conns.join(",\n    "));
+    let lanes = 8usize;
+    let k = nout.div_ceil(lanes).max(1);
+    let padded = k * lanes;
+    names.reverse();
+    if nout == 0 {
+        let _ = writeln!(s, "  wire [{}:0] fpga_p = {padded}'d0;", padded - 1);
+    } else if padded > nout {
+        let _ = writeln!(s, "  wire [{}:0] fpga_p = {{{}'d0, {}}};", padded - 1, padded - nout, names.join(", "));
+    } else {
+        let _ = writeln!(s, "  wire [{}:0] fpga_p = {{{}}};", padded - 1, names.join(", "));
+    }
+    let _ = writeln!(s, "  initial fpga_so = 8'd0;\n  always @(posedge clock) begin");
+    for j in 0..lanes {
+        let _ = writeln!(s, "    fpga_so[{j}] <= ^fpga_p[{}:{}];", j * k + k - 1, j * k);
+    }
+    let _ = writeln!(s, "  end\nendmodule");
+    s
+}
+
+/// Run a tool with a time limit; returns (success, seconds). Output goes to the log file it is given.
+fn run_limited(cmd: &mut Command, what: &str, limit: Duration) -> Result<(bool, f64), String> {
+    let t0 = Instant::now();
+    let mut child = cmd.stdout(Stdio::null()).stderr(Stdio::null()).spawn().map_err(|e| format!("cannot run {what}: {e}"))?;
+    loop {
+        match child.try_wait().map_err(|e| format!("{what}: {e}"))? {
+            Some(status) => return Ok((status.success(), t0.elapsed().as_secs_f64())),
+            None if t0.elapsed() > limit => {
+                let _ = child.kill();
+                let _ = child.wait();
+                return Err(format!("{what}: stopped after the {} s limit (--timeout)", limit.as_secs()));
+            }
+            None => std::thread::sleep(Duration::from_millis(200)),
+        }
+    }
+}
+
+/// One row of the report.
+#[derive(Clone, Debug)]
+pub struct Row {
+    pub top: String,
+    pub device: Device,
+    pub core: Option<Cells>,
+    pub wrapper: Option<Cells>,
+    pub pnr: PnrResult,
+    pub synth_seconds: f64,
+    pub pnr_seconds: f64,
+}
+
+fn tool_version(tool: &str, arg: &str) -> String {
+    Command::new(tool)
+        .arg(arg)
+        .output()
+        .ok()
+        .map(|o| format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr)).lines().next().unwrap_or("").trim().to_string())
+        .filter(|s| !s.is_empty())
+        .unwrap_or_else(|| format!("{tool} (version unknown)"))
+}
+
+/// Internal memories this large can only be a screen-size buffer (the largest on-chip table of the
+/// design is PROOF's 1024-entry object table).
+const SCREEN_WORDS: u64 = 16384;
+
+fn report_top(top: &str, devices: &[Device], args: &FpgaArgs, dir: &Path) -> Result<Vec<Row>, String> {
+    let v = hdl::verilog_top(top)?;
+    let ports = parse_ports(&v, top)?;
+    if let Some((n, w)) = verilog_facts(&v).memories.into_iter().find(|(n, _)| *n >= SCREEN_WORDS) {
+        return Err(format!("{top} holds an internal memory of {n} x {w} bits: a screen-size buffer must be outside the core (memory ports at the top)"));
+    }
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).map_err(|e| format!("cannot write {}: {e}", dir.join(name).display()));
+    write(&format!("{top}.v"), &v)?;
+    write(&format!("fpga_{top}.v"), &wrapper(top, &ports))?;
+    let limit = Duration::from_secs(args.timeout);
+    let mut rows = Vec::new();
+    for &dev in devices {
+        let d = dev.name();
+        let flavour = if dev.dsp() { "dsp" } else { "nodsp" };
+        let json = format!("{flavour}.json");
+        let ylog = format!("yosys_{flavour}.log");
+        // One synthesis per flavour, shared by the devices that use it.
+        let (synth_ok, synth_s) = if dir.join(&json).exists() && rows.iter().any(|r: &Row| r.device.dsp() == dev.dsp()) {
+            (true, 0.0)
+        } else {
+            let _ = std::fs::remove_file(dir.join(&json));
+            let script = format!(
+                "read_verilog {top}.v fpga_{top}.v; setattr -mod -set keep_hierarchy 1 {top}; synth_ice40 {}-top fpga_{top} -json {json}; stat",
+                if dev.dsp() { "-dsp " } else { "" }
+            );
+            crate::say!("  {top} / {d}: yosys synth_ice40{} ...", if dev.dsp() { " -dsp" } else { "" });
+            run_limited(Command::new("yosys").current_dir(dir).args(["-q", "-l", &ylog, "-p", &script]), &format!("yosys on {top}"), limit)?
+        };
+        let log = std::fs::read_to_string(dir.join(&ylog)).unwrap_or_default();
+        if !synth_ok {
+            let err: String = log.lines().filter(|l| l.starts_with("ERROR")).collect::<Vec<_>>().join(" ");
+            return Err(format!("yosys failed on {top}: {err} (log: {})", dir.join(&ylog).display()));
+        }
+        let core = parse_stat(&log, top).ok_or_else(|| format!("no `stat` of module {top} in {}", dir.join(&ylog).display()))?;
+        let wrap = parse_stat(&log, &format!("fpga_{top}"));
+        crate::say!("  {top} / {d}: {} LUT4, {} FF, {} CARRY, {} BRAM, {} DSP ({synth_s:.0} s); nextpnr-ice40 ...", core.lut4, core.ff, core.carry, core.bram, core.dsp);
+        let plog = format!("nextpnr_{d}.log");
+        let _ = std::fs::remove_file(dir.join(&plog));
+        let (_, pnr_s) = run_limited(
+            Command::new("nextpnr-ice40")
+                .current_dir(dir)
+                .args(dev.nextpnr_args())
+                .args(["--json", &json, "--seed", &args.seed.to_string(), "--freq", &args.freq.to_string(), "--timing-allow-fail", "--log", &plog]),
+            &format!("nextpnr-ice40 on {top} ({d})"),
+            limit,
+        )
+        .or_else(|e| if e.contains("--timeout") { Ok((false, limit.as_secs_f64())) } else { Err(e) })?;
+        let text = std::fs::read_to_string(dir.join(&plog)).unwrap_or_default();
+        let mut pnr = parse_nextpnr(&text);
+        if pnr.fmax.is_none() && pnr.failure.is_none() {
+            pnr.failure = Some(if pnr_s >= limit.as_secs_f64() {
+                format!("nextpnr did not finish in {} s", limit.as_secs())
+            } else {
+                format!("nextpnr gave no Fmax (log: {})", dir.join(&plog).display())
+            });
+        }
+        match (&pnr.fmax, &pnr.failure) {
+            (Some(f), _) => crate::say!("  {top} / {d}: Fmax {f:.2} MHz ({pnr_s:.0} s)"),
+            (None, Some(e)) => crate::say!("  {top} / {d}: {e} ({pnr_s:.0} s)"),
+            _ => {}
+        }
+        rows.push(Row { top: top.to_string(), device: dev, core: Some(core), wrapper: wrap, pnr, synth_seconds: synth_s, pnr_seconds: pnr_s });
+    }
+    Ok(rows)
+}
+
+/// The Markdown report.
+pub fn markdown(rows: &[Row], args: &FpgaArgs, wall: f64) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# iCE40 utilisation and timing of the RTL tops\n");
+    let _ = writeln!(
+        s,
+        "Written by `idxrender fpga-report` ({}; {}), nextpnr seed {}, clock target {} MHz; wall time {:.0} s on this machine ({} CPUs).\n",
+        tool_version("yosys", "-V"),
+        tool_version("nextpnr-ice40", "--version"),
+        args.seed,
+        args.freq,
+        wall,
+        std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1)
+    );
+    let _ = writeln!(s, "Method: `yosys synth_ice40 -dsp` for the UP5K (SG48) and `synth_ice40` for the HX8K (CT256), which has no DSP blocks; `nextpnr-ice40` place and route. LUT4/FF/CARRY/BRAM/DSP are the top's own cells (yosys `stat` of its module). The top's ports do not fit any package's pins, so it is placed inside a 10-pin wrapper (a shift register drives every input bit, the outputs are XOR-folded into 8 registered pins), which keeps all of its logic; the wrapper's cells are in the \"wrapper\" column and in the device's LC count, so a top that misses a device by fewer LCs than its wrapper uses would fit without it. The top is synthesized as its own module (`keep_hierarchy`) inside the wrapper; a standalone `synth_ice40 -top <top>` can differ by a few percent in LUT4/CARRY (measured on rc with yosys 0.23: under 2% LUT4, 4% CARRY, FF and DSP equal). The Z-, I-buffer and TdbS memories are outside every top (top-level memory ports), so BRAM counts only internal tables.\n");
+    let _ = writeln!(s, "| top | device | LUT4 | FF | CARRY | BRAM | DSP | Fmax (MHz) | wrapper LUT4/FF | device LCs | time (s) |\n|---|---|---|---|---|---|---|---|---|---|---|");
+    for r in rows {
+        let c = r.core.clone().unwrap_or_default();
+        let fmax = match (&r.pnr.fmax, &r.pnr.failure) {
+            (Some(f), _) => format!("{f:.2}"),
+            (None, Some(e)) => e.clone(),
+            (None, None) => "-".into(),
+        };
+        let w = r.wrapper.as_ref().map(|w| format!("{}/{}", w.lut4, w.ff)).unwrap_or_else(|| "-".into());
+        let lc = r.pnr.utilisation.iter().find(|x| x.0 == "ICESTORM_LC").map(|x| format!("{}/{}", x.1, x.2)).unwrap_or_else(|| "-".into());
+        let _ = writeln!(
+            s,
+            "| `{}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.0} + {:.0} |",
+            r.top,
+            r.device.name(),
+            c.lut4,
+            c.ff,
+            c.carry,
+            c.bram,
+            c.dsp,
+            fmax,
+            w,
+            lc,
+            r.synth_seconds,
+            r.pnr_seconds
+        );
+    }
+    let _ = writeln!(s, "\nTime is synthesis + place and route; a synthesis shared by the devices of one flavour is counted once.\n");
+    let _ = writeln!(s, "## What limits Fmax (nextpnr's critical path, clock to clock)\n");
+    for r in rows {
+        let line = match (&r.pnr.critical_path, &r.pnr.fmax) {
+            (Some(p), Some(_)) => p.clone(),
+            _ => "not placed".into(),
+        };
+        let _ = writeln!(s, "* `{}` on {}: {}", r.top, r.device.name(), line);
+    }
+    s
+}
+
+pub fn run(args: &FpgaArgs) -> Result<(), String> {
+    let tops = selected_tops(args.block.as_deref())?;
+    for tool in ["yosys", "nextpnr-ice40"] {
+        if Command::new(tool).arg("--version").stdout(Stdio::null()).stderr(Stdio::null()).status().is_err() {
+            return Err(format!("`{tool}` is not installed or not on PATH (fpga-report needs yosys and nextpnr-ice40)"));
+        }
+    }
+    if !(args.freq > 0.0 && args.freq.is_finite()) {
+        return Err(format!("--freq {} is not a positive frequency in MHz", args.freq));
+    }
+    if args.timeout == 0 {
+        return Err("--timeout must be at least 1 second".into());
+    }
+    let devices = if args.device.is_empty() { vec![Device::Up5k, Device::Hx8k] } else { args.device.clone() };
+    let t0 = Instant::now();
+    let mut rows = Vec::new();
+    for (i, top) in tops.iter().enumerate() {
+        crate::say!("[{}/{}] {top}", i + 1, tops.len());
+        let dir = args.work.join(top);
+        rows.extend(report_top(top, &devices, args, &dir)?);
+    }
+    let md = markdown(&rows, args, t0.elapsed().as_secs_f64());
+    let (dir, name) = match (args.out.parent(), args.out.file_name()) {
+        (Some(d), Some(n)) => (if d.as_os_str().is_empty() { Path::new(".") } else { d }, n.to_string_lossy().to_string()),
+        _ => return Err(format!("--out {} is not a file path", args.out.display())),
+    };
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let path = crate::output::write_atomic(dir, &name, md.as_bytes())?;
+    crate::say!("wrote {} ({:.0} s)", path.display(), t0.elapsed().as_secs_f64());
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    // Excerpts of real nextpnr-ice40 logs (colour_setup on the UP5K; proof_shade on the UP5K).
+    const ROUTED: &str = "Info: Device utilisation:
+Info: \t         ICESTORM_LC:  5003/ 5280    94%
+Info: \t        ICESTORM_RAM:     0/   30     0%
+Info: \t        ICESTORM_DSP:     6/    8    75%
+Info: Max frequency for clock 'clock$SB_IO_IN_$glb_clk': 12.32 MHz (FAIL at 100.00 MHz)
+Info: Critical path report for clock '$PACKER_GND_NET' (posedge -> posedge):
+Info: curr total
+Info:  0.1  0.1  Source core.mul$p_SB_MAC16_O_DSP.O_30
+Info:  3.7  3.8    Net core.mul$p_SB_MAC16_O_O[30] budget 9.800000 ns (25,15) -> (25,10)
+Info:                Sink core.x_LC.I1
+Info: 0.1 ns logic, 3.7 ns routing
+
+Info: Critical path report for clock 'clock$SB_IO_IN_$glb_clk' (posedge -> posedge):
+Info: curr total
+Info:  1.4  1.4  Source core.a_DFFLC.O
+Info:  1.8  3.2    Net core.a[0] budget 80.762001 ns (9,2) -> (10,1)
+Info:                Sink core.b_LC.I1
+Info:  0.7  3.8  Source core.b_LC.COUT
+Info:  0.0  3.8    Net core.c[1] budget 0.000000 ns (10,1) -> (10,1)
+Info:                Sink core.d_DFFLC.CIN
+Info:  1.2  5.0  Setup core.d_DFFLC.CIN
+Info: 2.1 ns logic, 1.8 ns routing
+
+ERROR: Max frequency for clock 'clock$SB_IO_IN_$glb_clk': 11.80 MHz (FAIL at 100.00 MHz)
+Info: Max frequency for clock         '$PACKER_GND_NET': 256.08 MHz (PASS at 100.00 MHz)
+";
+
+    const UNPLACED: &str = "Info: Device utilisation:
+Info: \t         ICESTORM_LC:  2409/ 5280    45%
+Info: \t        ICESTORM_RAM:    12/   30    40%
+Info: \t               SB_IO:    10/   96    10%
+Info: \t        ICESTORM_DSP:    16/    8   200%
+ERROR: Unable to place cell 'core.lights$0.s01_SB_MAC16_O_DSP', no BELs remaining to implement cell type 'ICESTORM_DSP'
+";
+
+    #[test]
+    fn fmax_is_the_design_clocks_last_figure_not_a_constant_dsp_clock() {
+        let r = parse_nextpnr(ROUTED);
+        assert_eq!(r.fmax, Some(11.80));
+        assert_eq!(r.failure, None);
+        assert_eq!(r.utilisation[0], ("ICESTORM_LC".to_string(), 5003, 5280));
+        let p = r.critical_path.unwrap();
+        assert!(p.starts_with("from `core.a_DFFLC.O` to `core.d_DFFLC.CIN`; nets `core.a[0]` .. `core.c[1]`; 2.1 ns logic"), "{p}");
+    }
+
+    #[test]
+    fn a_placement_failure_names_the_resource_that_is_short() {
+        let r = parse_nextpnr(UNPLACED);
+        assert_eq!(r.fmax, None);
+        assert_eq!(r.failure.as_deref(), Some("does not fit: needs 16 DSP (MAC16), device has 8"));
+    }
+
+    #[test]
+    fn stat_counts_the_named_module_only() {
+        let log = "=== core ===\n   Number of cells: 9\n     SB_CARRY 2\n     SB_DFFE 3\n     SB_DFFSR 1\n     SB_LUT4 3\n\n=== fpga_core ===\n     SB_DFF 7\n     SB_LUT4 4\n\n=== design hierarchy ===\n";
+        let c = parse_stat(log, "core").unwrap();
+        assert_eq!((c.lut4, c.ff, c.carry, c.bram, c.dsp), (3, 4, 2, 0, 0));
+        let w = parse_stat(log, "fpga_core").unwrap();
+        assert_eq!((w.lut4, w.ff), (4, 7));
+    }
+
+    #[test]
+    fn the_wrapper_connects_every_port_bit() {
+        let ports = vec![
+            Port { name: "clock".into(), dir: Dir::In, width: 1 },
+            Port { name: "cmd$data".into(), dir: Dir::In, width: 10 },
+            Port { name: "cmd$valid".into(), dir: Dir::In, width: 1 },
+            Port { name: "out".into(), dir: Dir::Out, width: 13 },
+        ];
+        let w = wrapper("t", &ports);
+        assert!(w.contains(".cmd$data(fpga_sh[9:0])") && w.contains(".cmd$valid(fpga_sh[10:10])"), "{w}");
+        assert!(w.contains("reg [10:0] fpga_sh"), "{w}");
+        // 13 output bits in 8 lanes of 2 (3 padding bits).
+        assert!(w.contains("fpga_p = {3'd0, fpga_o0}") && w.contains("fpga_so[7] <= ^fpga_p[15:14]"), "{w}");
+    }
+}

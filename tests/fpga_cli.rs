@@ -1,0 +1,71 @@
+//! `idxrender fpga-report` on one small top and one device: yosys + nextpnr run, and the table has
+//! numeric cell counts and either an Fmax or the reason the top does not fit.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn have(tool: &str) -> bool {
+    Command::new("sh").arg("-c").arg(format!("command -v {tool}")).output().map(|o| o.status.success()).unwrap_or(false)
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let d = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target").join("test-cli").join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// The smallest top in generated Verilog lines (the PROOF shading stage today), found rather than named.
+fn smallest_top() -> &'static str {
+    hdl::TOPS.iter().map(|t| t.0).min_by_key(|t| hdl::verilog_top(t).map(|v| v.len()).unwrap_or(usize::MAX)).unwrap()
+}
+
+#[test]
+fn fpga_report_on_the_smallest_top_gives_cell_counts_and_an_fmax_or_a_reason() {
+    if !have("yosys") || !have("nextpnr-ice40") {
+        eprintln!("SKIPPED: yosys or nextpnr-ice40 is not installed (scripts/test.sh installs them)");
+        return;
+    }
+    let top = smallest_top();
+    let dir = scratch("fpga_report");
+    let out = dir.join("report.md");
+    let t0 = std::time::Instant::now();
+    let o = Command::new(env!("CARGO_BIN_EXE_idxrender"))
+        .args(["fpga-report", "--block", top, "--device", "up5k", "--timeout", "300", "--out"])
+        .arg(&out)
+        .arg("--work")
+        .arg(dir.join("work"))
+        .output()
+        .unwrap();
+    let log = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "fpga-report failed:\n{log}");
+    println!("fpga-report --block {top} --device up5k: {:.0} s\n{log}", t0.elapsed().as_secs_f64());
+    let md = std::fs::read_to_string(&out).unwrap();
+    let rows: Vec<&str> = md.lines().filter(|l| l.starts_with(&format!("| `{top}` |"))).collect();
+    assert_eq!(rows.len(), 1, "expected one row for {top} on up5k:\n{md}");
+    let cells: Vec<&str> = rows[0].split('|').map(str::trim).collect();
+    // | top | device | LUT4 | FF | CARRY | BRAM | DSP | Fmax or reason | wrapper | device LCs | time |
+    assert_eq!(cells[2], "up5k");
+    let num = |i: usize| cells[i].parse::<u64>().unwrap_or_else(|_| panic!("column {i} is not a number: {}", rows[0]));
+    let (lut, ff) = (num(3), num(4));
+    assert!(lut > 0 && ff > 0, "no logic: {}", rows[0]);
+    for i in 5..=7 {
+        num(i);
+    }
+    let fmax = cells[8];
+    assert!(fmax.parse::<f64>().is_ok_and(|f| f > 0.0) || fmax.starts_with("does not fit: needs "), "neither an Fmax nor a reason: {fmax}");
+    // The yosys log has the same count for the top's own module.
+    let ylog = std::fs::read_to_string(dir.join("work").join(top).join("yosys_dsp.log")).unwrap();
+    let section = &ylog[ylog.rfind(&format!("=== {top} ===")).unwrap()..];
+    let lut_in_log: u64 = section.lines().find_map(|l| l.trim().strip_prefix("SB_LUT4").map(|n| n.trim().parse().unwrap())).unwrap();
+    assert_eq!(lut, lut_in_log);
+}
+
+#[test]
+fn fpga_report_rejects_an_unknown_block() {
+    let dir = scratch("fpga_report_unknown");
+    let o = Command::new(env!("CARGO_BIN_EXE_idxrender")).args(["fpga-report", "--block", "nosuch", "--out"]).arg(dir.join("r.md")).output().unwrap();
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("unknown block 'nosuch'"), "{err}");
+}

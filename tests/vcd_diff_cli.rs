@@ -1,0 +1,171 @@
+//! `idxrender vcd-diff` on a real pair of traces of the same top on the same stimulus: the RustHDL
+//! simulation of `rc` (direct drive, whole hierarchy, `uut` scope, struct ports written field by
+//! field) and the generated Verilog of `rc` under Icarus replaying the vectors recorded from that run
+//! (`tb/verilator/rc/tb_rc.v`, `$dumpvars(1, dut)`: flat vector ports, different timing). They must
+//! compare equal on every port; a trace with one value changed must be reported at exactly the
+//! cycle and signal of the change.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::OnceLock;
+use tb::rc::bench::{run_rtl, Drive};
+use tb::rc::replay::{replay_dumping, Simulator, VectorWriter};
+use tb::rc::stimulus::{hand_made, hand_made_screen};
+
+fn have(tool: &str) -> bool {
+    Command::new("sh").arg("-c").arg(format!("command -v {tool}")).output().map(|o| o.status.success()).unwrap_or(false)
+}
+
+fn dir() -> PathBuf {
+    let d = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target").join("test-cli").join("vcd_diff");
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// (RustHDL trace, Icarus trace, cycles), made once for the tests of this file.
+fn traces() -> &'static (PathBuf, PathBuf, u64) {
+    static T: OnceLock<(PathBuf, PathBuf, u64)> = OnceLock::new();
+    T.get_or_init(|| {
+        // Two hand-made frames (shared edge, fill-rule corners) on the 32x24 test screen, with random
+        // gaps and back-pressure.
+        let cmds: Vec<_> = hand_made().into_iter().take(2).flat_map(|(_, c)| c).collect();
+        let drive = Drive { garbage: false, ..Drive::random("vcd_diff_pair", 0x5eed) };
+        let vectors = dir().join("pair.vec");
+        let mut w = VectorWriter::create(vectors.clone()).unwrap();
+        // run_rtl writes its VCD (target/vcd/rc/<test>.vcd) when VCD is set.
+        std::env::set_var("VCD", "1");
+        let run = run_rtl("vcd_diff_pair", hand_made_screen(), &cmds, drive, Some(&mut w)).unwrap_or_else(|e| panic!("{e}"));
+        let (vectors, cycles) = w.finish().unwrap();
+        assert_eq!(cycles, run.cycles);
+        let rusthdl = tb::common::vcd_path("rc", "vcd_diff_pair");
+        let icarus = dir().join("icarus.vcd");
+        let _ = std::fs::remove_file(&icarus);
+        let checked = replay_dumping(Simulator::Icarus, hand_made_screen(), &vectors, Some(&icarus)).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(checked, cycles);
+        (rusthdl, icarus, cycles)
+    })
+}
+
+fn vcd_diff(a: &Path, b: &Path, extra: &[&str]) -> (i32, String) {
+    let o = Command::new(env!("CARGO_BIN_EXE_idxrender")).arg("vcd-diff").arg(a).arg(b).args(extra).output().unwrap();
+    (o.status.code().unwrap_or(-1), format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr)))
+}
+
+/// The ports of `rc` (every one must be compared).
+const RC_PORTS: &[&str] = &[
+    "cmd$data", "cmd$valid", "cmd$ready", "result$data", "result$valid", "result$ready", "z_re", "z_rd_addr", "z_we", "z_wr_addr", "z_wr_data",
+    "z_rd_data", "i_we", "i_wr_addr", "i_wr_data",
+];
+
+#[test]
+fn rusthdl_and_icarus_traces_of_rc_compare_equal_on_every_port() {
+    if !have("iverilog") {
+        eprintln!("SKIPPED: iverilog is not installed (scripts/test.sh installs it)");
+        return;
+    }
+    let (rusthdl, icarus, cycles) = traces();
+    let (code, out) = vcd_diff(rusthdl, icarus, &[]);
+    assert_eq!(code, 0, "vcd-diff:\n{out}");
+    // The Icarus trace has one rising edge per replayed cycle; the RustHDL one as many.
+    assert!(out.contains(&format!("equal: {cycles} cycles")), "{out}");
+    let compared = out.lines().find_map(|l| l.strip_prefix("compared: ")).unwrap();
+    let compared: Vec<&str> = compared.split(", ").collect();
+    for p in RC_PORTS {
+        assert!(compared.contains(p), "port {p} was not compared:\n{out}");
+    }
+    // Either order, and a named subset.
+    let (code, out) = vcd_diff(icarus, rusthdl, &["--signals", "cmd$data,z_wr_data"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("compared: cmd$data, z_wr_data"), "{out}");
+    let (code, out) = vcd_diff(icarus, rusthdl, &["--signals", "no_such_port"]);
+    assert_eq!(code, 2, "{out}");
+    assert!(out.contains("no signal `no_such_port`"), "{out}");
+}
+
+/// Rising-edge times of `clock` in a VCD, read as plain text (independently of vcd-diff).
+fn rising_edges(text: &str, clock_code: &str) -> Vec<u64> {
+    let (mut t, mut clk, mut edges) = (0u64, '?', Vec::new());
+    for l in text.lines() {
+        if let Some(n) = l.strip_prefix('#') {
+            t = n.trim().parse().unwrap();
+        } else if l.len() >= 2 && l[1..] == *clock_code && (l.starts_with('0') || l.starts_with('1')) {
+            let v = l.chars().next().unwrap();
+            if v == '1' && clk == '0' {
+                edges.push(t);
+            }
+            clk = v;
+        }
+    }
+    edges
+}
+
+/// The id code of `name` declared in `text`.
+fn code_of(text: &str, name: &str) -> String {
+    text.lines()
+        .filter(|l| l.contains("$var"))
+        .find_map(|l| {
+            let w: Vec<&str> = l.split_whitespace().collect();
+            (w.len() >= 5 && (w[4] == name || w[4] == format!("\\{name}"))).then(|| w[3].to_string())
+        })
+        .unwrap_or_else(|| panic!("no $var {name}"))
+}
+
+#[test]
+fn a_trace_with_one_value_changed_is_reported_at_that_cycle_and_signal() {
+    if !have("iverilog") {
+        eprintln!("SKIPPED: iverilog is not installed (scripts/test.sh installs it)");
+        return;
+    }
+    let (rusthdl, icarus, _) = traces();
+    let text = std::fs::read_to_string(icarus).unwrap();
+    let clock = code_of(&text, "clock");
+    let sig = code_of(&text, "z_wr_addr");
+    let edges = rising_edges(&text, &clock);
+    assert!(edges.len() > 100, "too few cycles in the Icarus trace");
+    // The 5th change of z_wr_addr after the first 20 edges: flip its lowest bit.
+    let lines: Vec<&str> = text.lines().collect();
+    let (mut t, mut picked) = (0u64, None);
+    let mut seen = 0;
+    for (i, l) in lines.iter().enumerate() {
+        if let Some(n) = l.strip_prefix('#') {
+            t = n.trim().parse().unwrap();
+        } else if l.starts_with('b') && l.split_whitespace().nth(1) == Some(sig.as_str()) && t > edges[20] {
+            seen += 1;
+            if seen == 5 {
+                picked = Some((i, t));
+                break;
+            }
+        }
+    }
+    let (line, t) = picked.expect("z_wr_addr changes too rarely");
+    // The change is first seen at the first rising edge after it (values are sampled just before an
+    // edge); make sure the signal does not change again before that edge.
+    let cycle = edges.iter().position(|&e| e > t).unwrap();
+    let mut tt = t;
+    for l in &lines[line + 1..] {
+        if let Some(n) = l.strip_prefix('#') {
+            tt = n.trim().parse().unwrap();
+            if tt >= edges[cycle] {
+                break;
+            }
+        } else {
+            assert!(!(l.split_whitespace().nth(1) == Some(sig.as_str()) && tt < edges[cycle]), "z_wr_addr changes twice in cycle {cycle}");
+        }
+    }
+    let old = lines[line].split_whitespace().next().unwrap();
+    let flipped = format!("{}{}", &old[..old.len() - 1], if old.ends_with('0') { '1' } else { '0' });
+    let mut edited: Vec<String> = lines.iter().map(|s| s.to_string()).collect();
+    edited[line] = format!("{flipped} {sig}");
+    let broken = dir().join("icarus_edited.vcd");
+    std::fs::write(&broken, edited.join("\n") + "\n").unwrap();
+
+    let (code, out) = vcd_diff(rusthdl, &broken, &[]);
+    assert_eq!(code, 1, "vcd-diff did not report the edit:\n{out}");
+    let first = out.lines().next().unwrap();
+    assert!(first.starts_with(&format!("first difference at cycle {cycle} ")), "expected cycle {cycle}:\n{out}");
+    assert!(first.contains("time units): signal z_wr_addr: "), "expected signal z_wr_addr:\n{out}");
+    assert!(first.contains(&format!(", {} in B,", edges[cycle])), "expected B's edge time {}:\n{out}", edges[cycle]);
+    // The values shown are the original (A) and the edited one (B).
+    let b_val = u64::from_str_radix(first.rsplit("B = 0x").next().unwrap().trim(), 16).unwrap();
+    assert_eq!(b_val, u64::from_str_radix(flipped.trim_start_matches('b'), 2).unwrap(), "{out}");
+}
