@@ -24,6 +24,22 @@ pub fn verilog_named<U: Block>(uut: &U, name: &str) -> Result<String, String> {
     Ok(defines.defines())
 }
 
+/// rust-hdl names the top module `top` and its children `top$...`: give them the top's own name.
+pub fn rename_top(v: &str, name: &str) -> String {
+    let mut out = String::with_capacity(v.len());
+    for line in v.lines() {
+        let indent = &line[..line.len() - line.trim_start().len()];
+        let t = line.trim_start();
+        let renamed = ["module top", "endmodule // top", "top$"].iter().find(|p| t.starts_with(*p)).map(|p| {
+            let at = p.find("top").unwrap();
+            format!("{indent}{}{name}{}", &t[..at], &t[at + 3..])
+        });
+        out.push_str(renamed.as_deref().unwrap_or(line));
+        out.push('\n');
+    }
+    out
+}
+
 /// `signed_bit_cast` without the stack overflow: sign-extends (M > N) or truncates (M < N); N, M <= 64.
 pub fn signed_bit_cast_safe<const M: usize, const N: usize>(x: Signed<N>) -> Signed<M> {
     from_i64::<M>(to_i64(x))

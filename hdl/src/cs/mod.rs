@@ -126,14 +126,7 @@ mod tests {
     }
 }
 
-/// The Verilog of a block with its top module named `name` (submodules are `name$child`). Runs
-/// rust-hdl's structural checks first, so a check failure is an `Err` rather than a panic.
-pub fn verilog_named<U: Block>(uut: &U, name: &str) -> Result<String, String> {
-    check_all(uut).map_err(|e| format!("{name}: rust-hdl check failed: {e:?}"))?;
-    let mut defines = ModuleDefines::default();
-    uut.accept(name, &mut defines);
-    Ok(defines.defines())
-}
+use crate::common::verilog_named;
 
 /// Verilog of the colour-setup top (module `colour_setup`).
 pub fn colour_setup_verilog() -> Result<String, String> {

@@ -32,18 +32,4 @@ pub fn verilog_opp(name: &str, n: usize, fifo_depth: usize) -> Result<String, St
     Ok(rename_top(&generate_verilog(&uut), name))
 }
 
-/// rust-hdl names the top module `top` and its children `top$...`: give them the top's own name.
-pub fn rename_top(v: &str, name: &str) -> String {
-    let mut out = String::with_capacity(v.len());
-    for line in v.lines() {
-        let indent = &line[..line.len() - line.trim_start().len()];
-        let t = line.trim_start();
-        let renamed = ["module top", "endmodule // top", "top$"].iter().find(|p| t.starts_with(*p)).map(|p| {
-            let at = p.find("top").unwrap();
-            format!("{indent}{}{name}{}", &t[..at], &t[at + 3..])
-        });
-        out.push_str(renamed.as_deref().unwrap_or(line));
-        out.push('\n');
-    }
-    out
-}
+pub use crate::common::rename_top;

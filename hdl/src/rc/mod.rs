@@ -209,24 +209,9 @@ pub fn verilog(width: u32, height: u32) -> Result<String, String> {
     let mut uut = Rc::new(width, height)?;
     uut.connect_all();
     check_all(&uut).map_err(|e| format!("rc: design check failed: {e:?}"))?;
-    Ok(rename_top(&generate_verilog(&uut), "rc"))
+    Ok(crate::common::rename_top(&generate_verilog(&uut), "rc"))
 }
 
-/// rust-hdl names the top module `top` and its children `top$...`: give them the top's own name.
-fn rename_top(v: &str, name: &str) -> String {
-    let mut out = String::with_capacity(v.len());
-    for line in v.lines() {
-        let indent = &line[..line.len() - line.trim_start().len()];
-        let t = line.trim_start();
-        let renamed = ["module top", "endmodule // top", "top$"].iter().find(|p| t.starts_with(*p)).map(|p| {
-            let at = p.find("top").unwrap();
-            format!("{indent}{}{name}{}", &t[..at], &t[at + 3..])
-        });
-        out.push_str(renamed.as_deref().unwrap_or(line));
-        out.push('\n');
-    }
-    out
-}
 
 #[cfg(test)]
 mod tests {
