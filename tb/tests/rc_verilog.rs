@@ -122,3 +122,52 @@ fn generated_verilog_replays_a_polyhedron_frame_under_verilator() {
     let checked = replay(Simulator::Verilator, screen, &path).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(checked, cycles, "the replay stopped early");
 }
+
+/// Triangles with the longest edges the formats allow, on a 1024x1024 screen: vertices at both ends of
+/// the 16-bit S11.4 range (a guard band of one screen on each side), so edge deltas reach 2^16
+/// subpixels and the steps 2^20; each triangle overlaps the screen in a small box, to keep the replay
+/// short. With them, the polyhedron triangle at 640x480 that exposed a width bug in the generated
+/// Verilog (the RustHDL simulation drew its 51 812 pixels, the Verilog 2: the edge steps were shifted
+/// in 17 bits; found by `render --backend verilator --size 640x480 --scene polyhedron`). Every 320x200
+/// scene stays below 256-pixel edges, which is why the other replays never showed it.
+#[test]
+fn generated_verilog_draws_triangles_with_the_longest_edges_the_formats_allow_under_icarus() {
+    if !tools(&["iverilog", "vvp"]) {
+        return;
+    }
+    use golden::cycle::rc::RcCmd;
+    use golden::format::{WinVertex, DEPTH_MAX};
+    use golden::raster::{CullMode, FrontFace};
+    let screen = Screen::new(1024, 1024).unwrap();
+    let s = 16; // one pixel in subpixels
+    let (lo, hi) = (i16::MIN as i32, i16::MAX as i32);
+    let v = |x, y, z| WinVertex { x, y, z };
+    let tris = [
+        // The 640x480 polyhedron triangle, as it reached the RC.
+        [v(2741, 5511, 14991021), v(7906, 5538, 12643651), v(4200, 384, 11227834)],
+        // The bottom-right corner, with two vertices at the format's positive end.
+        [v(1020 * s, 1020 * s, 0), v(hi, 1023 * s + 8, DEPTH_MAX - 1), v(1023 * s + 8, hi, 1 << 23)],
+        // The top-left corner, with two vertices at the negative end.
+        [v(lo, 4 * s, 77), v(4 * s, lo, DEPTH_MAX - 1), v(4 * s, 4 * s, 5)],
+        // A band across the whole x range (dx = 2^16 - 1) and one across the whole y range.
+        [v(lo, 1000 * s, 1000), v(hi, 1010 * s, 2_000_000), v(1000 * s, 1030 * s, 9_000_000)],
+        [v(1000 * s, lo, 1000), v(1010 * s, hi, 2_000_000), v(1030 * s, 1000 * s, 9_000_000)],
+    ];
+    let cmds = frame(
+        false,
+        tris.iter().enumerate().map(|(i, t)| RcCmd::triangle(i as u32 + 1, *t, CullMode::None, FrontFace::Ccw).unwrap()).collect(),
+    );
+    let path = scratch_dir("rc_vectors").join("longest_edges.vec");
+    let mut w = VectorWriter::create(path).unwrap();
+    let run = run_model(screen, &cmds, Drive::ideal(), Some(&mut w)).unwrap();
+    let (path, cycles) = w.finish().unwrap();
+    // The replay compares every port in every cycle with the cycle model; first make sure the frame it
+    // compares is the algorithmic model's, and that every triangle put pixels into it.
+    let r = tb::rc::stimulus::reference(screen, &cmds);
+    assert_eq!(run.ibuf, r.ibuf, "the cycle model's I-buffer differs from the algorithmic model's");
+    for i in 1..=tris.len() as u32 {
+        assert!(r.ibuf.iter().any(|&x| x == i), "triangle {i} draws no pixel: the case tests nothing");
+    }
+    let checked = replay(Simulator::Icarus, screen, &path).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(checked, cycles, "the replay stopped early");
+}

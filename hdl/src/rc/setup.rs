@@ -204,6 +204,8 @@ pub struct Setup {
     top_left: Signal<Local, Bit>,
     e_val: Signal<Local, Signed<36>>,
     neg_dy: Signal<Local, Signed<17>>,
+    neg_dy_w: Signal<Local, Signed<22>>,
+    edx_w: Signal<Local, Signed<22>>,
     step_x: Signal<Local, Signed<22>>,
     step_y: Signal<Local, Signed<22>>,
     addr_prod: Signal<Local, Bits<32>>,
@@ -390,6 +392,8 @@ impl Setup {
             top_left: Default::default(),
             e_val: Default::default(),
             neg_dy: Default::default(),
+            neg_dy_w: Default::default(),
+            edx_w: Default::default(),
             step_x: Default::default(),
             step_y: Default::default(),
             addr_prod: Default::default(),
@@ -490,9 +494,15 @@ impl Logic for Setup {
         self.top_left.next = self.edy.val().get_bit(16)
             | ((self.edy.val() == self.k0_17.val()) & !self.edx.val().get_bit(16) & (self.edx.val() != self.k0_17.val()));
         // Steps per pixel: -16*dy in x, 16*dx in y.
+        // Widen in a statement of its own, then shift: `signed_bit_cast_safe` emits `$signed(x)` without
+        // the new width, so inside `$unsigned(...) << 4` the Verilog shifted in 17 bits and lost the top
+        // bits of every step of an edge of 256 px or more (GUIDE §1, rule 1; the RustHDL simulation was
+        // right). tb/tests/rc_verilog.rs replays such edges.
         self.neg_dy.next = self.k0_17.val() - self.edy.val();
-        self.step_x.next = signed_cast(unsigned_cast(signed_bit_cast_safe::<22, 17>(self.neg_dy.val())) << self.k4_6.val());
-        self.step_y.next = signed_cast(unsigned_cast(signed_bit_cast_safe::<22, 17>(self.edx.val())) << self.k4_6.val());
+        self.neg_dy_w.next = signed_bit_cast_safe::<22, 17>(self.neg_dy.val());
+        self.edx_w.next = signed_bit_cast_safe::<22, 17>(self.edx.val());
+        self.step_x.next = signed_cast(unsigned_cast(self.neg_dy_w.val()) << self.k4_6.val());
+        self.step_y.next = signed_cast(unsigned_cast(self.edx_w.val()) << self.k4_6.val());
 
         // The dot-difference unit: dot = l.a*l.b - r.a*r.b; operands chosen by state and phase.
         self.op_la.next = signed_bit_cast_safe::<25, 17>(self.dx10.val());
