@@ -107,3 +107,27 @@ fn degenerate_and_off_screen_triangles_go_through_the_rtl_like_the_golden_model(
     assert!(read(&g, "frame.png") == read(&r, "frame.png"));
     assert!(read(&g, "index.bin") == read(&r, "index.bin"));
 }
+
+/// The Verilator backend through the program, at the size where triangles get edges over 256 pixels:
+/// the generated Verilog's files equal the golden backend's byte for byte.
+#[test]
+fn verilator_backend_writes_the_golden_files_byte_for_byte_at_640x480() {
+    if Command::new("verilator").arg("--version").output().is_err() {
+        eprintln!("SKIPPED: verilator is not installed (scripts/test.sh installs it)");
+        return;
+    }
+    let d = temp_dir("verilator");
+    let (g, v) = (d.join("golden"), d.join("verilator"));
+    let common = ["render", "--scene", "polyhedron", "--size", "640x480"];
+    let (ok, _, err) = run(&[&common[..], &["--out", g.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    let (ok, out, err) = run(&[&common[..], &["--backend", "verilator", "--out", v.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    assert!(out.contains("RTL frame equals the golden model's"), "{out}");
+    for f in ["frame.png", "index.bin", "index.png"] {
+        assert!(read(&g, f) == read(&v, f), "{f} differs between --backend golden and --backend verilator");
+    }
+    let cycles: serde_json::Value = serde_json::from_slice(&read(&v, "cycles.json")).unwrap();
+    assert_eq!(cycles["clear"], 640 * 480, "the first frame after reset clears every pixel once: {cycles}");
+    assert_eq!(cycles["equal_to_golden"], true);
+}
