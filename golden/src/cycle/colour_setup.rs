@@ -14,17 +14,18 @@
 //! | command | cycles after c0 | what happens |
 //! |---|---|---|
 //! | flat | c0+1 | write of `flat_setup(rgb)` (material 0, as the algorithmic model) |
-//! | shaded | c0+1, c0+2 | the two products of `det` (one shared multiplier) |
-//! | | c0+3 | canonical order (swap vertices 1, 2 if `det < 0`), `|det|` to the reciprocal |
-//! | | c0+4 ..= c0+29 | reciprocal: 25 restoring steps, result in c0+29; meanwhile the 12 products of the 6 plane numerators |
-//! | | c0+30 ..= c0+35 | A, B of R, G, B: `sat40(round(n * mant >> (s+4)))`, one per cycle |
-//! | | c0+36 ..= c0+41 | C of R, G, B: two products each |
-//! | | c0+42 | write of `colour_setup(...)` |
-//! | zero area (`det == 0`) | c0+4 ..= c0+9 | A = B = 0 and the C sequence, which gives constant planes at vertex 0's values |
-//! | | c0+10 | write (the algorithmic model has no such case: the RC never flags a zero-area triangle visible) |
+//! | shaded | c0+1, c0+2 | the two products of `det` (one shared multiplier, its product registered) |
+//! | | c0+3 | `det` = the difference of the registered products |
+//! | | c0+4 | canonical order (swap vertices 1, 2 if `det < 0`), `|det|` to the reciprocal |
+//! | | c0+5 ..= c0+30 | reciprocal: 25 restoring steps, result in c0+30; meanwhile the 12 products of the 6 plane numerators |
+//! | | c0+31 ..= c0+37 | A, B of R, G, B: `sat40(round(n * mant >> (s+4)))`, one product per cycle, each used the cycle after |
+//! | | c0+38 ..= c0+44 | C of R, G, B: two products each, C formed the cycle after the second |
+//! | | c0+45 | write of `colour_setup(...)` |
+//! | zero area (`det == 0`) | c0+5 ..= c0+11 | A = B = 0 and the C sequence, which gives constant planes at vertex 0's values |
+//! | | c0+12 | write (the algorithmic model has no such case: the RC never flags a zero-area triangle visible) |
 //!
 //! `cmd_ready` is high when the block is idle and in its write cycle, so back-to-back shaded commands
-//! take [`SHADED_CYCLES`] = 42 cycles each and flat ones 1 cycle each. `busy` is high from c0+1 up to
+//! take [`SHADED_CYCLES`] = 45 cycles each and flat ones 1 cycle each. `busy` is high from c0+1 up to
 //! and including the write cycle.
 
 use crate::format::{Plane, WinVertex};
@@ -32,11 +33,11 @@ use crate::render::SetupCommand;
 use crate::shade::{colour_setup, flat_setup, TdbsEntry};
 
 /// Cycles from taking a shaded command to its TdbS write (and between back-to-back shaded commands).
-pub const SHADED_CYCLES: u64 = 42;
+pub const SHADED_CYCLES: u64 = 45;
 /// Cycles from taking a flat command to its write.
 pub const FLAT_CYCLES: u64 = 1;
 /// Cycles from taking a zero-area command to its write.
-pub const ZERO_AREA_CYCLES: u64 = 10;
+pub const ZERO_AREA_CYCLES: u64 = 12;
 /// Width of the triangle index (TdbS address) on the block's ports.
 pub const SETUP_INDEX_BITS: u32 = 16;
 
@@ -290,7 +291,7 @@ mod tests {
         cmd.values = [[255, 0, 0], [0, 255, 0], [0, 0, 255]];
         let cmds = vec![cmd; 10];
         let (_, cycles) = run_model(&cmds, 0);
-        // The last write happens in cycle 10*42; plus the cycle in which the model is seen idle.
+        // The last write happens in cycle 10*45; plus the cycle in which the model is seen idle.
         assert_eq!(cycles, 10 * SHADED_CYCLES + 1);
         let flat = vec![SetupCmd { flat: true, index: 1, ..Default::default() }; 10];
         let (_, cycles) = run_model(&flat, 0);

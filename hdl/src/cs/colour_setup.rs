@@ -17,11 +17,18 @@
 //! ```
 //!
 //! Timing (c0 = the cycle a command is taken; `golden::cycle::colour_setup` is the reference):
-//! Det0 c0+1, Det1 c0+2 (det = dx10*dy20 - dx20*dy10), Norm c0+3 (swap vertices 1, 2 if det < 0,
-//! |det| to the reciprocal), Div c0+4..=c0+29 (reciprocal; the 12 numerator products run meanwhile),
-//! PlaneAB c0+30..=c0+35, PlaneC c0+36..=c0+41, Write c0+42. Flat: Write at c0+1. Zero area: A = B = 0,
-//! then PlaneC c0+4..=c0+9, Write c0+10. `cmd.ready` is high in Idle and Write: back-to-back shaded
-//! triangles take 42 cycles each, flat ones 1. All payload outputs are 0 while their enable is low.
+//! Det0 c0+1, Det1 c0+2, Det2 c0+3 (det = dx10*dy20 - dx20*dy10), Norm c0+4 (swap vertices 1, 2 if
+//! det < 0, |det| to the reciprocal), Div c0+5..=c0+30 (reciprocal; the 12 numerator products run
+//! meanwhile), PlaneAB c0+31..=c0+37, PlaneC c0+38..=c0+44, Write c0+45. Flat: Write at c0+1. Zero
+//! area: A = B = 0, then PlaneC c0+5..=c0+11, Write c0+12. `cmd.ready` is high in Idle and Write:
+//! back-to-back shaded triangles take 45 cycles each, flat ones 1. All payload outputs are 0 while
+//! their enable is low.
+//!
+//! Pipelining: the multiplier's product is registered (`prod`), and whoever uses it does so in the
+//! cycle after the operands were presented, told by a tag (`tag_v`, channel, phase, k) which product
+//! it holds. Without that register the operand mux, the 40x26 product, the 64-bit rounding shift and
+//! the saturation were one path of 42.6 ns on an ECP5 (23.5 MHz, the whole chipset's limit); the
+//! register costs 3 cycles per triangle (Det2, and one drain cycle each for A/B and C).
 //!
 //! Widths: coordinates and values are 16-bit, so every intermediate is bounded for ANY port input:
 //! |det| < 2^33, |numerator| < 2^33 (35-bit register), |n*mant| < 2^58, |A*(8-x0)| < 2^56 — the
@@ -37,6 +44,7 @@ pub enum SetupState {
     Idle,
     Det0,
     Det1,
+    Det2,
     Norm,
     Div,
     PlaneAB,
@@ -81,6 +89,17 @@ pub struct ColourSetup {
     v2r: DFF<Signed<16>>,
     v2g: DFF<Signed<16>>,
     v2b: DFF<Signed<16>>,
+    /// The shared multiplier's product, registered: every consumer reads the product of the operands
+    /// presented in the cycle before (a pipeline stage between the multiplier and the shift,
+    /// saturation and sums behind it, which were one 42 ns path).
+    prod: DFF<Signed<64>>,
+    /// `prod` holds a product of the numerator, A/B or C sequence, and which one: (channel, phase) or k.
+    tag_v: DFF<Bit>,
+    tag_ch: DFF<Bits<2>>,
+    tag_ph: DFF<Bits<2>>,
+    tag_k: DFF<Bits<3>>,
+    /// The numerator or C sequence has issued its last product.
+    issued: DFF<Bit>,
     /// First product of a difference of two products.
     acc: DFF<Signed<64>>,
     det: DFF<Signed<36>>,
@@ -119,6 +138,8 @@ pub struct ColourSetup {
     cv0: Signal<Local, Signed<16>>,
     cv1: Signal<Local, Signed<16>>,
     cv2: Signal<Local, Signed<16>>,
+    /// Vertex 0's value of the channel whose C the registered product belongs to.
+    tv0: Signal<Local, Signed<16>>,
     dv10: Signal<Local, Signed<17>>,
     dv20: Signal<Local, Signed<17>>,
     diff: Signal<Local, Signed<64>>,
@@ -155,6 +176,7 @@ pub struct ColourSetup {
     k3_3: Constant<Bits<3>>,
     k4_3: Constant<Bits<3>>,
     k5_3: Constant<Bits<3>>,
+    k6_3: Constant<Bits<3>>,
     k3_7: Constant<Bits<7>>,
     k4_7: Constant<Bits<7>>,
     k16_7: Constant<Bits<7>>,
@@ -200,6 +222,12 @@ impl Default for ColourSetup {
             v2r: Default::default(),
             v2g: Default::default(),
             v2b: Default::default(),
+            prod: Default::default(),
+            tag_v: Default::default(),
+            tag_ch: Default::default(),
+            tag_ph: Default::default(),
+            tag_k: Default::default(),
+            issued: Default::default(),
             acc: Default::default(),
             det: Default::default(),
             ch: Default::default(),
@@ -235,6 +263,7 @@ impl Default for ColourSetup {
             cv0: Default::default(),
             cv1: Default::default(),
             cv2: Default::default(),
+            tv0: Default::default(),
             dv10: Default::default(),
             dv20: Default::default(),
             diff: Default::default(),
@@ -271,6 +300,7 @@ impl Default for ColourSetup {
             k3_3: Constant::new(3.into()),
             k4_3: Constant::new(4.into()),
             k5_3: Constant::new(5.into()),
+            k6_3: Constant::new(6.into()),
             k3_7: Constant::new(3.into()),
             k4_7: Constant::new(4.into()),
             k16_7: Constant::new(16.into()),
@@ -294,7 +324,7 @@ impl Logic for ColourSetup {
     fn update(&mut self) {
         dff_setup!(
             self, clock, state, index, material, x0, y0, x1, y1, x2, y2, v0r, v0g, v0b, v1r, v1g, v1b, v2r, v2g, v2b,
-            acc, det, ch, ph, k, n_done, na_r, nb_r, na_g, nb_g, na_b, nb_b, mant, shift, plane_r_a, plane_r_b,
+            prod, tag_v, tag_ch, tag_ph, tag_k, issued, acc, det, ch, ph, k, n_done, na_r, nb_r, na_g, nb_g, na_b, nb_b, mant, shift, plane_r_a, plane_r_b,
             plane_r_c, plane_g_a, plane_g_b, plane_g_c, plane_b_a, plane_b_b, plane_b_c
         );
         clock!(self, clock, recip);
@@ -318,6 +348,13 @@ impl Logic for ColourSetup {
             self.cv1.next = self.v1b.q.val();
             self.cv2.next = self.v2b.q.val();
         }
+        self.tv0.next = self.v0r.q.val();
+        if self.tag_ch.q.val() == self.k1_2.val() {
+            self.tv0.next = self.v0g.q.val();
+        }
+        if self.tag_ch.q.val() == self.k2_2.val() {
+            self.tv0.next = self.v0b.q.val();
+        }
         self.dv10.next = signed_bit_cast_safe::<17, 16>(self.cv1.val()) - signed_bit_cast_safe::<17, 16>(self.cv0.val());
         self.dv20.next = signed_bit_cast_safe::<17, 16>(self.cv2.val()) - signed_bit_cast_safe::<17, 16>(self.cv0.val());
         // |det| for the reciprocal (Norm).
@@ -329,7 +366,9 @@ impl Logic for ColourSetup {
         // The shared multiplier; its operands are chosen by the state below.
         self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dx10.val());
         self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy20.val());
-        self.diff.next = self.acc.q.val() - self.mul.p.val();
+        self.prod.d.next = self.mul.p.val();
+        self.tag_v.d.next = false;
+        self.diff.next = self.acc.q.val() - self.prod.q.val();
 
         // A or B = sat40(round(n * mant / 2^(s+4))): add half, arithmetic shift (on Bits, through the
         // one's complement for negative values), saturate.
@@ -353,7 +392,7 @@ impl Logic for ColourSetup {
         self.sh_m1.next = bit_cast::<7, 6>(self.shift.q.val()) + self.k3_7.val();
         self.sh.next = bit_cast::<7, 6>(self.shift.q.val()) + self.k4_7.val();
         self.rs_half.next = self.k1_64.val() << self.sh_m1.val();
-        self.rs_y.next = self.mul.p.val() + signed_cast(self.rs_half.val());
+        self.rs_y.next = self.prod.q.val() + signed_cast(self.rs_half.val());
         self.rs_yb.next = unsigned_cast(self.rs_y.val());
         self.rs_sh.next = self.rs_yb.val() >> self.sh.val();
         if self.rs_yb.val().get_bit(63) {
@@ -382,10 +421,10 @@ impl Logic for ColourSetup {
         }
         self.ox.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(self.x0.q.val());
         self.oy.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(self.y0.q.val());
-        self.cx.next = self.acc.q.val() + self.mul.p.val();
+        self.cx.next = self.acc.q.val() + self.prod.q.val();
         self.cx8.next = self.cx.val() + self.k8_64.val();
         self.cxr.next = signed_bit_cast_safe::<64, 60>(self.cx8.val().get_bits::<60>(4));
-        self.v0w.next = signed_bit_cast_safe::<64, 16>(self.cv0.val());
+        self.v0w.next = signed_bit_cast_safe::<64, 16>(self.tv0.val());
         self.v0s.next = unsigned_cast(self.v0w.val()) << self.k16_7.val();
         self.csum.next = signed_cast(self.v0s.val()) + self.cxr.val();
         self.c_top.next = unsigned_cast(self.csum.val().get_bits::<9>(55));
@@ -423,12 +462,15 @@ impl Logic for ColourSetup {
             SetupState::Det0 => {
                 self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dx10.val());
                 self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy20.val());
-                self.acc.d.next = self.mul.p.val();
                 self.state.d.next = SetupState::Det1;
             }
             SetupState::Det1 => {
                 self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dx20.val());
                 self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy10.val());
+                self.acc.d.next = self.prod.q.val();
+                self.state.d.next = SetupState::Det2;
+            }
+            SetupState::Det2 => {
                 self.det.d.next = signed_bit_cast_safe::<36, 64>(self.diff.val());
                 self.state.d.next = SetupState::Norm;
             }
@@ -449,6 +491,7 @@ impl Logic for ColourSetup {
                 self.ch.d.next = self.k0_2.val();
                 self.ph.d.next = self.k0_2.val();
                 self.n_done.d.next = false;
+                self.issued.d.next = false;
                 if self.det.q.val() == self.k0_36.val() {
                     // Zero area (the RC never flags one visible): constant planes at vertex 0.
                     self.plane_r_a.d.next = self.k0_40.val();
@@ -466,48 +509,61 @@ impl Logic for ColourSetup {
                 }
             }
             SetupState::Div => {
-                // The six numerators, four phases per channel:
-                // na = dv10*dy20 - dv20*dy10, nb = dv20*dx10 - dv10*dx20.
-                if !self.n_done.q.val() {
+                // The six numerators, four products per channel, issued one per cycle and consumed from
+                // `prod` in the next: na = dv10*dy20 - dv20*dy10, nb = dv20*dx10 - dv10*dx20.
+                if !self.issued.q.val() {
+                    self.tag_v.d.next = true;
+                    self.tag_ch.d.next = self.ch.q.val();
+                    self.tag_ph.d.next = self.ph.q.val();
                     if self.ph.q.val() == self.k0_2.val() {
                         self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dv10.val());
                         self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy20.val());
-                        self.acc.d.next = self.mul.p.val();
                     }
                     if self.ph.q.val() == self.k1_2.val() {
                         self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dv20.val());
                         self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy10.val());
-                        if self.ch.q.val() == self.k0_2.val() {
-                            self.na_r.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
-                        }
-                        if self.ch.q.val() == self.k1_2.val() {
-                            self.na_g.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
-                        }
-                        if self.ch.q.val() == self.k2_2.val() {
-                            self.na_b.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
-                        }
                     }
                     if self.ph.q.val() == self.k2_2.val() {
                         self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dv20.val());
                         self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dx10.val());
-                        self.acc.d.next = self.mul.p.val();
                     }
                     if self.ph.q.val() == self.k3_2.val() {
                         self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dv10.val());
                         self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dx20.val());
-                        if self.ch.q.val() == self.k0_2.val() {
+                        self.ch.d.next = self.ch.q.val() + self.k1_2.val();
+                        if self.ch.q.val() == self.k2_2.val() {
+                            self.issued.d.next = true;
+                        }
+                    }
+                    self.ph.d.next = self.ph.q.val() + self.k1_2.val();
+                }
+                if self.tag_v.q.val() {
+                    if (self.tag_ph.q.val() == self.k0_2.val()) | (self.tag_ph.q.val() == self.k2_2.val()) {
+                        self.acc.d.next = self.prod.q.val();
+                    }
+                    if self.tag_ph.q.val() == self.k1_2.val() {
+                        if self.tag_ch.q.val() == self.k0_2.val() {
+                            self.na_r.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
+                        }
+                        if self.tag_ch.q.val() == self.k1_2.val() {
+                            self.na_g.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
+                        }
+                        if self.tag_ch.q.val() == self.k2_2.val() {
+                            self.na_b.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
+                        }
+                    }
+                    if self.tag_ph.q.val() == self.k3_2.val() {
+                        if self.tag_ch.q.val() == self.k0_2.val() {
                             self.nb_r.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
                         }
-                        if self.ch.q.val() == self.k1_2.val() {
+                        if self.tag_ch.q.val() == self.k1_2.val() {
                             self.nb_g.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
                         }
-                        if self.ch.q.val() == self.k2_2.val() {
+                        if self.tag_ch.q.val() == self.k2_2.val() {
                             self.nb_b.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
                             self.n_done.d.next = true;
                         }
-                        self.ch.d.next = self.ch.q.val() + self.k1_2.val();
                     }
-                    self.ph.d.next = self.ph.q.val() + self.k1_2.val();
                 }
                 if self.recip.result.valid.val() & self.n_done.q.val() {
                     self.res_ready.next = true;
@@ -518,52 +574,77 @@ impl Logic for ColourSetup {
                 }
             }
             SetupState::PlaneAB => {
-                self.op_a.next = signed_bit_cast_safe::<40, 35>(self.n_sel.val());
-                self.op_b.next = self.mant26.val();
-                if self.k.q.val() == self.k0_3.val() {
-                    self.plane_r_a.d.next = self.ab40.val();
+                // k = 0..5 issues n_k * mant; the cycle after, its rounded, shifted, saturated value is
+                // written (k = 6 only writes the last one).
+                if self.k.q.val() != self.k6_3.val() {
+                    self.op_a.next = signed_bit_cast_safe::<40, 35>(self.n_sel.val());
+                    self.op_b.next = self.mant26.val();
+                    self.tag_v.d.next = true;
+                    self.tag_k.d.next = self.k.q.val();
                 }
-                if self.k.q.val() == self.k1_3.val() {
-                    self.plane_r_b.d.next = self.ab40.val();
+                if self.tag_v.q.val() {
+                    if self.tag_k.q.val() == self.k0_3.val() {
+                        self.plane_r_a.d.next = self.ab40.val();
+                    }
+                    if self.tag_k.q.val() == self.k1_3.val() {
+                        self.plane_r_b.d.next = self.ab40.val();
+                    }
+                    if self.tag_k.q.val() == self.k2_3.val() {
+                        self.plane_g_a.d.next = self.ab40.val();
+                    }
+                    if self.tag_k.q.val() == self.k3_3.val() {
+                        self.plane_g_b.d.next = self.ab40.val();
+                    }
+                    if self.tag_k.q.val() == self.k4_3.val() {
+                        self.plane_b_a.d.next = self.ab40.val();
+                    }
+                    if self.tag_k.q.val() == self.k5_3.val() {
+                        self.plane_b_b.d.next = self.ab40.val();
+                    }
                 }
-                if self.k.q.val() == self.k2_3.val() {
-                    self.plane_g_a.d.next = self.ab40.val();
-                }
-                if self.k.q.val() == self.k3_3.val() {
-                    self.plane_g_b.d.next = self.ab40.val();
-                }
-                if self.k.q.val() == self.k4_3.val() {
-                    self.plane_b_a.d.next = self.ab40.val();
-                }
-                if self.k.q.val() == self.k5_3.val() {
-                    self.plane_b_b.d.next = self.ab40.val();
+                if self.k.q.val() == self.k6_3.val() {
                     self.ch.d.next = self.k0_2.val();
                     self.ph.d.next = self.k0_2.val();
+                    self.issued.d.next = false;
                     self.state.d.next = SetupState::PlaneC;
                 }
                 self.k.d.next = self.k.q.val() + self.k1_3.val();
             }
             SetupState::PlaneC => {
-                if self.ph.q.val() == self.k0_2.val() {
-                    self.op_a.next = signed_cast(self.ca.val());
-                    self.op_b.next = signed_bit_cast_safe::<26, 17>(self.ox.val());
-                    self.acc.d.next = self.mul.p.val();
-                    self.ph.d.next = self.k1_2.val();
-                } else {
-                    self.op_a.next = signed_cast(self.cb.val());
-                    self.op_b.next = signed_bit_cast_safe::<26, 17>(self.oy.val());
-                    if self.ch.q.val() == self.k0_2.val() {
-                        self.plane_r_c.d.next = self.c56.val();
+                // Per channel: A*(8-x0), then B*(8-y0); C is formed the cycle after the second product.
+                if !self.issued.q.val() {
+                    self.tag_v.d.next = true;
+                    self.tag_ch.d.next = self.ch.q.val();
+                    self.tag_ph.d.next = self.ph.q.val();
+                    if self.ph.q.val() == self.k0_2.val() {
+                        self.op_a.next = signed_cast(self.ca.val());
+                        self.op_b.next = signed_bit_cast_safe::<26, 17>(self.ox.val());
+                        self.ph.d.next = self.k1_2.val();
+                    } else {
+                        self.op_a.next = signed_cast(self.cb.val());
+                        self.op_b.next = signed_bit_cast_safe::<26, 17>(self.oy.val());
+                        self.ph.d.next = self.k0_2.val();
+                        self.ch.d.next = self.ch.q.val() + self.k1_2.val();
+                        if self.ch.q.val() == self.k2_2.val() {
+                            self.issued.d.next = true;
+                        }
                     }
-                    if self.ch.q.val() == self.k1_2.val() {
-                        self.plane_g_c.d.next = self.c56.val();
+                }
+                if self.tag_v.q.val() {
+                    if self.tag_ph.q.val() == self.k0_2.val() {
+                        self.acc.d.next = self.prod.q.val();
+                    } else {
+                        if self.tag_ch.q.val() == self.k0_2.val() {
+                            self.plane_r_c.d.next = self.c56.val();
+                        }
+                        if self.tag_ch.q.val() == self.k1_2.val() {
+                            self.plane_g_c.d.next = self.c56.val();
+                        }
+                        if self.tag_ch.q.val() == self.k2_2.val() {
+                            self.plane_b_c.d.next = self.c56.val();
+                            self.state.d.next = SetupState::Write;
+                        }
                     }
-                    if self.ch.q.val() == self.k2_2.val() {
-                        self.plane_b_c.d.next = self.c56.val();
-                        self.state.d.next = SetupState::Write;
-                    }
-                    self.ch.d.next = self.ch.q.val() + self.k1_2.val();
-                    self.ph.d.next = self.k0_2.val();
                 }
             }
             SetupState::Write => {

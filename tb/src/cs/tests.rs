@@ -132,11 +132,11 @@ fn colour_setup_writes_the_golden_tdbs_of_every_builtin_scene() {
 }
 
 #[test]
-fn colour_setup_takes_42_cycles_per_shaded_triangle_and_1_per_flat_one() {
+fn colour_setup_takes_45_cycles_per_shaded_triangle_and_1_per_flat_one() {
     let f = record("castle", Shading::Gouraud, 160, 100).unwrap();
     let cmds: Vec<SetupCmd> = f.chip.setups.iter().take(50).map(|c| SetupCmd::from_command(c).unwrap()).collect();
     let run = setb::run_rtl_vs_model("colour_setup_throughput", &cmds, SetupDrive { gap_percent: 0, seed: 1 }, false).unwrap();
-    // Commands back to back: the k-th write is in cycle 42*(k+1); the run ends one cycle after the last.
+    // Commands back to back: the k-th write is in cycle SHADED_CYCLES*(k+1); the run ends one cycle after the last.
     assert_eq!(run.cycles, SHADED_CYCLES * cmds.len() as u64 + 1);
     println!("colour setup, shaded: {} cycles for {} triangles = {} cycles/triangle", run.cycles - 1, cmds.len(), (run.cycles - 1) / cmds.len() as u64);
     let flat: Vec<SetupCmd> = cmds.iter().map(|c| SetupCmd { flat: true, flat_rgb: [1, 2, 3], ..*c }).collect();
