@@ -28,6 +28,8 @@ pub enum Command {
     FpgaReport(crate::fpga::FpgaArgs),
     /// Compare two VCD traces of the same top cycle by cycle on its ports; report the first difference.
     VcdDiff(crate::vcd_diff::VcdDiffArgs),
+    /// Measure golden, RustHDL and Verilator speed, the chipset's work per clock and frames/s at Fmax; write bench.md.
+    Bench(crate::bench::BenchArgs),
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -231,6 +233,7 @@ pub fn run(cli: Cli) -> Result<(), String> {
         Command::Analyze(args) => crate::analyze::run(&args),
         Command::FpgaReport(args) => crate::fpga::run(&args),
         Command::VcdDiff(args) => crate::vcd_diff::run(&args),
+        Command::Bench(args) => crate::bench::run(&args),
     }
 }
 

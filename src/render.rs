@@ -182,7 +182,7 @@ fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<RtlRu
 }
 
 /// The first difference between two frames of the same scene, if any.
-fn compare(golden: &Frame, rtl: &Frame) -> Option<String> {
+pub(crate) fn compare(golden: &Frame, rtl: &Frame) -> Option<String> {
     let w = golden.screen.width as usize;
     let at = |i: usize| format!("pixel ({}, {})", i % w, i / w);
     if let Some(i) = (0..golden.hw_index.len()).find(|&i| golden.hw_index[i] != rtl.hw_index[i]) {

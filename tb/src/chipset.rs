@@ -12,6 +12,11 @@
 //! * `colour_setup`: from the first setup command offered until colour setup is idle after the last;
 //! * `scan_out`: from the scan start to the last pixel taken (the consumer is always ready);
 //! * `total`: from the frame command to the end of scan-out (rasterization + colour setup + scan-out).
+//!
+//! Beside the cycles, one count of work seen at the ports: `z_reads`, the cycles in rasterization with
+//! a Z-buffer read (`z_re`). The RC reads Z once for every covered candidate (fragment) it Z-tests, so
+//! this is the RC's fragment count as the hardware did it, for fragments per clock against the limit of
+//! one read per clock on the Z port.
 
 use crate::cs::pack::{command_of, record_of, rgb_of, tdata_of};
 use crate::rc::bench::command_word;
@@ -38,13 +43,15 @@ pub struct PhaseCycles {
     pub colour_setup: u64,
     pub scan_out: u64,
     pub total: u64,
+    /// Cycles in rasterization with a Z-buffer read: the fragments the RC Z-tested.
+    pub z_reads: u64,
 }
 
 impl PhaseCycles {
     pub fn to_json(&self) -> String {
         format!(
-            "{{\n  \"clear\": {},\n  \"geometry_transfer\": {},\n  \"rasterization\": {},\n  \"colour_setup\": {},\n  \"scan_out\": {},\n  \"total\": {}\n}}\n",
-            self.clear, self.geometry_transfer, self.rasterization, self.colour_setup, self.scan_out, self.total
+            "{{\n  \"clear\": {},\n  \"geometry_transfer\": {},\n  \"rasterization\": {},\n  \"colour_setup\": {},\n  \"scan_out\": {},\n  \"total\": {},\n  \"z_reads\": {}\n}}\n",
+            self.clear, self.geometry_transfer, self.rasterization, self.colour_setup, self.scan_out, self.total, self.z_reads
         )
     }
 }
@@ -300,6 +307,7 @@ impl Chipset for RtlChipset {
         self.clear_writes = 0;
         self.frame_start = start;
         let (mut first_tri_taken, mut last_cmd_taken) = (None, start);
+        let mut z_reads = 0u64;
         let limit = self.cycle + self.budget(self.screen.pixels() as u64 + 64 * tris.len() as u64);
         loop {
             self.idle_inputs();
@@ -310,6 +318,7 @@ impl Chipset for RtlChipset {
             self.low()?;
             let u = &self.uut;
             let taken = next < words.len() && u.rc_cmd.ready.val();
+            z_reads += u.z_re.val() as u64;
             let mut eof = false;
             if u.rc_result.valid.val() {
                 let r = u.rc_result.data.val();
@@ -352,6 +361,7 @@ impl Chipset for RtlChipset {
         self.phases.clear = self.clear_writes;
         self.phases.geometry_transfer = last_cmd_taken - t0;
         self.phases.rasterization = self.cycle - start;
+        self.phases.z_reads = z_reads;
         self.ibuf_after_raster = self.ibuf.clone();
         self.zbuf_after_raster = self.zbuf.clone();
         Ok(results)

@@ -8,9 +8,10 @@
 use golden::format::Screen;
 use golden::host::{Camera, Lighting};
 use golden::raster::{CullMode, FrontFace};
-use golden::render::{render, render_with, RenderOptions};
+use golden::render::{render, RenderOptions};
 use golden::scene::{builtin, Winding};
 use golden::shade::Shading;
+use tb::backend::render_timed;
 use tb::chipset::RtlChipset;
 
 fn main() {
@@ -43,9 +44,8 @@ fn run() -> Result<(), String> {
         let golden = render(&mesh, &opts)?;
         let mut chip = RtlChipset::new(screen, None)?;
         for frame in [1, 2] {
-            let t0 = std::time::Instant::now();
-            let rtl = render_with(&mesh, &opts, &mut chip)?;
-            let secs = t0.elapsed().as_secs_f64();
+            let run = render_timed(&mesh, &opts, &mut chip);
+            let (rtl, secs) = (run.frame?, run.secs);
             if rtl.rgb != golden.rgb || rtl.hw_index != golden.hw_index || rtl.zbuf != golden.zbuf {
                 return Err(format!("{name} frame {frame}: the RTL frame differs from the golden model's"));
             }

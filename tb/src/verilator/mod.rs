@@ -219,6 +219,12 @@ impl VerilatorChipset {
         Self::with_build(screen, vcd, b)
     }
 
+    /// A chipset started from a harness already built by [`build`] (without a VCD writer): a run of many
+    /// frames checks the cache once per screen size instead of once per chipset.
+    pub fn from_build(screen: Screen, build: Build) -> Result<VerilatorChipset, String> {
+        Self::with_build(screen, None, build)
+    }
+
     fn with_build(screen: Screen, vcd: Option<PathBuf>, build: Build) -> Result<VerilatorChipset, String> {
         let mut cmd = Command::new(&build.exe);
         cmd.arg(screen.width.to_string()).arg(screen.height.to_string());
@@ -428,7 +434,7 @@ impl Chipset for VerilatorChipset {
         let budget = self.budget(self.screen.pixels() as u64 + 64 * tris.len() as u64);
         self.send(format!("raster {} {budget}\n", cmds.len()).as_bytes(), &words)?;
         let f = self.expect("R")?;
-        let [cycle, clear_writes, first_tri_taken, last_cmd_taken, n] = f[..] else {
+        let [cycle, clear_writes, first_tri_taken, last_cmd_taken, z_reads, n] = f[..] else {
             return Err(format!("verilated chipset: bad raster reply {f:?}"));
         };
         let raw = self.words(n as usize)?;
@@ -445,6 +451,7 @@ impl Chipset for VerilatorChipset {
         self.phases.clear = clear_writes as u64;
         self.phases.geometry_transfer = last - t0;
         self.phases.rasterization = self.cycle - start;
+        self.phases.z_reads = z_reads as u64;
         Ok(results)
     }
 

@@ -27,7 +27,7 @@
 // stderr so that nothing the model prints can corrupt the protocol):
 //   P <done> <total> <phase>\n                        progress
 //   E <message>\n                                     the command failed (message as RtlChipset's)
-//   R <cycle> <clear_writes> <first_tri_taken|-1> <last_cmd_taken> <n>\n
+//   R <cycle> <clear_writes> <first_tri_taken|-1> <last_cmd_taken> <z_reads> <n>\n
 //       + n result words (u32, RcResult bits) + W*H I-buffer words + W*H Z-buffer words (u32 each)
 //   S <cycle>\n                                       colour setup done
 //   O <cycle> <n>\n + n video_tdata words (u32)       scan-out done
@@ -215,6 +215,7 @@ void Bench::rasterize(const std::vector<uint32_t>& words, uint64_t budget) {
     clear_writes = 0;
     long long first_tri_taken = -1;
     uint64_t last_cmd_taken = start;
+    uint64_t z_reads = 0;  // cycles with a Z read: the fragments the RC Z-tested (as RtlChipset counts them)
     const uint64_t limit = cycle + budget;
     for (;;) {
         idle_inputs();
@@ -224,6 +225,7 @@ void Bench::rasterize(const std::vector<uint32_t>& words, uint64_t budget) {
         }
         low();
         const bool taken = next < count && top->rc_cmd__024ready;
+        z_reads += top->z_re ? 1 : 0;
         bool eof = false;
         if (top->rc_result__024valid) {
             const uint32_t r = top->rc_result__024data;
@@ -247,8 +249,8 @@ void Bench::rasterize(const std::vector<uint32_t>& words, uint64_t budget) {
             throw Failure{"chipset: no end-of-frame result after " + std::to_string(cycle - start) + " cycles"};
         }
     }
-    fprintf(proto_out, "R %llu %llu %lld %llu %zu\n", (unsigned long long)cycle, (unsigned long long)clear_writes,
-            first_tri_taken, (unsigned long long)last_cmd_taken, results.size());
+    fprintf(proto_out, "R %llu %llu %lld %llu %llu %zu\n", (unsigned long long)cycle, (unsigned long long)clear_writes,
+            first_tri_taken, (unsigned long long)last_cmd_taken, (unsigned long long)z_reads, results.size());
     put_words(results.data(), results.size());
     put_words(ibuf.data(), n);
     put_words(zbuf.data(), n);
