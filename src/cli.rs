@@ -2,7 +2,7 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use golden::format::{Screen, INDEX_BITS_DEFAULT};
-use golden::host::{Camera, Lighting};
+use golden::host::Camera;
 use golden::raster::{CullMode, FrontFace};
 use golden::render::RenderOptions;
 use golden::scene::{builtin, obj, Mesh, Winding};
@@ -206,23 +206,21 @@ pub fn render_options(args: &RenderArgs, mesh: &Mesh) -> Result<RenderOptions, S
             Winding::Cw => FrontFace::Cw,
         },
     };
+    let shading = match args.shading {
+        ShadingArg::Flat => Shading::Flat,
+        ShadingArg::Gouraud => Shading::Gouraud,
+        ShadingArg::Phong => Shading::Phong,
+    };
     Ok(RenderOptions {
-        screen,
         camera,
-        shading: match args.shading {
-            ShadingArg::Flat => Shading::Flat,
-            ShadingArg::Gouraud => Shading::Gouraud,
-            ShadingArg::Phong => Shading::Phong,
-        },
         cull: match args.cull {
             CullArg::Back => CullMode::Back,
             CullArg::Front => CullMode::Front,
             CullArg::None => CullMode::None,
         },
         front,
-        lighting: Lighting::default(),
         index_bits: args.index_bits,
-        background: [24, 24, 40],
+        ..RenderOptions::for_scene(mesh, screen, shading)
     })
 }
 

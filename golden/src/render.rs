@@ -122,6 +122,31 @@ pub struct RenderOptions {
     pub background: [u8; 3],
 }
 
+/// The background colour of every frame (index 0 in the I-buffer).
+pub const BACKGROUND: [u8; 3] = [24, 24, 40];
+
+impl RenderOptions {
+    /// What `idxrender render --scene S --size WxH --shading X` uses when nothing else is given: the
+    /// default view of the mesh, back faces culled, the mesh's own front face, the default lights, the
+    /// default index width and [`BACKGROUND`]. The CLI, the figure programs and the frame tests all
+    /// start here, so they render the same frame.
+    pub fn for_scene(mesh: &crate::scene::Mesh, screen: Screen, shading: Shading) -> RenderOptions {
+        RenderOptions {
+            screen,
+            camera: Camera::default_view(mesh, screen),
+            shading,
+            cull: CullMode::Back,
+            front: match mesh.front_face {
+                crate::scene::Winding::Ccw => FrontFace::Ccw,
+                crate::scene::Winding::Cw => FrontFace::Cw,
+            },
+            lighting: Lighting::default(),
+            index_bits: crate::format::INDEX_BITS_DEFAULT,
+            background: BACKGROUND,
+        }
+    }
+}
+
 /// Per-frame statistics (issue 2 §6); source-triangle counts are seed 001 Table 1's (a), (b), (c).
 #[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
 pub struct FrameStats {

@@ -4,28 +4,10 @@
 //! the triangles the RTL flagged visible (3 vertex lightings each for Gouraud).
 
 use golden::render::{render, render_with, Frame, RenderOptions};
-use golden::scene::{builtin, Mesh, Winding};
+use golden::scene::{builtin, Mesh};
 use golden::format::Screen;
-use golden::host::{Camera, Lighting};
-use golden::raster::{CullMode, FrontFace};
 use golden::shade::Shading;
 use tb::chipset::RtlChipset;
-
-fn options(mesh: &Mesh, screen: Screen, shading: Shading) -> RenderOptions {
-    RenderOptions {
-        screen,
-        camera: Camera::default_view(mesh, screen),
-        shading,
-        cull: CullMode::Back,
-        front: match mesh.front_face {
-            Winding::Ccw => FrontFace::Ccw,
-            Winding::Cw => FrontFace::Cw,
-        },
-        lighting: Lighting::default(),
-        index_bits: 16,
-        background: [24, 24, 40],
-    }
-}
 
 fn first_difference(what: &str, a: &[u32], b: &[u32], w: u32) -> Option<String> {
     let i = (0..a.len()).find(|&i| a[i] != b[i])?;
@@ -34,7 +16,7 @@ fn first_difference(what: &str, a: &[u32], b: &[u32], w: u32) -> Option<String> 
 
 fn assert_rtl_frame_equals_golden(mesh: &Mesh, shading: Shading) {
     let screen = Screen::new(320, 200).unwrap();
-    let opts = options(mesh, screen, shading);
+    let opts = RenderOptions::for_scene(mesh, screen, shading);
     let golden: Frame = render(mesh, &opts).unwrap();
     let mut chip = RtlChipset::new(screen, None).unwrap();
     let rtl = render_with(mesh, &opts, &mut chip).unwrap_or_else(|e| panic!("{}: RTL run failed: {e}", mesh.name));
@@ -97,9 +79,9 @@ fn a_second_frame_uses_the_buffers_the_color_shader_cleared_behind_the_first() {
     let screen = Screen::new(160, 100).unwrap();
     let mut chip = RtlChipset::new(screen, None).unwrap();
     let castle = builtin::scene("castle").unwrap();
-    render_with(&castle, &options(&castle, screen, Shading::Gouraud), &mut chip).unwrap();
+    render_with(&castle, &RenderOptions::for_scene(&castle, screen, Shading::Gouraud), &mut chip).unwrap();
     let dolphins = builtin::scene("dolphins").unwrap();
-    let opts = options(&dolphins, screen, Shading::Gouraud);
+    let opts = RenderOptions::for_scene(&dolphins, screen, Shading::Gouraud);
     let rtl = render_with(&dolphins, &opts, &mut chip).unwrap();
     assert_eq!(chip.phases.clear, 0, "the second frame needs no clear");
     let golden = render(&dolphins, &opts).unwrap();

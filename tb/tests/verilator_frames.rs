@@ -5,10 +5,8 @@
 //! installed (the test script installs it).
 
 use golden::format::Screen;
-use golden::host::{Camera, Lighting};
-use golden::raster::{CullMode, FrontFace};
 use golden::render::{render, render_with, Chipset, Frame, RenderOptions};
-use golden::scene::{builtin, Mesh, Winding};
+use golden::scene::builtin;
 use golden::shade::{PhongLights, Shading};
 use tb::chipset::RtlChipset;
 use tb::common::{have_tool, vcd_path};
@@ -20,22 +18,6 @@ fn verilator_missing(test: &str) -> bool {
     }
     eprintln!("SKIPPED {test}: `verilator` is not on PATH (apt-get install verilator)");
     true
-}
-
-fn options(mesh: &Mesh, screen: Screen, shading: Shading) -> RenderOptions {
-    RenderOptions {
-        screen,
-        camera: Camera::default_view(mesh, screen),
-        shading,
-        cull: CullMode::Back,
-        front: match mesh.front_face {
-            Winding::Ccw => FrontFace::Ccw,
-            Winding::Cw => FrontFace::Cw,
-        },
-        lighting: Lighting::default(),
-        index_bits: 16,
-        background: [24, 24, 40],
-    }
 }
 
 /// The first difference between two frames, named by buffer and pixel.
@@ -72,7 +54,7 @@ fn teapot_at_320x200_through_the_verilated_chipset_equals_the_golden_frame() {
     }
     let screen = Screen::new(320, 200).unwrap();
     let mesh = builtin::teapot(builtin::TEAPOT_GRID);
-    let opts = options(&mesh, screen, Shading::Gouraud);
+    let opts = RenderOptions::for_scene(&mesh, screen, Shading::Gouraud);
     let golden = render(&mesh, &opts).unwrap();
     let mut chip = VerilatorChipset::new(screen, None).unwrap();
     let t0 = std::time::Instant::now();
@@ -107,7 +89,7 @@ fn every_builtin_scene_at_320x200_and_640x480_through_the_verilated_chipset_equa
         let mut chip = VerilatorChipset::new(screen, None).unwrap();
         for name in builtin::SCENES {
             let mesh = builtin::scene(name).unwrap();
-            let opts = options(&mesh, screen, Shading::Gouraud);
+            let opts = RenderOptions::for_scene(&mesh, screen, Shading::Gouraud);
             let golden = render(&mesh, &opts).unwrap();
             match render_with(&mesh, &opts, &mut chip) {
                 Err(e) => failures.push(format!("{name} {w}x{h}: Verilator run failed: {e}")),
@@ -128,7 +110,7 @@ fn polyhedron_cycles_per_phase_through_verilator_equal_the_rusthdl_simulations()
     }
     let screen = Screen::new(64, 48).unwrap();
     let mesh = builtin::polyhedron();
-    let opts = options(&mesh, screen, Shading::Gouraud);
+    let opts = RenderOptions::for_scene(&mesh, screen, Shading::Gouraud);
     let mut rtl = RtlChipset::new(screen, None).unwrap();
     let a = render_with(&mesh, &opts, &mut rtl).unwrap();
     let mut vl = VerilatorChipset::new(screen, None).unwrap();
@@ -153,7 +135,7 @@ fn a_second_verilated_frame_uses_the_buffers_the_color_shader_cleared_behind_the
     let screen = Screen::new(64, 48).unwrap();
     let castle = builtin::scene("castle").unwrap();
     let dolphins = builtin::scene("dolphins").unwrap();
-    let (o1, o2) = (options(&castle, screen, Shading::Gouraud), options(&dolphins, screen, Shading::Flat));
+    let (o1, o2) = (RenderOptions::for_scene(&castle, screen, Shading::Gouraud), RenderOptions::for_scene(&dolphins, screen, Shading::Flat));
     let mut vl = VerilatorChipset::new(screen, None).unwrap();
     render_with(&castle, &o1, &mut vl).unwrap();
     let second = render_with(&dolphins, &o2, &mut vl).unwrap();
@@ -270,7 +252,7 @@ fn the_verilated_chipsets_port_waveforms_equal_the_rusthdl_simulations_at_every_
     }
     let screen = Screen::new(16, 8).unwrap();
     let mesh = builtin::polyhedron();
-    let opts = options(&mesh, screen, Shading::Gouraud);
+    let opts = RenderOptions::for_scene(&mesh, screen, Shading::Gouraud);
     let (pr, pv) = (vcd_path("chipset_verilator", "polyhedron_16x8_rusthdl"), vcd_path("chipset_verilator", "polyhedron_16x8_verilator"));
     let mut rtl = RtlChipset::new(screen, Some(pr.clone())).unwrap();
     render_with(&mesh, &opts, &mut rtl).unwrap();

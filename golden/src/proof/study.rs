@@ -8,10 +8,8 @@ use super::cycle_opp::{run_opp, OppRun};
 use super::render::{object_lists, ops_needed};
 use super::setup::scene_setup;
 use crate::format::Screen;
-use crate::host::{Camera, Lighting};
-use crate::raster::{CullMode, FrontFace};
 use crate::render::RenderOptions;
-use crate::scene::{Mesh, Winding};
+use crate::scene::Mesh;
 use crate::shade::Shading;
 
 /// The options of `idxrender render --arch proof --scene S --size WxH` with no other flag: the
@@ -19,17 +17,7 @@ use crate::shade::Shading;
 /// own front face, the default lighting and background. `tests/proof_cli.rs` checks that the CLI
 /// reports the same figures.
 pub fn cli_options(mesh: &Mesh, w: u32, h: u32) -> RenderOptions {
-    let screen = Screen::new(w, h).expect("study screen size");
-    RenderOptions {
-        screen,
-        camera: Camera::default_view(mesh, screen),
-        shading: Shading::Gouraud,
-        cull: CullMode::Back,
-        front: if mesh.front_face == Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
-        lighting: Lighting::default(),
-        index_bits: crate::format::INDEX_BITS_DEFAULT,
-        background: [24, 24, 40],
-    }
+    RenderOptions::for_scene(mesh, Screen::new(w, h).expect("study screen size"), Shading::Gouraud)
 }
 
 /// One scene's row of the FIFO table.

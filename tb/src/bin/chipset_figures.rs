@@ -6,10 +6,8 @@
 //! host's operation counts with enhanced deferred lighting against seed 001's Type I and Type II.
 
 use golden::format::Screen;
-use golden::host::{Camera, Lighting};
-use golden::raster::{CullMode, FrontFace};
 use golden::render::{render, RenderOptions};
-use golden::scene::{builtin, Winding};
+use golden::scene::builtin;
 use golden::shade::Shading;
 use tb::backend::render_timed;
 use tb::chipset::RtlChipset;
@@ -31,16 +29,7 @@ fn run() -> Result<(), String> {
     );
     for name in builtin::SCENES {
         let mesh = builtin::scene(name)?;
-        let opts = RenderOptions {
-            screen,
-            camera: Camera::default_view(&mesh, screen),
-            shading: Shading::Gouraud,
-            cull: CullMode::Back,
-            front: if mesh.front_face == Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
-            lighting: Lighting::default(),
-            index_bits: 16,
-            background: [24, 24, 40],
-        };
+        let opts = RenderOptions::for_scene(&mesh, screen, Shading::Gouraud);
         let golden = render(&mesh, &opts)?;
         let mut chip = RtlChipset::new(screen, None)?;
         for frame in [1, 2] {
