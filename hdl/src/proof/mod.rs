@@ -6,6 +6,7 @@
 
 pub mod edge_mask;
 pub mod filter;
+pub mod filter_front;
 pub mod light_processor;
 pub mod object_processor;
 pub mod opp;
@@ -16,6 +17,7 @@ pub mod table_ram;
 pub mod types;
 
 pub use filter::{verilog_filter, FilterStage};
+pub use filter_front::FilterFront;
 pub use object_processor::ObjectProcessor;
 pub use opp::Opp;
 pub use slot_fifo::SlotFifo;

@@ -26,20 +26,20 @@ fn filter_or_panic(name: &str, seed: u64, bits: usize, cfg: &[CfgWrite], slots: 
 }
 
 /// A scene's lists shaded by the golden shading: the filter's input slots, and the golden filter's
-/// image and coverage.
-fn scene_slots(sc: &ProofScene) -> (Vec<ShadedSlot>, Vec<u8>, Vec<u8>) {
+/// image (filter area `area`) and coverage.
+pub(super) fn scene_slots(sc: &ProofScene, area: FilterArea) -> (Vec<ShadedSlot>, Vec<u8>, Vec<u8>) {
     let lists = object_lists(sc.screen, &sc.objects);
     let colours: Vec<Vec<[u8; 3]>> =
         lists.iter().map(|l| l.iter().map(|e| shade_entry(&sc.lights, e.normal, sc.material[e.id as usize])).collect()).collect();
-    let (rgb, cov) = filter_lists(sc, &lists, &colours, FilterArea::Box1);
+    let (rgb, cov) = filter_lists(sc, &lists, &colours, area);
     (shaded_slots(sc.screen.width, &lists, &colours), rgb, cov)
 }
 
-fn scene_dirs(sc: &ProofScene) -> Vec<[(i16, i16); 3]> {
+pub(super) fn scene_dirs(sc: &ProofScene) -> Vec<[(i16, i16); 3]> {
     (0..sc.objects.len()).map(|i| dirs_of(sc, i as u16)).collect()
 }
 
-fn check_image(what: &str, w: u32, run: &FilterRun, rgb: &[u8], cov: &[u8]) {
+pub(super) fn check_image(what: &str, w: u32, run: &FilterRun, rgb: &[u8], cov: &[u8]) {
     assert_eq!(run.pixels.len(), cov.len(), "{what}: pixel count");
     for (p, o) in run.pixels.iter().enumerate() {
         let (x, y) = ((p as u32 % w) as u16, (p as u32 / w) as u16);
@@ -55,7 +55,7 @@ fn filter_stage_matches_its_cycle_model_every_cycle_and_the_golden_filter_on_pol
     println!("seed {seed} (SEED=n replays)");
     for (name, grid, w, h) in [("polyhedron", 0, 40, 25), ("teapot", 2, 40, 25)] {
         let sc = scene(name, grid, w, h);
-        let (slots, rgb, cov) = scene_slots(&sc);
+        let (slots, rgb, cov) = scene_slots(&sc, FilterArea::Box1);
         let cfg = filter_config(&scene_dirs(&sc), sc.background, 10).unwrap();
         let gaps = StageGaps { seed: rng.next_u64(), source_gap_percent: 20, sink_gap_percent: 30 };
         let t0 = std::time::Instant::now();
@@ -110,12 +110,11 @@ fn filter_stage_on_random_lists_with_extreme_distances_and_directions_matches_it
 
 #[test]
 fn filter_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_without_latches() {
-    use std::process::Command;
     for t in ["iverilog", "verilator", "yosys"] {
         assert!(have_tool(t), "{t} is not installed (scripts/test.sh installs it)");
     }
     let sc = scene("teapot", 2, 24, 16);
-    let (slots, rgb, cov) = scene_slots(&sc);
+    let (slots, rgb, cov) = scene_slots(&sc, FilterArea::Box1);
     let cfg = filter_config(&scene_dirs(&sc), sc.background, 8).unwrap();
     let dir = scratch_dir("proof_filter_replay");
     let gaps = StageGaps { seed: 78, source_gap_percent: 25, sink_gap_percent: 25 };
@@ -129,18 +128,24 @@ fn filter_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_witho
         println!("{sim}: {verdict}");
         assert!(verdict.contains(&cycles.to_string()));
     }
-    // Lint the top that `idxrender verilog --block proof_filter` writes. Waivers: WIDTH (rust-hdl's
-    // 32-bit literals and shift counts), DECLFILENAME (one file), UNUSEDSIGNAL (table address bits
-    // above the table size, the low bits of the subpixel distances: only the signs are used, the
-    // fraction bits the output drops).
-    let top = hdl::verilog_top("proof_filter").unwrap();
-    std::fs::write(dir.join("proof_filter.v"), &top).unwrap();
+    // Lint the top that `idxrender verilog --block proof_filter` writes.
+    lint_clean(&dir, "proof_filter", &hdl::verilog_top("proof_filter").unwrap());
+    synth_without_latches(&dir, "proof_filter8", &v);
+}
+
+/// `verilator --lint-only -Wall` of a filter top, clean with the project's named waivers: WIDTH
+/// (rust-hdl's 32-bit literals and shift counts), DECLFILENAME (one file), UNUSEDSIGNAL (table address
+/// bits above the table size, the low bits of the subpixel distances: only the signs are used, the
+/// fraction bits the output drops).
+pub(super) fn lint_clean(dir: &std::path::Path, top: &str, v: &str) {
+    use std::process::Command;
+    let file = dir.join(format!("{top}.v"));
+    std::fs::write(&file, v).unwrap();
     let o = Command::new("verilator")
-        .args(["--lint-only", "-Wall", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSEDSIGNAL", "--top-module", "proof_filter"])
-        .arg(dir.join("proof_filter.v"))
+        .args(["--lint-only", "-Wall", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSEDSIGNAL", "--top-module", top])
+        .arg(&file)
         .output()
         .unwrap();
     let text = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success() && !text.contains("%Warning") && !text.contains("%Error"), "verilator lint:\n{text}");
-    synth_without_latches(&dir, "proof_filter8", &v);
+    assert!(o.status.success() && !text.contains("%Warning") && !text.contains("%Error"), "verilator lint of {top}:\n{text}");
 }
