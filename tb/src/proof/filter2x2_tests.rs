@@ -3,7 +3,7 @@
 
 use super::filter2x2_bench::{box_ports, run_box, run_filter2x2};
 use super::filter_bench::{filter_ports, FilterRun};
-use super::filter_tests::{check_image, lint_clean, scene_dirs, scene_slots};
+use super::filter_tests::{check_image, lint_clean, random_lists, scene_dirs, scene_slots};
 use super::shade_bench::StageGaps;
 use super::stage_tests::{scene, synth_without_latches};
 use crate::common::{have_tool, scratch_dir, vcd_path, vcd_wanted, Rng};
@@ -11,7 +11,7 @@ use golden::proof::cycle_filter::{filter_config, FilteredPixel};
 use golden::proof::cycle_filter2x2::{box2_of_quads, random_quads, QuadPixel};
 use golden::proof::cycle_opp::GapRng;
 use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};
-use golden::proof::filter::FilterArea;
+use golden::proof::filter::{box2, quadrant_sums, FilterArea};
 
 /// Run the 2x2 stage bench; on a failure rerun it with a waveform and panic with the report.
 #[allow(clippy::too_many_arguments)]
@@ -69,6 +69,28 @@ fn filter2x2_stage_matches_its_cycle_model_every_cycle_and_the_golden_2x2_filter
         println!("{name} {w}x{h}: {} slots, {} pixels, {} cycles in {:?}", slots.len(), run.pixels.len(), run.cycles, t0.elapsed());
         check_image(name, w, &run, &rgb, &cov);
     }
+}
+
+/// The whole 2x2 stage on random lists (the 1x1 bench's stimulus: extreme distances and directions,
+/// full entries, empty pixels) on every pixel, the screen's border included, which the scenes above
+/// leave empty: the RTL against the model every cycle, the pixels against golden `quadrant_sums` and
+/// `box2`.
+#[test]
+fn filter2x2_stage_on_random_lists_with_entries_on_the_screen_border_matches_its_model_and_the_golden_2x2_filter() {
+    let mut rng = Rng::new(0x2ed9e);
+    let seed = rng.seed();
+    println!("seed {seed} (SEED=n replays)");
+    let (w, h) = (24u32, 12u32);
+    let r = random_lists(&mut rng, w, h);
+    let quads: Vec<[[u32; 3]; 4]> = r.owners.iter().map(|(o, c, t)| quadrant_sums(o, c, *t, r.bg)).collect();
+    let rgb = box2(w, h, &quads);
+    let cov: Vec<u8> = r.owners.iter().map(|(_, _, t)| t.count_ones() as u8).collect();
+    let cfg = filter_config(&r.dirs, r.bg, 6).unwrap();
+    let gaps = StageGaps { seed: rng.next_u64(), source_gap_percent: 30, sink_gap_percent: 40 };
+    let run = filter2x2_or_panic("filter2x2_random_lists_every_cycle", seed, 6, w, h, &cfg, &r.slots, gaps);
+    check_image("random lists, 2x2", w, &run, &rgb, &cov);
+    let border_covered = (0..w * h).filter(|&p| (p % w == 0 || p % w == w - 1 || p / w == 0 || p / w == h - 1) && cov[p as usize] > 0).count();
+    assert!(border_covered > 20, "the stimulus should cover the border ({border_covered} border pixels covered)");
 }
 
 /// The box alone on random quadrant sums with the extremes (empty and fully covered quadrants, 255 per
