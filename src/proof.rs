@@ -5,14 +5,17 @@
 //! `--backend golden` renders with the algorithmic model and also runs the OPP's cycle model (checked
 //! against the algorithmic lists) for the cycle count; `--backend rtl` runs the frame through the
 //! RustHDL simulations of the OPP, the shading stage and the filter stage (`tb::proof`), each checked
-//! against its cycle model every cycle. The filter RTL is the 1x1 box: with `--filter 2x2` the RTL
-//! backend filters the RTL's shaded entries with the golden 2x2 filter and says so. `--vcd` writes
-//! `frame.vcd` (OPP), `shade.vcd` (shading stage) and `filter.vcd` (filter stage).
+//! against its cycle model every cycle. The filter stage is the RTL of the chosen area: `--filter 1x1`
+//! the 1x1 box (`FilterStage`, top `proof_filter`), `--filter 2x2` the paper's 2x2 area
+//! (`Filter2x2Stage`, top `proof_filter2x2`, built for the frame's screen size, at least 2 pixels
+//! wide). `--vcd` writes `frame.vcd` (OPP), `shade.vcd` (shading stage) and `filter.vcd` (filter
+//! stage).
 
 use crate::cli::{BackendArg, RenderArgs};
 use golden::proof::cycle_opp::run_opp;
 use golden::proof::filter::FilterArea;
-use golden::proof::render::{filter_lists, list_stats, object_lists, ops_needed, shade_and_filter};
+use golden::proof::cycle_filter2x2::check_box_size;
+use golden::proof::render::{list_stats, object_lists, ops_needed, shade_and_filter};
 use golden::proof::setup::scene_setup;
 use golden::render::RenderOptions;
 use golden::scene::Mesh;
@@ -32,6 +35,10 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     }
     if args.vcd && args.backend != BackendArg::Rtl {
         return Err("--vcd needs --backend rtl".into());
+    }
+    if args.backend == BackendArg::Rtl && area == FilterArea::Box2 {
+        // Before any simulation: the 2x2 RTL's line buffer fixes what screens it can filter.
+        check_box_size(opts.screen.width, opts.screen.height)?;
     }
     let t0 = std::time::Instant::now();
     let scene = scene_setup(mesh, opts)?;
@@ -65,21 +72,12 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
             };
             let (lists, run) = tb::proof::backend::opp_lists_rtl(&scene, n_ops, args.fifo_depth, vcd_of("frame.vcd")?.as_deref())?;
             let (shaded, shade_cycles) = tb::proof::backend::shade_slots_rtl(&scene, &lists, vcd_of("shade.vcd")?.as_deref())?;
-            let (image, filter_cycles) = match area {
-                FilterArea::Box1 => {
-                    let (rgb, covered, c) = tb::proof::backend::filter_rtl(&scene, &shaded, vcd_of("filter.vcd")?.as_deref())?;
-                    ((rgb, covered), Some(c))
-                }
-                FilterArea::Box2 => {
-                    crate::say!("  note: the filter RTL is the 1x1 box; the 2x2 area is filtered by the golden model from the RTL's colours");
-                    let mut colours: Vec<Vec<[u8; 3]>> = lists.iter().map(|l| Vec::with_capacity(l.len())).collect();
-                    let w = scene.screen.width as usize;
-                    for o in shaded.iter().filter(|o| o.has_entry) {
-                        colours[o.y as usize * w + o.x as usize].push(o.rgb);
-                    }
-                    (filter_lists(&scene, &lists, &colours, area), None)
-                }
+            let filter_vcd = vcd_of("filter.vcd")?;
+            let (rgb, covered, filter_cycles) = match area {
+                FilterArea::Box1 => tb::proof::backend::filter_rtl(&scene, &shaded, filter_vcd.as_deref())?,
+                FilterArea::Box2 => tb::proof::backend::filter2x2_rtl(&scene, &shaded, filter_vcd.as_deref())?,
             };
+            let image = (rgb, covered);
             (lists, run, "rtl", image, Some((shade_cycles, filter_cycles)))
         }
         BackendArg::Verilator => {
@@ -87,6 +85,10 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         }
     };
     let (rgb, covered) = image;
+    let filter_top = match area {
+        FilterArea::Box1 => "proof_filter",
+        FilterArea::Box2 => "proof_filter2x2",
+    };
     let stats = list_stats(&scene, &lists, &covered);
     let secs = t0.elapsed().as_secs_f64();
     let (w, h) = (scene.screen.width, scene.screen.height);
@@ -105,7 +107,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "front_face": opts.front,
         "camera": opts.camera,
         "opp": cycles,
-        "rtl_stage_cycles": stage_cycles.map(|(s, f)| serde_json::json!({ "shading": s, "filter": f, "filter_backend": if f.is_some() { "rtl" } else { "golden (2x2 has no RTL)" } })),
+        "rtl_stage_cycles": stage_cycles.map(|(s, f)| serde_json::json!({ "shading": s, "filter": f, "filter_backend": "rtl", "filter_top": filter_top })),
         "stats": stats,
     });
     std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create output directory {}: {e}", args.out.display()))?;
@@ -122,6 +124,9 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "  {} list entries, longest list {}, {} pixels anti-aliased; {:.3} s",
         stats.entries, stats.max_list, stats.pixels_with_partial, secs
     );
+    if let Some((s, f)) = stage_cycles {
+        crate::say!("  RTL shading stage {s} cycles; RTL filter stage ({filter_top}, {} area) {f} cycles", json["filter"].as_str().unwrap_or(""));
+    }
     for f in files {
         crate::say!("  wrote {}", f.display());
     }

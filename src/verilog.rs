@@ -220,6 +220,7 @@ fn known_struct(top: &str) -> Option<&'static str> {
         "opp" => "Opp",
         "proof_shade" => "ShadingStage",
         "proof_filter" => "FilterStage",
+        "proof_filter2x2" => "Filter2x2Stage",
         "rc" => "Rc",
         "colour_setup" => "ColourSetup",
         "cs" => "ColorShader",
@@ -293,6 +294,7 @@ fn memory_interface(top: &str) -> &'static str {
         "opp" => "No external memory: the object parameters are loaded through `load`/`load_op`/`load_params`; the FIFOs are inside.",
         "proof_shade" => "No external memory: the object table and the light parameters are inside (written through `cfg_*`).",
         "proof_filter" => "No external memory: the direction table and the filter's parameters are inside (written through `cfg_*`).",
+        "proof_filter2x2" => "No external memory: the direction table and the filter's parameters are inside (written through `cfg_*`); the 2x2 box's line buffer (one 112-bit word per screen column) is inside too. The screen size is fixed at generation (320x200): the stream must be whole frames of that size in raster order.",
         _ => "See the port table (no memory-interface note is written for this top yet).",
     }
 }

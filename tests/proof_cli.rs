@@ -38,21 +38,47 @@ fn proof_render_writes_an_antialiased_frame_a_coverage_image_and_stats() {
 }
 
 /// The OPP, shading and filter stages all in RTL (OPP -> shading -> filter), against the golden
-/// model: the PNG files must be identical.
+/// model, with both filter areas (1x1: `proof_filter`; the paper's 2x2: `proof_filter2x2`): the PNG
+/// files must be identical, and stats.json must say that the filter ran in RTL.
 #[test]
 fn proof_rtl_backend_frame_equals_the_golden_frame_byte_for_byte() {
     for (scene, extra) in [("polyhedron", vec!["--size", "64x40"]), ("teapot", vec!["--grid", "2", "--size", "48x30"])] {
-        let mut files = Vec::new();
-        for backend in ["golden", "rtl"] {
-            let out = temp_dir(&format!("{scene}-{backend}"));
-            let mut args = vec!["render", "--arch", "proof", "--scene", scene, "--backend", backend, "--out", out.to_str().unwrap()];
-            args.extend(extra.iter());
-            let (ok, _, err) = run(&args);
-            assert!(ok, "{scene} {backend}: {err}");
-            files.push((std::fs::read(out.join("frame.png")).unwrap(), std::fs::read(out.join("coverage.png")).unwrap()));
+        let mut frames = Vec::new();
+        for (filter, top) in [("1x1", "proof_filter"), ("2x2", "proof_filter2x2")] {
+            let mut files = Vec::new();
+            for backend in ["golden", "rtl"] {
+                let out = temp_dir(&format!("{scene}-{filter}-{backend}"));
+                let mut args = vec!["render", "--arch", "proof", "--scene", scene, "--filter", filter, "--backend", backend, "--out", out.to_str().unwrap()];
+                args.extend(extra.iter());
+                let (ok, stdout, err) = run(&args);
+                assert!(ok, "{scene} {filter} {backend}: {err}");
+                files.push((std::fs::read(out.join("frame.png")).unwrap(), std::fs::read(out.join("coverage.png")).unwrap()));
+                if backend == "rtl" {
+                    let stats: serde_json::Value = serde_json::from_slice(&std::fs::read(out.join("stats.json")).unwrap()).unwrap();
+                    let st = &stats["rtl_stage_cycles"];
+                    assert_eq!((st["filter_backend"].as_str(), st["filter_top"].as_str()), (Some("rtl"), Some(top)), "{scene} {filter}: {stats}");
+                    assert!(st["filter"].as_u64().unwrap() > 0, "{scene} {filter}: no filter cycles in {stats}");
+                    assert!(stdout.contains(&format!("RTL filter stage ({top}, {filter} area)")), "{scene} {filter}: {stdout}");
+                    assert!(!stdout.contains("golden"), "{scene} {filter}: the RTL run mentions the golden model: {stdout}");
+                }
+            }
+            assert!(files[0] == files[1], "{scene} {filter}: the RTL backend's images differ from the golden model's");
+            frames.push(files.swap_remove(0).0);
         }
-        assert!(files[0] == files[1], "{scene}: the RTL backend's images differ from the golden model's");
+        assert!(frames[0] != frames[1], "{scene}: the 2x2 frame should differ from the 1x1 frame");
     }
+}
+
+/// The 2x2 RTL's line buffer needs a screen at least 2 pixels wide: said before any simulation.
+#[test]
+fn proof_rtl_2x2_filter_on_a_one_pixel_wide_screen_is_a_clear_error() {
+    let out = temp_dir("narrow");
+    let a = ["render", "--arch", "proof", "--scene", "polyhedron", "--size", "1x20", "--filter", "2x2", "--backend", "rtl", "--out", out.to_str().unwrap()];
+    let (ok, _, err) = run(&a);
+    assert!(!ok && !err.contains("panicked") && err.contains("1x20") && err.contains("width must be 2..=1024"), "{err}");
+    // The golden model filters any screen.
+    let (ok, _, err) = run(&["render", "--arch", "proof", "--scene", "polyhedron", "--size", "1x20", "--filter", "2x2", "--out", out.to_str().unwrap()]);
+    assert!(ok, "{err}");
 }
 
 #[test]

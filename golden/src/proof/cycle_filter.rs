@@ -146,14 +146,15 @@ pub struct SumReg {
     pub covered: u8,
 }
 
-/// The filter stage, register by register.
+/// The front end of the filter stage, F0..F4 (seed 002 §6.1: the subpixel mask and which entry owns
+/// each subpixel), shared by the 1x1 back end ([`FilterModel`]) and the 2x2 back end
+/// (`cycle_filter2x2::Filter2x2Model`): everything up to F4's visible and union masks.
 #[derive(Clone, Debug)]
-pub struct FilterModel {
+pub struct FilterFront {
     pub obj_addr_bits: u32,
     /// Direction table: (cos, sin) of the three edges per object, and its output register.
     pub dir_table: Vec<[i16; 6]>,
     pub dir_q: [i16; 6],
-    pub background: [u8; 3],
     pub f0: Tag,
     pub f1: (Tag, [EdgeF1; 3]),
     pub f2: (Tag, [EdgeF2; 3]),
@@ -162,6 +163,13 @@ pub struct FilterModel {
     /// Pixel state: subpixels taken by nearer entries.
     pub taken: u64,
     pub f4: VisReg,
+}
+
+/// The filter stage with the 1x1 box, register by register: [`FilterFront`] then F5, F6, OUT.
+#[derive(Clone, Debug)]
+pub struct FilterModel {
+    pub front: FilterFront,
+    pub background: [u8; 3],
     pub f5: WeightReg,
     /// Pixel state: colour sums of the entries so far.
     pub sum: [u32; 3],
@@ -195,36 +203,26 @@ pub fn edge_f3(e: &EdgeF2) -> u64 {
     m
 }
 
-impl FilterModel {
-    /// A stage with a direction table of 2^`obj_addr_bits` entries.
-    pub fn new(obj_addr_bits: u32) -> Result<FilterModel, String> {
+impl FilterFront {
+    /// A front end with a direction table of 2^`obj_addr_bits` entries.
+    pub fn new(obj_addr_bits: u32) -> Result<FilterFront, String> {
         check_filter_params(obj_addr_bits)?;
-        Ok(FilterModel {
+        Ok(FilterFront {
             obj_addr_bits,
             dir_table: vec![[0; 6]; 1 << obj_addr_bits],
             dir_q: [0; 6],
-            background: [0; 3],
             f0: Tag::default(),
             f1: Default::default(),
             f2: Default::default(),
             f3: Default::default(),
             taken: 0,
             f4: VisReg::default(),
-            f5: WeightReg::default(),
-            sum: [0; 3],
-            f6: SumReg::default(),
-            out_valid: false,
-            out: FilteredPixel::default(),
         })
     }
 
-    pub fn outputs(&self, down_ready: bool) -> FilterOut {
-        FilterOut { up_ready: !self.out_valid || down_ready, down_valid: self.out_valid, down_data: self.out }
-    }
-
-    /// Whether any register holds a slot or a pixel is half done.
+    /// Whether any register of F0..F4 holds a slot.
     pub fn busy(&self) -> bool {
-        self.f0.valid || self.f1.0.valid || self.f2.0.valid || self.f3.0.valid || self.f4.tag.valid || self.f5.tag.valid || self.f6.tag.valid || self.out_valid
+        self.f0.valid || self.f1.0.valid || self.f2.0.valid || self.f3.0.valid || self.f4.tag.valid
     }
 
     /// The entry mask F3 holds: AND of the edges, all for a full entry, none for an empty slot.
@@ -239,6 +237,66 @@ impl FilterModel {
         }
     }
 
+    /// One edge with the global stall open: F4 ← F3 ← F2 ← F1 ← F0 ← the input slot. The back end
+    /// must read F4 before calling this.
+    pub fn advance(&mut self, up_valid: bool, up_data: &ShadedSlot) {
+        // F4: visibility against the nearer entries of the pixel.
+        let mask = self.entry_mask();
+        let t3 = self.f3.0;
+        self.f4 = VisReg { tag: t3, visible: mask & !self.taken, union: self.taken | mask };
+        if t3.valid {
+            self.taken = if t3.slot.last { 0 } else { self.taken | mask };
+        }
+        // F3, F2, F1: the trees.
+        self.f3 = (self.f2.0, self.f2.1.map(|e| edge_f3(&e)));
+        self.f2 = (self.f1.0, self.f1.1.map(|e| edge_f2(&e)));
+        let (s, q) = (self.f0.slot, self.dir_q);
+        self.f1 = (self.f0, [0, 1, 2].map(|k| edge_f1(s.dist[k], q[2 * k], q[2 * k + 1])));
+        // F0: the slot; read the direction table.
+        self.f0 = Tag { valid: up_valid, slot: *up_data };
+        self.dir_q = self.dir_table[up_data.id as usize & ((1usize << self.obj_addr_bits) - 1)];
+    }
+
+    /// A host write to the direction table (cfg target [`CFG_DIRS`]).
+    pub fn write_dirs(&mut self, c: &CfgWrite) {
+        let a = c.addr as usize & ((1usize << self.obj_addr_bits) - 1);
+        self.dir_table[a] = [0, 1, 2, 3, 4, 5].map(|k| ((c.data >> (16 * k)) & 0xffff) as u16 as i16);
+    }
+}
+
+/// A host write to a filter stage (either area): the direction table or the background colour.
+pub fn filter_write(front: &mut FilterFront, background: &mut [u8; 3], c: &CfgWrite) -> Result<(), String> {
+    match c.sel {
+        CFG_DIRS => front.write_dirs(c),
+        CFG_BACKGROUND => *background = [0, 1, 2].map(|k| ((c.data >> (8 * k)) & 0xff) as u8),
+        s => return Err(format!("cfg_sel {s} is not a filter-stage target (0: directions, 1: background)")),
+    }
+    Ok(())
+}
+
+impl FilterModel {
+    /// A stage with a direction table of 2^`obj_addr_bits` entries.
+    pub fn new(obj_addr_bits: u32) -> Result<FilterModel, String> {
+        Ok(FilterModel {
+            front: FilterFront::new(obj_addr_bits)?,
+            background: [0; 3],
+            f5: WeightReg::default(),
+            sum: [0; 3],
+            f6: SumReg::default(),
+            out_valid: false,
+            out: FilteredPixel::default(),
+        })
+    }
+
+    pub fn outputs(&self, down_ready: bool) -> FilterOut {
+        FilterOut { up_ready: !self.out_valid || down_ready, down_valid: self.out_valid, down_data: self.out }
+    }
+
+    /// Whether any register holds a slot or a pixel is half done.
+    pub fn busy(&self) -> bool {
+        self.front.busy() || self.f5.tag.valid || self.f6.tag.valid || self.out_valid
+    }
+
     /// One clock; returns the outputs before the edge.
     pub fn step(&mut self, inp: &FilterIn) -> Result<FilterOut, String> {
         let out = self.outputs(inp.down_ready);
@@ -246,7 +304,7 @@ impl FilterModel {
             self.advance(inp);
         }
         if let Some(c) = inp.cfg {
-            self.write(&c)?;
+            filter_write(&mut self.front, &mut self.background, &c)?;
         }
         Ok(out)
     }
@@ -270,35 +328,10 @@ impl FilterModel {
             self.sum = if f5.tag.slot.last { [0; 3] } else { acc };
         }
         // F5: weights.
-        let f4 = self.f4;
+        let f4 = self.front.f4;
         self.f5 = WeightReg { tag: f4.tag, w: f4.visible.count_ones() as u8, covered: f4.union.count_ones() as u8 };
-        // F4: visibility against the nearer entries of the pixel.
-        let mask = self.entry_mask();
-        let t3 = self.f3.0;
-        self.f4 = VisReg { tag: t3, visible: mask & !self.taken, union: self.taken | mask };
-        if t3.valid {
-            self.taken = if t3.slot.last { 0 } else { self.taken | mask };
-        }
-        // F3, F2, F1: the trees.
-        self.f3 = (self.f2.0, self.f2.1.map(|e| edge_f3(&e)));
-        self.f2 = (self.f1.0, self.f1.1.map(|e| edge_f2(&e)));
-        let (s, q) = (self.f0.slot, self.dir_q);
-        self.f1 = (self.f0, [0, 1, 2].map(|k| edge_f1(s.dist[k], q[2 * k], q[2 * k + 1])));
-        // F0: the slot; read the direction table.
-        self.f0 = Tag { valid: inp.up_valid, slot: inp.up_data };
-        self.dir_q = self.dir_table[inp.up_data.id as usize & ((1usize << self.obj_addr_bits) - 1)];
-    }
-
-    fn write(&mut self, c: &CfgWrite) -> Result<(), String> {
-        match c.sel {
-            CFG_DIRS => {
-                let a = c.addr as usize & ((1usize << self.obj_addr_bits) - 1);
-                self.dir_table[a] = [0, 1, 2, 3, 4, 5].map(|k| ((c.data >> (16 * k)) & 0xffff) as u16 as i16);
-            }
-            CFG_BACKGROUND => self.background = [0, 1, 2].map(|k| ((c.data >> (8 * k)) & 0xff) as u8),
-            s => return Err(format!("cfg_sel {s} is not a filter-stage target (0: directions, 1: background)")),
-        }
-        Ok(())
+        // F4..F0.
+        self.front.advance(inp.up_valid, &inp.up_data);
     }
 }
 

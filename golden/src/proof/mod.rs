@@ -10,13 +10,14 @@
 //! * [`setup`]: the host's object setup and the look-up tables between stages;
 //! * [`shade`], [`filter`]: the shading and filter stages' arithmetic;
 //! * [`render`]: the algorithmic renderer (what a frame is);
-//! * [`cycle_shade`], [`cycle_filter`]: cycle-accurate models of the shading and filter stages
-//!   (register by register);
+//! * [`cycle_shade`], [`cycle_filter`], [`cycle_filter2x2`]: cycle-accurate models of the shading
+//!   stage and of the filter stage with the 1x1 and the 2x2 area (register by register);
 //! * [`study`]: the per-scene figures (OPs, cycles, FIFO depths) with the CLI's default options;
 //! * [`cycle_op`], [`cycle_opp`]: cycle-accurate models of the OP and of the OPP with its
 //!   object loader (when each port changes), which the RTL in `hdl/src/proof/` must match.
 
 pub mod cycle_filter;
+pub mod cycle_filter2x2;
 pub mod cycle_op;
 pub mod cycle_opp;
 pub mod cycle_shade;

@@ -1,9 +1,9 @@
 //! PROOF's filter stage (seed 002 §6), 1x1 box: per list entry the 8x8 subpixel mask from its edge
-//! distances (the tree of multiples of sin a and cos a, [`EdgeMask`]), the subpixels the entry owns
-//! (nearest first: those no earlier entry of the pixel took), and per pixel the colours combined with
-//! weights equal to the subpixels each object owns, the background filling the rest. One list entry
-//! per clock in, one pixel per list out. Cycle behaviour: `golden::proof::cycle_filter::FilterModel`,
-//! which the bench compares every cycle.
+//! distances and the subpixels the entry owns ([`FilterFront`], F0..F4: the tree of multiples of
+//! sin a and cos a, nearest entry first), and per pixel the colours combined with weights equal to the
+//! subpixels each object owns, the background filling the rest. One list entry per clock in, one pixel
+//! per list out. Cycle behaviour: `golden::proof::cycle_filter::FilterModel`, which the bench compares
+//! every cycle.
 //!
 //! ```text
 //!            cfg_write cfg_sel cfg_addr cfg_data  (0: direction table, id -> cos/sin of 3 edges; 1: background)
@@ -21,12 +21,11 @@
 //! stage). The pixel states `taken` (F4) and `sum` (F6) change only when a valid slot passes, and
 //! return to 0 after a pixel's last slot.
 //!
-//! The paper's 2x2 filter area (`golden::proof::filter::box2`) is not in this RTL: it needs line
-//! buffers of quadrant sums; the golden model implements it.
+//! The paper's 2x2 filter area (`golden::proof::filter::box2`) is the other top,
+//! [`super::filter2x2::Filter2x2Stage`]: the same front end, quadrant sums and line buffers.
 
-use super::edge_mask::EdgeMask;
+use super::filter_front::FilterFront;
 use super::popcount::Popcount64;
-use super::table_ram::TableRam;
 use super::types::{FilterTag, FilteredPixel, ShadedSlot};
 use crate::common::{MulU, StreamIn, StreamOut};
 use rust_hdl::prelude::*;
@@ -49,20 +48,8 @@ pub struct FilterStage {
     pub downstream: StreamOut<FilteredPixel>,
 
     // Registers, tables and sub-blocks (pub: the bench compares them with the model).
-    pub dir_table: TableRam<Bits<96>>,
+    pub front: FilterFront,
     pub background: DFF<Bits<24>>,
-    pub f0: DFF<ShadedSlot>,
-    pub f0_valid: DFF<Bit>,
-    pub e0: EdgeMask,
-    pub e1: EdgeMask,
-    pub e2: EdgeMask,
-    pub f1: DFF<FilterTag>,
-    pub f2: DFF<FilterTag>,
-    pub f3: DFF<FilterTag>,
-    pub taken: DFF<Bits<64>>,
-    pub f4: DFF<FilterTag>,
-    pub f4_visible: DFF<Bits<64>>,
-    pub f4_union: DFF<Bits<64>>,
     pub pc_visible: Popcount64,
     pub pc_union: Popcount64,
     pub f5: DFF<FilterTag>,
@@ -87,10 +74,6 @@ pub struct FilterStage {
     bg_b: MulU<7, 8, 15>,
 
     adv: Signal<Local, Bit>,
-    tag0: Signal<Local, FilterTag>,
-    emask: Signal<Local, Bits<64>>,
-    visible: Signal<Local, Bits<64>>,
-    uni: Signal<Local, Bits<64>>,
     acc_r: Signal<Local, Bits<16>>,
     acc_g: Signal<Local, Bits<16>>,
     acc_b: Signal<Local, Bits<16>>,
@@ -101,8 +84,6 @@ pub struct FilterStage {
     c_r: Signal<Local, Bits<16>>,
     c_g: Signal<Local, Bits<16>>,
     c_b: Signal<Local, Bits<16>>,
-    all64: Constant<Bits<64>>,
-    zero64: Constant<Bits<64>>,
     zero16: Constant<Bits<16>>,
     n64: Constant<Bits<7>>,
     half16: Constant<Bits<16>>,
@@ -121,20 +102,8 @@ impl FilterStage {
             cfg_data: Default::default(),
             upstream: Default::default(),
             downstream: Default::default(),
-            dir_table: TableRam::new(obj_addr_bits)?,
+            front: FilterFront::new(obj_addr_bits)?,
             background: Default::default(),
-            f0: Default::default(),
-            f0_valid: Default::default(),
-            e0: Default::default(),
-            e1: Default::default(),
-            e2: Default::default(),
-            f1: Default::default(),
-            f2: Default::default(),
-            f3: Default::default(),
-            taken: Default::default(),
-            f4: Default::default(),
-            f4_visible: Default::default(),
-            f4_union: Default::default(),
             pc_visible: Default::default(),
             pc_union: Default::default(),
             f5: Default::default(),
@@ -157,10 +126,6 @@ impl FilterStage {
             bg_g: Default::default(),
             bg_b: Default::default(),
             adv: Default::default(),
-            tag0: Default::default(),
-            emask: Default::default(),
-            visible: Default::default(),
-            uni: Default::default(),
             acc_r: Default::default(),
             acc_g: Default::default(),
             acc_b: Default::default(),
@@ -171,8 +136,6 @@ impl FilterStage {
             c_r: Default::default(),
             c_g: Default::default(),
             c_b: Default::default(),
-            all64: Constant::new(u64::MAX.into()),
-            zero64: Constant::new(0u64.into()),
             zero16: Constant::new(0u64.into()),
             n64: Constant::new(64u64.into()),
             half16: Constant::new(32u64.into()),
@@ -186,69 +149,30 @@ impl Logic for FilterStage {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, background, f0, f0_valid, f1, f2, f3, taken, f4, f4_visible, f4_union, f5, f5_w, f5_covered, sum_r, sum_g,
-            sum_b, f6, f6_r, f6_g, f6_b, f6_covered, out_valid, out_data
+            self, clock, background, f5, f5_w, f5_covered, sum_r, sum_g, sum_b, f6, f6_r, f6_g, f6_b, f6_covered, out_valid, out_data
         );
-        self.dir_table.clock.next = self.clock.val();
-        self.e0.clock.next = self.clock.val();
-        self.e1.clock.next = self.clock.val();
-        self.e2.clock.next = self.clock.val();
+        self.front.clock.next = self.clock.val();
         self.adv.next = !self.out_valid.q.val() | self.downstream.ready.val();
         self.upstream.ready.next = self.adv.val();
         self.downstream.valid.next = self.out_valid.q.val();
         self.downstream.data.next = self.out_data.q.val();
 
         // ---- Host writes: the direction table and the background colour.
-        self.dir_table.write_enable.next = self.cfg_write.val() & (self.cfg_sel.val() == self.sel_dirs.val());
-        self.dir_table.write_address.next = self.cfg_addr.val();
-        self.dir_table.write_data.next = self.cfg_data.val();
+        self.front.dir_write.next = self.cfg_write.val() & (self.cfg_sel.val() == self.sel_dirs.val());
+        self.front.dir_addr.next = self.cfg_addr.val();
+        self.front.dir_data.next = self.cfg_data.val();
         if self.cfg_write.val() & (self.cfg_sel.val() == self.sel_bg.val()) {
             self.background.d.next = self.cfg_data.val().get_bits::<24>(0);
         }
 
-        // ---- F0: the slot; the direction table is read at the same edge.
-        self.dir_table.read_address.next = self.upstream.data.val().id;
-        self.dir_table.read_enable.next = self.adv.val();
-
-        // ---- F1..F3: the three edges' masks (cos at bit 32k, sin at 32k + 16 of the table word).
-        self.e0.adv.next = self.adv.val();
-        self.e1.adv.next = self.adv.val();
-        self.e2.adv.next = self.adv.val();
-        self.e0.d.next = self.f0.q.val().d0;
-        self.e1.d.next = self.f0.q.val().d1;
-        self.e2.d.next = self.f0.q.val().d2;
-        self.e0.cs.next = self.dir_table.read_data.val().get_bits::<16>(0);
-        self.e0.sn.next = self.dir_table.read_data.val().get_bits::<16>(16);
-        self.e1.cs.next = self.dir_table.read_data.val().get_bits::<16>(32);
-        self.e1.sn.next = self.dir_table.read_data.val().get_bits::<16>(48);
-        self.e2.cs.next = self.dir_table.read_data.val().get_bits::<16>(64);
-        self.e2.sn.next = self.dir_table.read_data.val().get_bits::<16>(80);
-        self.tag0.next = self.f1.q.val();
-        self.tag0.next.valid = self.f0_valid.q.val();
-        self.tag0.next.x = self.f0.q.val().x;
-        self.tag0.next.y = self.f0.q.val().y;
-        self.tag0.next.last = self.f0.q.val().last;
-        self.tag0.next.has_entry = self.f0.q.val().has_entry;
-        self.tag0.next.full = self.f0.q.val().full;
-        self.tag0.next.r = self.f0.q.val().r;
-        self.tag0.next.g = self.f0.q.val().g;
-        self.tag0.next.b = self.f0.q.val().b;
-
-        // ---- F4: the entry's mask (all for a full entry, none for an empty slot) against the
-        // subpixels nearer entries of the pixel took.
-        self.emask.next = self.e0.mask.val() & self.e1.mask.val() & self.e2.mask.val();
-        if self.f3.q.val().full {
-            self.emask.next = self.all64.val();
-        }
-        if !self.f3.q.val().has_entry {
-            self.emask.next = self.zero64.val();
-        }
-        self.visible.next = self.emask.val() & !self.taken.q.val();
-        self.uni.next = self.taken.q.val() | self.emask.val();
+        // ---- F0..F4: masks and ownership.
+        self.front.adv.next = self.adv.val();
+        self.front.slot.next = self.upstream.data.val();
+        self.front.slot_valid.next = self.upstream.valid.val();
 
         // ---- F5: weights.
-        self.pc_visible.x.next = self.f4_visible.q.val();
-        self.pc_union.x.next = self.f4_union.q.val();
+        self.pc_visible.x.next = self.front.visible.val();
+        self.pc_union.x.next = self.front.union_mask.val();
 
         // ---- F6: sums += w c.
         self.wc_r.a.next = self.f5_w.q.val();
@@ -277,21 +201,7 @@ impl Logic for FilterStage {
         self.c_b.next = self.t_b.val() + self.half16.val();
 
         if self.adv.val() {
-            self.f0.d.next = self.upstream.data.val();
-            self.f0_valid.d.next = self.upstream.valid.val();
-            self.f1.d.next = self.tag0.val();
-            self.f2.d.next = self.f1.q.val();
-            self.f3.d.next = self.f2.q.val();
-            self.f4.d.next = self.f3.q.val();
-            self.f4_visible.d.next = self.visible.val();
-            self.f4_union.d.next = self.uni.val();
-            if self.f3.q.val().valid {
-                self.taken.d.next = self.uni.val();
-                if self.f3.q.val().last {
-                    self.taken.d.next = self.zero64.val();
-                }
-            }
-            self.f5.d.next = self.f4.q.val();
+            self.f5.d.next = self.front.tag.val();
             self.f5_w.d.next = self.pc_visible.count.val();
             self.f5_covered.d.next = self.pc_union.count.val();
             self.f6.d.next = self.f5.q.val();

@@ -153,3 +153,115 @@ pub struct FilteredPixel {
     /// Subpixels covered by some object, 0..=64.
     pub covered: Bits<7>,
 }
+
+/// One pixel's quadrant sums (filter stage -> 2x2 box, seed 002 §6 "the filter area will be 2 x 2
+/// pixels"): quadrant `q = 2 qy + qx` of 4x4 subpixels, q0 top left, q1 top right, q2 bottom left,
+/// q3 bottom right (`golden::proof::filter::quadrant_sums` without the background term).
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct QuadPixel {
+    pub x: Bits<10>,
+    pub y: Bits<10>,
+    /// Per quadrant: the sum over the pixel's entries of (subpixels owned in the quadrant) x colour,
+    /// 0..=4080 (the background is added by the box).
+    pub r0: Bits<12>,
+    pub r1: Bits<12>,
+    pub r2: Bits<12>,
+    pub r3: Bits<12>,
+    pub g0: Bits<12>,
+    pub g1: Bits<12>,
+    pub g2: Bits<12>,
+    pub g3: Bits<12>,
+    pub b0: Bits<12>,
+    pub b1: Bits<12>,
+    pub b2: Bits<12>,
+    pub b3: Bits<12>,
+    /// Per quadrant: the subpixels some entry covers, 0..=16.
+    pub c0: Bits<5>,
+    pub c1: Bits<5>,
+    pub c2: Bits<5>,
+    pub c3: Bits<5>,
+}
+
+/// The 2x2 box's register A (`golden::proof::cycle_filter2x2::BoxA`): the newest pixel, with the
+/// horizontal sums of its 3 own and left quadrant columns and its right quadrants.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct BoxA {
+    pub valid: bool,
+    pub x: Bits<10>,
+    pub y: Bits<10>,
+    /// Top half: left neighbour's right quadrant + own left + own right (colours, coverage).
+    pub lt_r: Bits<14>,
+    pub lt_g: Bits<14>,
+    pub lt_b: Bits<14>,
+    pub lt_c: Bits<6>,
+    /// Bottom half, the same.
+    pub lb_r: Bits<14>,
+    pub lb_g: Bits<14>,
+    pub lb_b: Bits<14>,
+    pub lb_c: Bits<6>,
+    /// Own right quadrants, top (q1) and bottom (q3): the next pixel's left neighbours.
+    pub rt_r: Bits<12>,
+    pub rt_g: Bits<12>,
+    pub rt_b: Bits<12>,
+    pub rt_c: Bits<5>,
+    pub rb_r: Bits<12>,
+    pub rb_g: Bits<12>,
+    pub rb_b: Bits<12>,
+    pub rb_c: Bits<5>,
+    /// The pixel's own covered subpixels, 0..=64.
+    pub own: Bits<7>,
+}
+
+/// The 2x2 box's register H: a column's horizontal sums over the box's 4 quadrant columns, top and
+/// bottom half of one pixel row; or (`flush`) a column of the frame's last row to emit.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct BoxH {
+    pub valid: bool,
+    pub flush: bool,
+    pub x: Bits<10>,
+    pub y: Bits<10>,
+    pub t_r: Bits<14>,
+    pub t_g: Bits<14>,
+    pub t_b: Bits<14>,
+    pub t_c: Bits<7>,
+    pub b_r: Bits<14>,
+    pub b_g: Bits<14>,
+    pub b_b: Bits<14>,
+    pub b_c: Bits<7>,
+    pub own: Bits<7>,
+}
+
+/// The 2x2 box's register V: the whole box's sums for one output pixel.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct BoxV {
+    pub valid: bool,
+    pub x: Bits<10>,
+    pub y: Bits<10>,
+    /// Colour sums of the 16 quadrants, 0..=65280.
+    pub s_r: Bits<16>,
+    pub s_g: Bits<16>,
+    pub s_b: Bits<16>,
+    /// Covered subpixels of the 16 quadrants, 0..=256.
+    pub s_c: Bits<9>,
+    /// The output pixel's own covered subpixels.
+    pub own: Bits<7>,
+}
+
+/// One word of the 2x2 box's line buffer (one per screen column): what the next pixel row needs of
+/// this column's box sums.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct BoxLine {
+    /// The last row's bottom-half horizontal sums (B).
+    pub b_r: Bits<14>,
+    pub b_g: Bits<14>,
+    pub b_b: Bits<14>,
+    pub b_c: Bits<7>,
+    /// The partial vertical sums S = B(row - 1) + T(row) + B(row): three of the box's four
+    /// half-rows.
+    pub s_r: Bits<16>,
+    pub s_g: Bits<16>,
+    pub s_b: Bits<16>,
+    pub s_c: Bits<8>,
+    /// The last row's pixel's own covered subpixels.
+    pub own: Bits<7>,
+}

@@ -4,7 +4,7 @@
 //! ```sh
 //! cargo run --release -p tb --bin proof_figures -- fifo [WxH]                 # OPs, cycles, FIFO depths 1/2/4/8, every built-in scene (cycle model)
 //! cargo run --release -p tb --bin proof_figures -- rtl SCENE [WxH] [DEPTHS]   # the same frame through the RTL OPP, every cycle against the model
-//! cargo run --release -p tb --bin proof_figures -- synth                      # yosys synth_ice40 -dsp of opp (8 OPs), proof_shade, proof_filter
+//! cargo run --release -p tb --bin proof_figures -- synth [TOP]                # yosys synth_ice40 -dsp of opp (8 OPs), proof_shade, proof_filter, proof_filter2x2 (or only TOP)
 //! ```
 
 use golden::proof::setup::scene_setup;
@@ -38,8 +38,8 @@ fn run() -> Result<(), String> {
             };
             rtl(scene, size(args.get(2))?, &depths)
         }
-        Some("synth") => synth(),
-        _ => Err("usage: proof_figures fifo [WxH] | rtl SCENE [WxH] [DEPTHS] | synth".into()),
+        Some("synth") => synth(args.get(1).map(|s| s.as_str())),
+        _ => Err("usage: proof_figures fifo [WxH] | rtl SCENE [WxH] [DEPTHS] | synth [TOP]".into()),
     }
 }
 
@@ -107,13 +107,16 @@ fn rtl(name: &str, (w, h): (u32, u32), depths: &[usize]) -> Result<(), String> {
     Ok(())
 }
 
-fn synth() -> Result<(), String> {
+fn synth(only: Option<&str>) -> Result<(), String> {
+    const TOPS: [(&str, u64); 4] = [("opp", 8), ("proof_shade", 1), ("proof_filter", 1), ("proof_filter2x2", 1)];
+    if let Some(t) = only {
+        if !TOPS.iter().any(|x| x.0 == t) {
+            return Err(format!("synth {t}: the PROOF tops are {}", TOPS.map(|x| x.0).join(", ")));
+        }
+    }
     let dir = tb::common::scratch_dir("proof_figures_synth");
-    for (top, v, per) in [
-        ("opp", hdl::proof::verilog_opp("opp", 8, 1)?, 8u64),
-        ("proof_shade", hdl::verilog_top("proof_shade")?, 1),
-        ("proof_filter", hdl::verilog_top("proof_filter")?, 1),
-    ] {
+    for (top, per) in TOPS.into_iter().filter(|x| only.is_none_or(|t| t == x.0)) {
+        let v = hdl::verilog_top(top)?;
         std::fs::write(dir.join(format!("{top}.v")), &v).map_err(|e| e.to_string())?;
         let t0 = Instant::now();
         let o = std::process::Command::new("yosys")

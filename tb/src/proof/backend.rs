@@ -1,11 +1,13 @@
 //! The RTL backend of `idxrender render --arch proof --backend rtl`: the frame's object lists come from
 //! the RustHDL OPP, checked against the cycle model in every cycle (`bench`), and every list entry is
 //! coloured by the RustHDL shading stage, checked against its cycle model in every cycle
-//! (`shade_bench`), and the shaded slots are filtered by the RustHDL filter stage (1x1 box), checked
-//! against its cycle model in every cycle (`filter_bench`).
+//! (`shade_bench`), and the shaded slots are filtered by the RustHDL filter stage, 1x1 box
+//! (`filter_bench`) or the paper's 2x2 area (`filter2x2_bench`), checked against its cycle model in
+//! every cycle.
 
 use super::bench::run_frame;
-use super::filter_bench::run_filter;
+use super::filter2x2_bench::run_filter2x2;
+use super::filter_bench::{run_filter, FilterRun};
 use super::shade_bench::run_shade;
 use golden::proof::cycle_opp::OppRun;
 use golden::proof::cycle_filter::filter_config;
@@ -54,9 +56,28 @@ pub fn shade_slots_rtl(scene: &ProofScene, lists: &[Vec<Entry>], vcd: Option<&Pa
 /// (after the table loads).
 pub fn filter_rtl(scene: &ProofScene, slots: &[ShadedSlot], vcd: Option<&Path>) -> Result<(Vec<u8>, Vec<u8>, u64), String> {
     let bits = table_bits(scene.objects.len());
+    let run = run_filter(bits, &filter_cfg(scene, bits)?, slots, None, vcd, None)?;
+    image_of(scene, &run)
+}
+
+/// The shaded slots through the RTL filter stage with the paper's 2x2 area (`Filter2x2Stage`, its
+/// line buffer sized to the scene's screen): the RGB888 image, the covered subpixels per pixel and the
+/// stage's cycles (after the table loads, until the last pixel of the flush has left).
+pub fn filter2x2_rtl(scene: &ProofScene, slots: &[ShadedSlot], vcd: Option<&Path>) -> Result<(Vec<u8>, Vec<u8>, u64), String> {
+    let bits = table_bits(scene.objects.len());
+    let s = scene.screen;
+    let run = run_filter2x2(bits, s.width, s.height, &filter_cfg(scene, bits)?, slots, None, vcd, None)?;
+    image_of(scene, &run)
+}
+
+/// The configuration writes of the filter stage: the scene's edge directions and background.
+fn filter_cfg(scene: &ProofScene, bits: usize) -> Result<Vec<golden::proof::cycle_shade::CfgWrite>, String> {
     let dirs: Vec<_> = (0..scene.objects.len()).map(|i| dirs_of(scene, i as u16)).collect();
-    let cfg = filter_config(&dirs, scene.background, bits as u32)?;
-    let run = run_filter(bits, &cfg, slots, None, vcd, None)?;
+    filter_config(&dirs, scene.background, bits as u32)
+}
+
+/// The image and coverage of a filter run, checking that it is the whole frame in raster order.
+fn image_of(scene: &ProofScene, run: &FilterRun) -> Result<(Vec<u8>, Vec<u8>, u64), String> {
     let s = scene.screen;
     if run.pixels.len() != s.pixels() {
         return Err(format!("the filter stage gave {} pixels for a {}x{} frame", run.pixels.len(), s.width, s.height));

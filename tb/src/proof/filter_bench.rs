@@ -9,11 +9,11 @@
 use super::convert::hex_of;
 use super::shade_bench::{shaded_to_rtl, StageGaps};
 use super::stage_replay::{inp, out, Port, Recorder};
-use golden::proof::cycle_filter::{EdgeF1, EdgeF2, FilterIn, FilterModel, FilterOut, FilteredPixel, Tag};
+use golden::proof::cycle_filter::{EdgeF1, EdgeF2, FilterFront as FrontModel, FilterIn, FilterModel, FilterOut, FilteredPixel, Tag};
 use golden::proof::cycle_opp::GapRng;
 use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};
 use hdl::proof::edge_mask::EdgeMask;
-use hdl::proof::{FilterStage, FilterTag, FilteredPixel as RtlPixel, ShadedSlot as RtlShaded};
+use hdl::proof::{FilterFront, FilterStage, FilterTag, FilteredPixel as RtlPixel, ShadedSlot as RtlShaded};
 use rust_hdl::core::vcd_probe::VCDProbe;
 use rust_hdl::prelude::*;
 use std::fs::File;
@@ -74,7 +74,62 @@ fn f2_rtl(e: &EdgeMask) -> EdgeF2 {
     EdgeF2 { rows, sx: sext(e.sx2.q.val().to_u64(), 22) }
 }
 
-/// The filter top's ports, for the Verilog replay.
+/// The front end's registers (F0..F4, `taken`, the direction table's output) against the model's:
+/// every valid bit and, when valid, the contents. Shared by the 1x1 and 2x2 benches.
+pub fn compare_front(u: &FilterFront, m: &FrontModel) -> Result<(), String> {
+    let diff = |what: &str, r: String, e: String| -> Result<(), String> {
+        if r != e {
+            Err(format!("register {what} rtl {r} model {e}"))
+        } else {
+            Ok(())
+        }
+    };
+    // F0 and the direction table's output.
+    diff("F0 valid", format!("{}", u.f0_valid.q.val()), format!("{}", m.f0.valid))?;
+    if m.f0.valid {
+        let f0 = super::shade_bench::shaded_from_rtl(&u.f0.q.val());
+        diff("F0 slot", format!("{f0:?}"), format!("{:?}", m.f0.slot))?;
+        let q = u.dir_table.read_data.val();
+        let dq: [i16; 6] = [0, 1, 2, 3, 4, 5].map(|k| sext(q.get_bits::<16>(16 * k).to_u64(), 16) as i16);
+        diff("direction table output", format!("{dq:?}"), format!("{:?}", m.dir_q))?;
+    }
+    let edges = [&u.e0, &u.e1, &u.e2];
+    let tags = [(&u.f1, &m.f1.0, "F1"), (&u.f2, &m.f2.0, "F2"), (&u.f3, &m.f3.0, "F3"), (&u.f4, &m.f4.tag, "F4")];
+    for (r, t, name) in tags {
+        check_tag(name, &r.q.val(), t)?;
+    }
+    for k in 0..3 {
+        if m.f1.0.valid {
+            diff(&format!("F1 edge {k}"), format!("{:?}", f1_rtl(edges[k])), format!("{:?}", m.f1.1[k]))?;
+        }
+        if m.f2.0.valid {
+            diff(&format!("F2 edge {k}"), format!("{:?}", f2_rtl(edges[k])), format!("{:?}", m.f2.1[k]))?;
+        }
+        if m.f3.0.valid {
+            diff(&format!("F3 edge {k} mask"), format!("{:#018x}", edges[k].m.q.val().to_u64()), format!("{:#018x}", m.f3.1[k]))?;
+        }
+    }
+    diff("taken", format!("{:#018x}", u.taken.q.val().to_u64()), format!("{:#018x}", m.taken))?;
+    if m.f4.tag.valid {
+        diff(
+            "F4 visible/union",
+            format!("{:#018x}/{:#018x}", u.f4_visible.q.val().to_u64(), u.f4_union.q.val().to_u64()),
+            format!("{:#018x}/{:#018x}", m.f4.visible, m.f4.union),
+        )?;
+    }
+    Ok(())
+}
+
+/// A register's tag: the valid bit always, the contents when valid.
+pub fn check_tag(name: &str, r: &FilterTag, m: &Tag) -> Result<(), String> {
+    let (kr, km) = (tag_rtl(r), tag_model(m));
+    if kr.0 != km.0 || (km.0 && kr != km) {
+        return Err(format!("register {name} tag rtl {kr:?} model {km:?} (valid, x, y, last, has_entry, full, rgb)"));
+    }
+    Ok(())
+}
+
+/// The filter top's ports, for the Verilog replay (the 1x1 and the 2x2 top have the same).
 pub fn filter_ports() -> Vec<Port> {
     vec![
         inp("cfg_write", 1),
@@ -99,7 +154,7 @@ pub struct FilterBench {
     pub vectors: Option<Recorder>,
 }
 
-fn bits96(v: u128) -> Bits<96> {
+pub fn bits96(v: u128) -> Bits<96> {
     Bits::<96>::from(v as u64) | (Bits::<96>::from((v >> 64) as u64) << 64)
 }
 
@@ -153,6 +208,7 @@ impl FilterBench {
         if exp.down_valid && got != exp.down_data {
             return Err(self.fail(format!("downstream.data rtl {got:?} model {:?}", exp.down_data)));
         }
+        compare_front(&u.front, &m.front).map_err(|e| self.fail(e))?;
         let diff = |what: &str, r: String, e: String| -> Result<(), String> {
             if r != e {
                 Err(self.fail(format!("register {what} rtl {r} model {e}")))
@@ -160,50 +216,7 @@ impl FilterBench {
                 Ok(())
             }
         };
-        // F0 and the direction table's output.
-        diff("F0 valid", format!("{}", u.f0_valid.q.val()), format!("{}", m.f0.valid))?;
-        if m.f0.valid {
-            let f0 = super::shade_bench::shaded_from_rtl(&u.f0.q.val());
-            diff("F0 slot", format!("{f0:?}"), format!("{:?}", m.f0.slot))?;
-            let q = u.dir_table.read_data.val();
-            let dq: [i16; 6] = [0, 1, 2, 3, 4, 5].map(|k| sext(q.get_bits::<16>(16 * k).to_u64(), 16) as i16);
-            diff("direction table output", format!("{dq:?}"), format!("{:?}", m.dir_q))?;
-        }
-        let edges = [&u.e0, &u.e1, &u.e2];
-        let tags = [(&u.f1, &m.f1.0, "F1"), (&u.f2, &m.f2.0, "F2"), (&u.f3, &m.f3.0, "F3")];
-        for (r, t, name) in tags {
-            let (kr, km) = (tag_rtl(&r.q.val()), tag_model(t));
-            if kr.0 != km.0 || (km.0 && kr != km) {
-                return Err(self.fail(format!("register {name} tag rtl {kr:?} model {km:?} (valid, x, y, last, has_entry, full, rgb)")));
-            }
-        }
-        for k in 0..3 {
-            if m.f1.0.valid {
-                diff(&format!("F1 edge {k}"), format!("{:?}", f1_rtl(edges[k])), format!("{:?}", m.f1.1[k]))?;
-            }
-            if m.f2.0.valid {
-                diff(&format!("F2 edge {k}"), format!("{:?}", f2_rtl(edges[k])), format!("{:?}", m.f2.1[k]))?;
-            }
-            if m.f3.0.valid {
-                diff(&format!("F3 edge {k} mask"), format!("{:#018x}", edges[k].m.q.val().to_u64()), format!("{:#018x}", m.f3.1[k]))?;
-            }
-        }
-        diff("taken", format!("{:#018x}", u.taken.q.val().to_u64()), format!("{:#018x}", m.taken))?;
-        let t4 = (tag_rtl(&u.f4.q.val()), tag_model(&m.f4.tag));
-        if t4.0 .0 != t4.1 .0 || (t4.1 .0 && t4.0 != t4.1) {
-            return Err(self.fail(format!("register F4 tag rtl {:?} model {:?}", t4.0, t4.1)));
-        }
-        if m.f4.tag.valid {
-            diff(
-                "F4 visible/union",
-                format!("{:#018x}/{:#018x}", u.f4_visible.q.val().to_u64(), u.f4_union.q.val().to_u64()),
-                format!("{:#018x}/{:#018x}", m.f4.visible, m.f4.union),
-            )?;
-        }
-        let t5 = (tag_rtl(&u.f5.q.val()), tag_model(&m.f5.tag));
-        if t5.0 .0 != t5.1 .0 || (t5.1 .0 && t5.0 != t5.1) {
-            return Err(self.fail(format!("register F5 tag rtl {:?} model {:?}", t5.0, t5.1)));
-        }
+        check_tag("F5", &u.f5.q.val(), &m.f5.tag).map_err(|e| self.fail(e))?;
         if m.f5.tag.valid {
             diff(
                 "F5 weight/covered",
@@ -213,10 +226,7 @@ impl FilterBench {
         }
         let sums = [u.sum_r.q.val().to_u64() as u32, u.sum_g.q.val().to_u64() as u32, u.sum_b.q.val().to_u64() as u32];
         diff("sum", format!("{sums:?}"), format!("{:?}", m.sum))?;
-        let t6 = (tag_rtl(&u.f6.q.val()), tag_model(&m.f6.tag));
-        if t6.0 .0 != t6.1 .0 || (t6.1 .0 && t6.0 != t6.1) {
-            return Err(self.fail(format!("register F6 tag rtl {:?} model {:?}", t6.0, t6.1)));
-        }
+        check_tag("F6", &u.f6.q.val(), &m.f6.tag).map_err(|e| self.fail(e))?;
         if m.f6.tag.valid {
             let acc = [u.f6_r.q.val().to_u64() as u32, u.f6_g.q.val().to_u64() as u32, u.f6_b.q.val().to_u64() as u32];
             diff("F6 sums/covered", format!("{acc:?}/{}", u.f6_covered.q.val().to_u64()), format!("{:?}/{}", m.f6.acc, m.f6.covered))?;
@@ -226,48 +236,84 @@ impl FilterBench {
 
     /// One clock on both sides; returns the model's outputs before the edge.
     pub fn cycle(&mut self, i: &FilterIn) -> Result<FilterOut, String> {
-        let c = i.cfg.unwrap_or_default();
-        let u = &mut self.uut;
-        u.cfg_write.next = i.cfg.is_some();
-        u.cfg_sel.next = (c.sel as u64).into();
-        u.cfg_addr.next = (c.addr as u64).into();
-        u.cfg_data.next = bits96(c.data);
-        u.upstream.valid.next = i.up_valid;
-        u.upstream.data.next = shaded_to_rtl(&i.up_data);
-        u.downstream.ready.next = i.down_ready;
-        u.clock.next = false.into();
-        if !simulate(u, 10_000) {
+        drive_filter_inputs!(self.uut, i);
+        self.uut.clock.next = false.into();
+        if !simulate(&mut self.uut, 10_000) {
             return Err(self.fail("the RTL did not settle".into()));
         }
         self.dump(10 * self.cycle);
         let exp = self.model.outputs(i.down_ready);
         self.compare(&exp)?;
         if let Some(w) = self.vectors.as_mut() {
-            let up: Bits<{ RtlShaded::BITS }> = shaded_to_rtl(&i.up_data).into();
-            let down: Bits<{ RtlPixel::BITS }> = pixel_to_rtl(&exp.down_data).into();
-            w.cycle(&[
-                format!("{}", i.cfg.is_some() as u8),
-                format!("{:x}", c.sel),
-                format!("{:x}", c.addr),
-                hex_of(bits96(c.data)),
-                format!("{}", i.up_valid as u8),
-                hex_of(up),
-                format!("{}", i.down_ready as u8),
-                format!("{}", exp.up_ready as u8),
-                format!("{}", exp.down_valid as u8),
-                hex_of(down),
-            ])?;
+            w.cycle(&filter_vector_row(i, &exp))?;
         }
         self.model.step(i)?;
-        let u = &mut self.uut;
-        u.clock.next = true.into();
-        if !simulate(u, 10_000) {
+        self.uut.clock.next = true.into();
+        if !simulate(&mut self.uut, 10_000) {
             return Err(self.fail("the RTL did not settle".into()));
         }
         self.dump(10 * self.cycle + 5);
         self.cycle += 1;
         Ok(exp)
     }
+}
+
+impl FilterTop for FilterBench {
+    fn cycle(&mut self, i: &FilterIn) -> Result<FilterOut, String> {
+        FilterBench::cycle(self, i)
+    }
+    fn cycles(&self) -> u64 {
+        self.cycle
+    }
+    fn take_vectors(&mut self) -> Option<Recorder> {
+        self.vectors.take()
+    }
+}
+
+/// Drive a filter top's inputs for one cycle (the 1x1 and the 2x2 top have the same ports).
+macro_rules! drive_filter_inputs {
+    ($u:expr, $i:expr) => {{
+        let i: &golden::proof::cycle_filter::FilterIn = $i;
+        let c = i.cfg.unwrap_or_default();
+        $u.cfg_write.next = i.cfg.is_some();
+        $u.cfg_sel.next = (c.sel as u64).into();
+        $u.cfg_addr.next = (c.addr as u64).into();
+        $u.cfg_data.next = $crate::proof::filter_bench::bits96(c.data);
+        $u.upstream.valid.next = i.up_valid;
+        $u.upstream.data.next = $crate::proof::shade_bench::shaded_to_rtl(&i.up_data);
+        $u.downstream.ready.next = i.down_ready;
+    }};
+}
+pub(crate) use drive_filter_inputs;
+
+/// One cycle of recorded vectors for a filter top, in [`filter_ports`] order: the inputs and the
+/// model's outputs.
+pub fn filter_vector_row(i: &FilterIn, exp: &FilterOut) -> Vec<String> {
+    let c = i.cfg.unwrap_or_default();
+    let up: Bits<{ RtlShaded::BITS }> = shaded_to_rtl(&i.up_data).into();
+    let down: Bits<{ RtlPixel::BITS }> = pixel_to_rtl(&exp.down_data).into();
+    vec![
+        format!("{}", i.cfg.is_some() as u8),
+        format!("{:x}", c.sel),
+        format!("{:x}", c.addr),
+        hex_of(bits96(c.data)),
+        format!("{}", i.up_valid as u8),
+        hex_of(up),
+        format!("{}", i.down_ready as u8),
+        format!("{}", exp.up_ready as u8),
+        format!("{}", exp.down_valid as u8),
+        hex_of(down),
+    ]
+}
+
+/// A filter top beside its cycle model, one clock at a time (the 1x1 and the 2x2 bench).
+pub trait FilterTop {
+    /// One clock on both sides, compared; the model's outputs before the edge.
+    fn cycle(&mut self, i: &FilterIn) -> Result<FilterOut, String>;
+    /// Clocks so far.
+    fn cycles(&self) -> u64;
+    /// The vector recorder, if the run records.
+    fn take_vectors(&mut self) -> Option<Recorder>;
 }
 
 /// The outcome of a run of the filter bench.
@@ -290,11 +336,17 @@ pub fn run_filter(
     vectors: Option<PathBuf>,
 ) -> Result<FilterRun, String> {
     let mut b = FilterBench::new(obj_addr_bits, vcd, vectors)?;
+    run_filter_top(&mut b, cfg, slots, gaps)
+}
+
+/// Configure a filter top, then stream `slots` through it with optional random gaps at the input and
+/// back-pressure at the output until every list's pixel has left; returns the pixels in order.
+pub fn run_filter_top<B: FilterTop>(b: &mut B, cfg: &[CfgWrite], slots: &[ShadedSlot], gaps: Option<StageGaps>) -> Result<FilterRun, String> {
     let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
     for c in cfg {
         b.cycle(&FilterIn { cfg: Some(*c), down_ready: true, ..Default::default() })?;
     }
-    let start = b.cycle;
+    let start = b.cycles();
     let pixels = slots.iter().filter(|s| s.last).count();
     let (mut i, mut idle) = (0usize, 0u64);
     let mut outs = Vec::with_capacity(pixels);
@@ -312,12 +364,12 @@ pub fn run_filter(
         } else {
             idle += 1;
             if idle > 10_000 {
-                return Err(format!("the filter stage gave no pixel for 10000 cycles at cycle {} (a list without a last slot?)", b.cycle));
+                return Err(format!("the filter stage gave no pixel for 10000 cycles at cycle {} (a list without a last slot?)", b.cycles()));
             }
         }
     }
-    let cycles = b.cycle - start;
-    let rec = match b.vectors.take() {
+    let cycles = b.cycles() - start;
+    let rec = match b.take_vectors() {
         Some(w) => Some(w.finish()?),
         None => None,
     };

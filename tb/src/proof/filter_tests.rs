@@ -26,20 +26,20 @@ fn filter_or_panic(name: &str, seed: u64, bits: usize, cfg: &[CfgWrite], slots: 
 }
 
 /// A scene's lists shaded by the golden shading: the filter's input slots, and the golden filter's
-/// image and coverage.
-fn scene_slots(sc: &ProofScene) -> (Vec<ShadedSlot>, Vec<u8>, Vec<u8>) {
+/// image (filter area `area`) and coverage.
+pub(super) fn scene_slots(sc: &ProofScene, area: FilterArea) -> (Vec<ShadedSlot>, Vec<u8>, Vec<u8>) {
     let lists = object_lists(sc.screen, &sc.objects);
     let colours: Vec<Vec<[u8; 3]>> =
         lists.iter().map(|l| l.iter().map(|e| shade_entry(&sc.lights, e.normal, sc.material[e.id as usize])).collect()).collect();
-    let (rgb, cov) = filter_lists(sc, &lists, &colours, FilterArea::Box1);
+    let (rgb, cov) = filter_lists(sc, &lists, &colours, area);
     (shaded_slots(sc.screen.width, &lists, &colours), rgb, cov)
 }
 
-fn scene_dirs(sc: &ProofScene) -> Vec<[(i16, i16); 3]> {
+pub(super) fn scene_dirs(sc: &ProofScene) -> Vec<[(i16, i16); 3]> {
     (0..sc.objects.len()).map(|i| dirs_of(sc, i as u16)).collect()
 }
 
-fn check_image(what: &str, w: u32, run: &FilterRun, rgb: &[u8], cov: &[u8]) {
+pub(super) fn check_image(what: &str, w: u32, run: &FilterRun, rgb: &[u8], cov: &[u8]) {
     assert_eq!(run.pixels.len(), cov.len(), "{what}: pixel count");
     for (p, o) in run.pixels.iter().enumerate() {
         let (x, y) = ((p as u32 % w) as u16, (p as u32 / w) as u16);
@@ -55,7 +55,7 @@ fn filter_stage_matches_its_cycle_model_every_cycle_and_the_golden_filter_on_pol
     println!("seed {seed} (SEED=n replays)");
     for (name, grid, w, h) in [("polyhedron", 0, 40, 25), ("teapot", 2, 40, 25)] {
         let sc = scene(name, grid, w, h);
-        let (slots, rgb, cov) = scene_slots(&sc);
+        let (slots, rgb, cov) = scene_slots(&sc, FilterArea::Box1);
         let cfg = filter_config(&scene_dirs(&sc), sc.background, 10).unwrap();
         let gaps = StageGaps { seed: rng.next_u64(), source_gap_percent: 20, sink_gap_percent: 30 };
         let t0 = std::time::Instant::now();
@@ -67,22 +67,25 @@ fn filter_stage_matches_its_cycle_model_every_cycle_and_the_golden_filter_on_pol
     }
 }
 
-/// Random lists of up to 4 entries with distances and directions over the whole 16-bit range
-/// (saturated distances, non-unit directions), full entries, empty pixels, random colours: the RTL
-/// against the model every cycle, the pixels against the golden masks and combination.
-#[test]
-fn filter_stage_on_random_lists_with_extreme_distances_and_directions_matches_its_model_and_the_golden_filter() {
-    let mut rng = Rng::new(0xed9e);
-    let seed = rng.seed();
-    println!("seed {seed} (SEED=n replays)");
+/// A random frame for the filter benches: per pixel a list of up to 4 entries with distances and
+/// directions over the whole 16-bit range (saturated distances, non-unit directions), full entries,
+/// empty pixels, random colours, on a random background; every pixel of the screen's border too.
+pub(super) struct RandomLists {
+    pub dirs: Vec<[(i16, i16); 3]>,
+    pub bg: [u8; 3],
+    pub slots: Vec<ShadedSlot>,
+    /// Per pixel (raster order): the entries' owned subpixel masks and colours, and the union.
+    pub owners: Vec<(Vec<u64>, Vec<[u8; 3]>, u64)>,
+}
+
+pub(super) fn random_lists(rng: &mut Rng, w: u32, h: u32) -> RandomLists {
     let extremes = [i16::MIN, i16::MAX, 0, 16384, -16384, 11585, -11585, 1, -1];
     let r16 = |rng: &mut Rng| if rng.chance(15) { extremes[rng.below(extremes.len() as u64) as usize] } else { rng.next_u64() as u16 as i16 };
     let n_obj = 50usize;
-    let dirs: Vec<[(i16, i16); 3]> = (0..n_obj).map(|_| [0; 3].map(|_: i32| (r16(&mut rng), r16(&mut rng)))).collect();
+    let dirs: Vec<[(i16, i16); 3]> = (0..n_obj).map(|_| [0; 3].map(|_: i32| (r16(rng), r16(rng)))).collect();
     let bg = [rng.below(256) as u8, rng.below(256) as u8, rng.below(256) as u8];
-    let (w, h) = (24u32, 12u32);
     let mut slots = Vec::new();
-    let (mut rgb, mut cov) = (Vec::new(), Vec::new());
+    let mut owners = Vec::new();
     for p in 0..w * h {
         let (x, y) = ((p % w) as u16, (p / w) as u16);
         let n = rng.below(5) as usize;
@@ -90,18 +93,31 @@ fn filter_stage_on_random_lists_with_extreme_distances_and_directions_matches_it
             .map(|_| {
                 // Mostly small distances (edges through the pixel), sometimes anything.
                 let d = |rng: &mut Rng| if rng.chance(60) { (rng.below(40000) as i64 - 20000) as i16 } else { r16(rng) };
-                Entry { id: rng.below(n_obj as u64) as u16, full: rng.chance(15), dist: [d(&mut rng), d(&mut rng), d(&mut rng)], ..Default::default() }
+                Entry { id: rng.below(n_obj as u64) as u16, full: rng.chance(15), dist: [d(rng), d(rng), d(rng)], ..Default::default() }
             })
             .collect();
         let colours: Vec<[u8; 3]> = list.iter().map(|_| [rng.below(256) as u8, rng.below(256) as u8, rng.below(256) as u8]).collect();
-        let (owners, taken) = visible_masks(&list, &|id| dirs[id as usize]);
-        rgb.extend_from_slice(&combine(&owners, &colours, taken, bg));
-        cov.push(taken.count_ones() as u8);
-        slots.extend(shaded_slots(1, &[list], &[colours]).into_iter().map(|s| ShadedSlot { x, y, ..s }));
+        let (own, taken) = visible_masks(&list, &|id| dirs[id as usize]);
+        slots.extend(shaded_slots(1, &[list], &[colours.clone()]).into_iter().map(|s| ShadedSlot { x, y, ..s }));
+        owners.push((own, colours, taken));
     }
-    let cfg = filter_config(&dirs, bg, 6).unwrap();
+    RandomLists { dirs, bg, slots, owners }
+}
+
+/// Random lists (see [`random_lists`]): the RTL against the model every cycle, the pixels against the
+/// golden masks and combination.
+#[test]
+fn filter_stage_on_random_lists_with_extreme_distances_and_directions_matches_its_model_and_the_golden_filter() {
+    let mut rng = Rng::new(0xed9e);
+    let seed = rng.seed();
+    println!("seed {seed} (SEED=n replays)");
+    let (w, h) = (24u32, 12u32);
+    let r = random_lists(&mut rng, w, h);
+    let rgb: Vec<u8> = r.owners.iter().flat_map(|(o, c, t)| combine(o, c, *t, r.bg)).collect();
+    let cov: Vec<u8> = r.owners.iter().map(|(_, _, t)| t.count_ones() as u8).collect();
+    let cfg = filter_config(&r.dirs, r.bg, 6).unwrap();
     let gaps = StageGaps { seed: rng.next_u64(), source_gap_percent: 30, sink_gap_percent: 40 };
-    let run = filter_or_panic("filter_random_lists_every_cycle", seed, 6, &cfg, &slots, gaps);
+    let run = filter_or_panic("filter_random_lists_every_cycle", seed, 6, &cfg, &r.slots, gaps);
     check_image("random lists", w, &run, &rgb, &cov);
     let partial = cov.iter().filter(|&&c| c > 0 && c < 64).count();
     let multi_owner = run.pixels.len();
@@ -110,12 +126,11 @@ fn filter_stage_on_random_lists_with_extreme_distances_and_directions_matches_it
 
 #[test]
 fn filter_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_without_latches() {
-    use std::process::Command;
     for t in ["iverilog", "verilator", "yosys"] {
         assert!(have_tool(t), "{t} is not installed (scripts/test.sh installs it)");
     }
     let sc = scene("teapot", 2, 24, 16);
-    let (slots, rgb, cov) = scene_slots(&sc);
+    let (slots, rgb, cov) = scene_slots(&sc, FilterArea::Box1);
     let cfg = filter_config(&scene_dirs(&sc), sc.background, 8).unwrap();
     let dir = scratch_dir("proof_filter_replay");
     let gaps = StageGaps { seed: 78, source_gap_percent: 25, sink_gap_percent: 25 };
@@ -129,18 +144,24 @@ fn filter_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_witho
         println!("{sim}: {verdict}");
         assert!(verdict.contains(&cycles.to_string()));
     }
-    // Lint the top that `idxrender verilog --block proof_filter` writes. Waivers: WIDTH (rust-hdl's
-    // 32-bit literals and shift counts), DECLFILENAME (one file), UNUSEDSIGNAL (table address bits
-    // above the table size, the low bits of the subpixel distances: only the signs are used, the
-    // fraction bits the output drops).
-    let top = hdl::verilog_top("proof_filter").unwrap();
-    std::fs::write(dir.join("proof_filter.v"), &top).unwrap();
+    // Lint the top that `idxrender verilog --block proof_filter` writes.
+    lint_clean(&dir, "proof_filter", &hdl::verilog_top("proof_filter").unwrap());
+    synth_without_latches(&dir, "proof_filter8", &v);
+}
+
+/// `verilator --lint-only -Wall` of a filter top, clean with the project's named waivers: WIDTH
+/// (rust-hdl's 32-bit literals and shift counts), DECLFILENAME (one file), UNUSEDSIGNAL (table address
+/// bits above the table size, the low bits of the subpixel distances: only the signs are used, the
+/// fraction bits the output drops).
+pub(super) fn lint_clean(dir: &std::path::Path, top: &str, v: &str) {
+    use std::process::Command;
+    let file = dir.join(format!("{top}.v"));
+    std::fs::write(&file, v).unwrap();
     let o = Command::new("verilator")
-        .args(["--lint-only", "-Wall", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSEDSIGNAL", "--top-module", "proof_filter"])
-        .arg(dir.join("proof_filter.v"))
+        .args(["--lint-only", "-Wall", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSEDSIGNAL", "--top-module", top])
+        .arg(&file)
         .output()
         .unwrap();
     let text = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success() && !text.contains("%Warning") && !text.contains("%Error"), "verilator lint:\n{text}");
-    synth_without_latches(&dir, "proof_filter8", &v);
+    assert!(o.status.success() && !text.contains("%Warning") && !text.contains("%Error"), "verilator lint of {top}:\n{text}");
 }

@@ -1,16 +1,20 @@
 //! Testbenches for PROOF (seed 002): the RTL OPP beside `golden::proof`'s cycle models.
 //! * [`bench`]: every cycle on the ports, RustHDL direct drive vs `OppModel`, random gaps, VCDs;
-//! * [`shade_bench`], [`filter_bench`]: every cycle, the shading and filter stages vs their cycle models;
+//! * [`shade_bench`], [`filter_bench`], [`filter2x2_bench`]: every cycle, the shading stage and the
+//!   filter stage (1x1 and 2x2 area, and the 2x2 box alone) vs their cycle models;
 //! * [`replay`], [`stage_replay`]: the generated Verilog replays the recorded vectors (Icarus / Verilator);
 //! * [`backend`]: the RTL backend of `idxrender render --arch proof --backend rtl`.
 
 pub mod backend;
 pub mod bench;
 pub mod convert;
+pub mod filter2x2_bench;
 pub mod filter_bench;
 pub mod replay;
 pub mod shade_bench;
 pub mod stage_replay;
+#[cfg(test)]
+mod filter2x2_tests;
 #[cfg(test)]
 mod filter_tests;
 #[cfg(test)]

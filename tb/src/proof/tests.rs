@@ -166,6 +166,17 @@ fn rtl_opp_shading_and_filter_build_the_golden_lists_and_image_for_polyhedron_an
         // One slot per clock: the last pixel leaves the latency after the last slot entered.
         let latency = golden::proof::cycle_filter::FILTER_LATENCY as u64;
         assert_eq!(filter_cycles, shaded.len() as u64 + latency, "{}: the filter should take one slot per clock", mesh.name);
+        // The paper's 2x2 area in RTL on the same RTL-shaded slots.
+        let golden2 = render_scene(&sc, FilterArea::Box2);
+        let t2 = std::time::Instant::now();
+        let (rgb2, covered2, cycles2) = super::backend::filter2x2_rtl(&sc, &shaded, None).unwrap();
+        println!("  RTL 2x2 filter stage: {} slots in {cycles2} cycles ({:?})", shaded.len(), t2.elapsed());
+        assert_eq!(rgb2, golden2.rgb, "{}: RTL 2x2 filter", mesh.name);
+        assert_eq!(covered2, golden2.covered, "{}: RTL 2x2 filter coverage", mesh.name);
+        assert_ne!(rgb2, rgb, "{}: the 2x2 image should differ from the 1x1 image", mesh.name);
+        // Also one slot per clock; the frame ends with the box's flush of the last row.
+        let want = golden::proof::cycle_filter2x2::filter2x2_frame_cycles(shaded.len(), w);
+        assert_eq!(cycles2, want, "{}: the 2x2 filter should take one slot per clock plus the flush", mesh.name);
     }
 }
 
