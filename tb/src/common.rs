@@ -1,6 +1,61 @@
 //! Shared testbench helpers.
 
-use std::path::PathBuf;
+use rust_hdl::core::vcd_probe::VCDProbe;
+use rust_hdl::prelude::*;
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+
+/// A direct-drive bench's waveform (GUIDE §5): the VCD of the unit under test, written change by
+/// change while the bench runs, and its path for the failure messages. Every every-cycle bench keeps
+/// one beside its unit; `None` writes nothing.
+pub struct Trace {
+    vcd: Option<VCDProbe<BufWriter<File>>>,
+    path: Option<PathBuf>,
+}
+
+impl Trace {
+    /// A VCD of `uut` at `vcd` (its header and the initial values), or no VCD.
+    pub fn new<U: Block>(uut: &U, vcd: Option<&Path>) -> Result<Trace, String> {
+        let probe = match vcd {
+            Some(p) => {
+                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
+                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), uut), uut))
+            }
+            None => None,
+        };
+        Ok(Trace { vcd: probe, path: vcd.map(Path::to_path_buf) })
+    }
+
+    /// Record what changed in `uut` at time `t` (call after it settled).
+    pub fn dump<U: Block>(&mut self, uut: &U, t: u64) -> Result<(), String> {
+        if let Some(mut v) = self.vcd.take() {
+            v.timestamp(t).map_err(|e| format!("vcd: {e}"))?;
+            self.vcd = Some(write_vcd_change(v, uut));
+        }
+        Ok(())
+    }
+
+    /// Close the waveform with a last timestamp at `t`, so that viewers show the final cycle whole.
+    pub fn end(&mut self, t: u64) {
+        if let Some(v) = self.vcd.as_mut() {
+            let _ = v.timestamp(t);
+        }
+    }
+
+    /// The VCD's path, if one is written.
+    pub fn path(&self) -> Option<&Path> {
+        self.path.as_deref()
+    }
+
+    /// A failure in cycle `cycle`, naming the waveform when there is one.
+    pub fn fail(&self, cycle: u64, what: String) -> String {
+        match &self.path {
+            Some(p) => format!("cycle {cycle}: {what} (waveform: {})", p.display()),
+            None => format!("cycle {cycle}: {what}"),
+        }
+    }
+}
 
 /// Where a simulation test leaves its waveform: `target/vcd/<block>/<test>.vcd` under the workspace.
 pub fn vcd_path(block: &str, test: &str) -> PathBuf {

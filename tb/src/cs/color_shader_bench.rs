@@ -5,15 +5,12 @@
 //! ([`CsMemories`], latency 1), which answer the ports. Every output port is compared every cycle; the
 //! first mismatch stops the run with the cycle, the port, both values and the path of a VCD.
 
-use crate::common::{vcd_path, vcd_wanted, Rng};
+use crate::common::{vcd_path, vcd_wanted, Rng, Trace};
 use crate::cs::pack::{record_of, tdata_of, BitVector};
 use crate::cs::replay::{port, PortSpec, Recording};
 use golden::cycle::color_shader::{ColorShaderModel, CsInputs, CsMemories, CsOutputs, ReadPort, VideoBeat, WritePort};
 use hdl::cs::color_shader::ColorShader;
-use rust_hdl::core::vcd_probe::VCDProbe;
 use rust_hdl::prelude::*;
-use std::fs::File;
-use std::io::BufWriter;
 use std::path::PathBuf;
 
 /// One frame to scan.
@@ -160,7 +157,7 @@ fn rtl_outputs(u: &ColorShader) -> CsOutputs {
 
 struct Rtl {
     uut: ColorShader,
-    vcd: Option<VCDProbe<BufWriter<File>>>,
+    trace: Trace,
 }
 
 impl Rtl {
@@ -168,24 +165,14 @@ impl Rtl {
         let mut uut = ColorShader::default();
         uut.connect_all();
         check_all(&uut).map_err(|e| format!("cs design check: {e:?}"))?;
-        let vcd = match vcd {
-            Some(p) => {
-                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
-                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), &uut), &uut))
-            }
-            None => None,
-        };
-        Ok(Rtl { uut, vcd })
+        let trace = Trace::new(&uut, vcd.map(PathBuf::as_path))?;
+        Ok(Rtl { uut, trace })
     }
     fn settle(&mut self, t: u64) -> Result<(), String> {
         if !simulate(&mut self.uut, 200) {
             return Err(format!("cs did not settle at time {t}"));
         }
-        if let Some(mut v) = self.vcd.take() {
-            v.timestamp(t).map_err(|e| format!("vcd: {e}"))?;
-            self.vcd = Some(write_vcd_change(v, &self.uut));
-        }
-        Ok(())
+        self.trace.dump(&self.uut, t)
     }
     fn cycle(&mut self, cycle: u64, i: &CsInputs) -> Result<CsOutputs, String> {
         let u = &mut self.uut;

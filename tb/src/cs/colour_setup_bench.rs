@@ -4,16 +4,13 @@
 //! requires); every output port is compared in every cycle. The first mismatch stops the run with the
 //! cycle, the port, both values and the path of a VCD of the run up to that cycle.
 
-use crate::common::{vcd_path, vcd_wanted, Rng};
+use crate::common::{vcd_path, vcd_wanted, Rng, Trace};
 use crate::cs::pack::{command_of, entry_of, BitVector};
 use crate::cs::replay::{port, Recording};
 use golden::cycle::colour_setup::{ColourSetupModel, SetupCmd, SetupInputs, SetupOutputs, TdbsWrite};
 use golden::shade::TdbsEntry;
 use hdl::cs::colour_setup::ColourSetup;
-use rust_hdl::core::vcd_probe::VCDProbe;
 use rust_hdl::prelude::*;
-use std::fs::File;
-use std::io::BufWriter;
 use std::path::PathBuf;
 
 /// How the command producer behaves.
@@ -102,7 +99,7 @@ fn first_difference(e: &SetupOutputs, a: &SetupOutputs) -> Option<(&'static str,
 
 struct Rtl {
     uut: ColourSetup,
-    vcd: Option<VCDProbe<BufWriter<File>>>,
+    trace: Trace,
 }
 
 impl Rtl {
@@ -110,24 +107,14 @@ impl Rtl {
         let mut uut = ColourSetup::default();
         uut.connect_all();
         check_all(&uut).map_err(|e| format!("colour_setup design check: {e:?}"))?;
-        let vcd = match vcd {
-            Some(p) => {
-                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
-                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), &uut), &uut))
-            }
-            None => None,
-        };
-        Ok(Rtl { uut, vcd })
+        let trace = Trace::new(&uut, vcd.map(PathBuf::as_path))?;
+        Ok(Rtl { uut, trace })
     }
     fn settle(&mut self, t: u64) -> Result<(), String> {
         if !simulate(&mut self.uut, 200) {
             return Err(format!("colour_setup did not settle at time {t}"));
         }
-        if let Some(mut v) = self.vcd.take() {
-            v.timestamp(t).map_err(|e| format!("vcd: {e}"))?;
-            self.vcd = Some(write_vcd_change(v, &self.uut));
-        }
-        Ok(())
+        self.trace.dump(&self.uut, t)
     }
 }
 
@@ -191,9 +178,7 @@ fn run_inner(cmds: &[SetupCmd], drive: SetupDrive, with_rtl: bool, vcd: Option<&
         }
     }
     if let Some(r) = rtl.as_mut() {
-        if let Some(v) = r.vcd.as_mut() {
-            let _ = v.timestamp(cycle * 10 + 10);
-        }
+        r.trace.end(cycle * 10 + 10);
     }
     let dt = t0.elapsed().as_secs_f64();
     run.cycles = cycle;

@@ -3,6 +3,7 @@
 //! compared before each rising edge. The first difference stops the run with the cycle, the port and
 //! both values. Optionally writes a VCD and records the vectors for the Verilog replay.
 
+use crate::common::Trace;
 use super::convert::{params_to_rtl, slot_from_rtl, slot_to_rtl};
 use super::replay::VectorWriter;
 use golden::proof::cycle_opp::{Feeder, GapRng, Gaps, OppIn, OppModel, OppOut, OppRun, Sink};
@@ -10,10 +11,7 @@ use golden::proof::cycle_op::Action;
 use golden::proof::format::ObjectParams;
 use golden::format::Screen;
 use hdl::proof::Opp;
-use rust_hdl::core::vcd_probe::VCDProbe;
 use rust_hdl::prelude::*;
-use std::fs::File;
-use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
 /// Iterations allowed for the combinational settling (the ready path crosses every OP).
@@ -23,8 +21,7 @@ pub struct OppBench {
     pub uut: Opp,
     pub model: OppModel,
     pub cycle: u64,
-    vcd: Option<VCDProbe<BufWriter<File>>>,
-    vcd_path: Option<PathBuf>,
+    trace: Trace,
     pub vectors: Option<VectorWriter>,
 }
 
@@ -33,36 +30,18 @@ impl OppBench {
         let mut uut = Opp::new(n, fifo_depth)?;
         uut.connect_all();
         check_all(&uut).map_err(|e| format!("opp: design check failed: {e:?}"))?;
-        let vcd_probe = match vcd {
-            Some(p) => {
-                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
-                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), &uut), &uut))
-            }
-            None => None,
-        };
+        let trace = Trace::new(&uut, vcd)?;
         Ok(OppBench {
             uut,
             model: OppModel::new(n, fifo_depth)?,
             cycle: 0,
-            vcd: vcd_probe,
-            vcd_path: vcd.map(|p| p.to_path_buf()),
+            trace,
             vectors: vectors.map(VectorWriter::create).transpose()?,
         })
     }
 
-    fn dump(&mut self, t: u64) {
-        if let Some(v) = self.vcd.take() {
-            let mut v = v;
-            let _ = v.timestamp(t);
-            self.vcd = Some(write_vcd_change(v, &self.uut));
-        }
-    }
-
     fn fail(&self, what: String) -> String {
-        match &self.vcd_path {
-            Some(p) => format!("cycle {}: {what} (waveform: {})", self.cycle, p.display()),
-            None => format!("cycle {}: {what}", self.cycle),
-        }
+        self.trace.fail(self.cycle, what)
     }
 
     /// One clock on both sides; returns the (equal) outputs before the edge.
@@ -78,7 +57,7 @@ impl OppBench {
         if !simulate(u, SETTLE) {
             return Err(self.fail("the RTL did not settle".into()));
         }
-        self.dump(10 * self.cycle);
+        self.trace.dump(&self.uut, 10 * self.cycle)?;
         let exp = self.model.outputs(inp.down_ready);
         let u = &self.uut;
         let got_ready = u.upstream.ready.val();
@@ -122,7 +101,7 @@ impl OppBench {
         if !simulate(u, SETTLE) {
             return Err(self.fail("the RTL did not settle".into()));
         }
-        self.dump(10 * self.cycle + 5);
+        self.trace.dump(&self.uut, 10 * self.cycle + 5)?;
         self.cycle += 1;
         Ok(exp)
     }

@@ -7,6 +7,7 @@
 //! and V, each valid bit always and the contents when valid. The first difference stops the run with
 //! the cycle, the register or port, both values and the VCD path.
 
+use crate::common::Trace;
 use super::convert::hex_of;
 use super::filter_bench::{check_tag, compare_front, drive_filter_inputs, filter_ports, filter_vector_row, pixel_from_rtl, pixel_to_rtl, run_filter_top, FilterRun, FilterTop};
 use super::shade_bench::StageGaps;
@@ -16,10 +17,7 @@ use golden::proof::cycle_filter2x2::{BoxA, BoxH, BoxIn, BoxLine, BoxModel, BoxOu
 use golden::proof::cycle_opp::GapRng;
 use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};
 use hdl::proof::{Box2x2, Filter2x2Stage, FilteredPixel as RtlPixel, QuadPixel as RtlQuad};
-use rust_hdl::core::vcd_probe::VCDProbe;
 use rust_hdl::prelude::*;
-use std::fs::File;
-use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
 fn u<const N: usize>(b: Bits<N>) -> u32 {
@@ -113,37 +111,6 @@ pub fn compare_box(u: &Box2x2, m: &BoxModel) -> Result<(), String> {
     Ok(())
 }
 
-/// An every-cycle bench's VCD and failure reports.
-struct Trace {
-    vcd: Option<VCDProbe<BufWriter<File>>>,
-    path: Option<PathBuf>,
-}
-
-impl Trace {
-    fn new<U: Block>(uut: &U, vcd: Option<&Path>) -> Result<Trace, String> {
-        let probe = match vcd {
-            Some(p) => {
-                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
-                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), uut), uut))
-            }
-            None => None,
-        };
-        Ok(Trace { vcd: probe, path: vcd.map(|p| p.to_path_buf()) })
-    }
-    fn dump<U: Block>(&mut self, uut: &U, t: u64) {
-        if let Some(mut v) = self.vcd.take() {
-            let _ = v.timestamp(t);
-            self.vcd = Some(write_vcd_change(v, uut));
-        }
-    }
-    fn fail(&self, cycle: u64, what: String) -> String {
-        match &self.path {
-            Some(p) => format!("cycle {cycle}: {what} (waveform: {})", p.display()),
-            None => format!("cycle {cycle}: {what}"),
-        }
-    }
-}
-
 /// The ports shared by both tops' comparisons.
 fn compare_ports(up_ready: bool, down_valid: bool, down: &RtlPixel, exp_up_ready: bool, exp_down_valid: bool, exp_down: &FilteredPixel) -> Result<(), String> {
     if up_ready != exp_up_ready {
@@ -210,7 +177,7 @@ impl Filter2x2Bench {
         if !simulate(&mut self.uut, 10_000) {
             return Err(self.trace.fail(self.cycle, "the RTL did not settle".into()));
         }
-        self.trace.dump(&self.uut, 10 * self.cycle);
+        self.trace.dump(&self.uut, 10 * self.cycle)?;
         let exp = self.model.outputs(i.down_ready);
         self.compare(&exp).map_err(|e| self.trace.fail(self.cycle, e))?;
         if let Some(w) = self.vectors.as_mut() {
@@ -221,7 +188,7 @@ impl Filter2x2Bench {
         if !simulate(&mut self.uut, 10_000) {
             return Err(self.trace.fail(self.cycle, "the RTL did not settle".into()));
         }
-        self.trace.dump(&self.uut, 10 * self.cycle + 5);
+        self.trace.dump(&self.uut, 10 * self.cycle + 5)?;
         self.cycle += 1;
         Ok(exp)
     }
@@ -298,7 +265,7 @@ impl BoxBench {
         if !simulate(&mut self.uut, 10_000) {
             return Err(self.trace.fail(self.cycle, "the RTL did not settle".into()));
         }
-        self.trace.dump(&self.uut, 10 * self.cycle);
+        self.trace.dump(&self.uut, 10 * self.cycle)?;
         let exp = self.model.outputs(i.down_ready);
         let u = &self.uut;
         compare_ports(u.upstream.ready.val(), u.downstream.valid.val(), &u.downstream.data.val(), exp.up_ready, exp.down_valid, &exp.down_data)
@@ -322,7 +289,7 @@ impl BoxBench {
         if !simulate(&mut self.uut, 10_000) {
             return Err(self.trace.fail(self.cycle, "the RTL did not settle".into()));
         }
-        self.trace.dump(&self.uut, 10 * self.cycle + 5);
+        self.trace.dump(&self.uut, 10 * self.cycle + 5)?;
         self.cycle += 1;
         Ok(exp)
     }

@@ -6,6 +6,7 @@
 //! the sums). The first difference stops the run with the cycle, the port or register, both values
 //! and the VCD path.
 
+use crate::common::Trace;
 use super::convert::hex_of;
 use super::shade_bench::{shaded_to_rtl, StageGaps};
 use super::stage_replay::{inp, out, Port, Recorder};
@@ -14,10 +15,7 @@ use golden::proof::cycle_opp::GapRng;
 use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};
 use hdl::proof::edge_mask::EdgeMask;
 use hdl::proof::{FilterFront, FilterStage, FilterTag, FilteredPixel as RtlPixel, ShadedSlot as RtlShaded};
-use rust_hdl::core::vcd_probe::VCDProbe;
 use rust_hdl::prelude::*;
-use std::fs::File;
-use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
 fn sext(v: u64, bits: u32) -> i64 {
@@ -149,8 +147,7 @@ pub struct FilterBench {
     pub uut: FilterStage,
     pub model: FilterModel,
     pub cycle: u64,
-    vcd: Option<VCDProbe<BufWriter<File>>>,
-    vcd_path: Option<PathBuf>,
+    trace: Trace,
     pub vectors: Option<Recorder>,
 }
 
@@ -164,35 +161,18 @@ impl FilterBench {
         let mut uut = FilterStage::new(obj_addr_bits)?;
         uut.connect_all();
         check_all(&uut).map_err(|e| format!("proof_filter: design check failed: {e:?}"))?;
-        let vcd_probe = match vcd {
-            Some(p) => {
-                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
-                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), &uut), &uut))
-            }
-            None => None,
-        };
+        let trace = Trace::new(&uut, vcd)?;
         Ok(FilterBench {
             uut,
             model,
             cycle: 0,
-            vcd: vcd_probe,
-            vcd_path: vcd.map(|p| p.to_path_buf()),
+            trace,
             vectors: vectors.map(|p| Recorder::create(p, &filter_ports())).transpose()?,
         })
     }
 
-    fn dump(&mut self, t: u64) {
-        if let Some(mut v) = self.vcd.take() {
-            let _ = v.timestamp(t);
-            self.vcd = Some(write_vcd_change(v, &self.uut));
-        }
-    }
-
     fn fail(&self, what: String) -> String {
-        match &self.vcd_path {
-            Some(p) => format!("cycle {}: {what} (waveform: {})", self.cycle, p.display()),
-            None => format!("cycle {}: {what}", self.cycle),
-        }
+        self.trace.fail(self.cycle, what)
     }
 
     fn compare(&self, exp: &FilterOut) -> Result<(), String> {
@@ -241,7 +221,7 @@ impl FilterBench {
         if !simulate(&mut self.uut, 10_000) {
             return Err(self.fail("the RTL did not settle".into()));
         }
-        self.dump(10 * self.cycle);
+        self.trace.dump(&self.uut, 10 * self.cycle)?;
         let exp = self.model.outputs(i.down_ready);
         self.compare(&exp)?;
         if let Some(w) = self.vectors.as_mut() {
@@ -252,7 +232,7 @@ impl FilterBench {
         if !simulate(&mut self.uut, 10_000) {
             return Err(self.fail("the RTL did not settle".into()));
         }
-        self.dump(10 * self.cycle + 5);
+        self.trace.dump(&self.uut, 10 * self.cycle + 5)?;
         self.cycle += 1;
         Ok(exp)
     }

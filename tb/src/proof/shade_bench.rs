@@ -4,16 +4,14 @@
 //! register's valid bit and, when valid, its arithmetic fields. The first difference stops the run
 //! with the cycle, the port or register, both values and the VCD path.
 
+use crate::common::Trace;
 use super::convert::{hex_of, slot_to_rtl};
 use super::stage_replay::{inp, out, Port, Recorder};
 use golden::proof::cycle_opp::GapRng;
 use golden::proof::cycle_shade::{CfgWrite, ShadeIn, ShadeModel, ShadeOut, ShadedSlot, Work};
 use golden::proof::format::Slot;
 use hdl::proof::{ShadeWork, ShadedSlot as RtlShaded, ShadingStage};
-use rust_hdl::core::vcd_probe::VCDProbe;
 use rust_hdl::prelude::*;
-use std::fs::File;
-use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
 fn sext16(v: u64) -> i16 {
@@ -87,8 +85,7 @@ pub struct ShadeBench {
     pub uut: ShadingStage,
     pub model: ShadeModel,
     pub cycle: u64,
-    vcd: Option<VCDProbe<BufWriter<File>>>,
-    vcd_path: Option<PathBuf>,
+    trace: Trace,
     pub vectors: Option<Recorder>,
 }
 
@@ -97,35 +94,18 @@ impl ShadeBench {
         let mut uut = ShadingStage::new(n_lights, obj_addr_bits)?;
         uut.connect_all();
         check_all(&uut).map_err(|e| format!("proof_shade: design check failed: {e:?}"))?;
-        let vcd_probe = match vcd {
-            Some(p) => {
-                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
-                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), &uut), &uut))
-            }
-            None => None,
-        };
+        let trace = Trace::new(&uut, vcd)?;
         Ok(ShadeBench {
             uut,
             model: ShadeModel::new(n_lights, obj_addr_bits as u32)?,
             cycle: 0,
-            vcd: vcd_probe,
-            vcd_path: vcd.map(|p| p.to_path_buf()),
+            trace,
             vectors: vectors.map(|p| Recorder::create(p, &shade_ports())).transpose()?,
         })
     }
 
-    fn dump(&mut self, t: u64) {
-        if let Some(mut v) = self.vcd.take() {
-            let _ = v.timestamp(t);
-            self.vcd = Some(write_vcd_change(v, &self.uut));
-        }
-    }
-
     fn fail(&self, what: String) -> String {
-        match &self.vcd_path {
-            Some(p) => format!("cycle {}: {what} (waveform: {})", self.cycle, p.display()),
-            None => format!("cycle {}: {what}", self.cycle),
-        }
+        self.trace.fail(self.cycle, what)
     }
 
     fn compare(&self, exp: &ShadeOut) -> Result<(), String> {
@@ -175,7 +155,7 @@ impl ShadeBench {
         if !simulate(u, 10_000) {
             return Err(self.fail("the RTL did not settle".into()));
         }
-        self.dump(10 * self.cycle);
+        self.trace.dump(&self.uut, 10 * self.cycle)?;
         let exp = self.model.outputs(i.down_ready);
         self.compare(&exp)?;
         if let Some(w) = self.vectors.as_mut() {
@@ -201,7 +181,7 @@ impl ShadeBench {
         if !simulate(u, 10_000) {
             return Err(self.fail("the RTL did not settle".into()));
         }
-        self.dump(10 * self.cycle + 5);
+        self.trace.dump(&self.uut, 10 * self.cycle + 5)?;
         self.cycle += 1;
         Ok(exp)
     }

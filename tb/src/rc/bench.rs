@@ -9,15 +9,12 @@
 
 use super::memory::Sram;
 use super::replay::VectorWriter;
-use crate::common::{vcd_path, vcd_wanted, Rng};
+use crate::common::{vcd_path, vcd_wanted, Rng, Trace};
 use golden::cycle::rc::{CmdKind, RcCmd, RcInputs, RcModel, RcOutputs, RcResult};
 use golden::format::{Screen, DEPTH_MAX, INDEX_BACKGROUND};
 use golden::raster::{CullMode, FrontFace};
 use hdl::rc::{Rc, RcCommand, CMD_END_OF_FRAME, CMD_FRAME, CMD_TRIANGLE, CULL_BACK, CULL_FRONT, CULL_NONE};
-use rust_hdl::core::vcd_probe::VCDProbe;
 use rust_hdl::prelude::*;
-use std::fs::File;
-use std::io::BufWriter;
 use std::path::PathBuf;
 
 /// How the bench drives the handshakes and what the buffers hold at the start.
@@ -157,7 +154,7 @@ pub struct Mismatch {
 /// The RTL under direct drive, with an optional VCD.
 struct RtlSim {
     uut: Rc,
-    vcd: Option<VCDProbe<BufWriter<File>>>,
+    trace: Trace,
 }
 
 impl RtlSim {
@@ -165,24 +162,14 @@ impl RtlSim {
         let mut uut = Rc::new(screen.width, screen.height)?;
         uut.connect_all();
         check_all(&uut).map_err(|e| format!("rc design check: {e:?}"))?;
-        let vcd = match vcd {
-            Some(p) => {
-                let f = File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
-                Some(write_vcd_dump(write_vcd_header(BufWriter::new(f), &uut), &uut))
-            }
-            None => None,
-        };
-        Ok(RtlSim { uut, vcd })
+        let trace = Trace::new(&uut, vcd.map(PathBuf::as_path))?;
+        Ok(RtlSim { uut, trace })
     }
     fn settle(&mut self, t: u64) -> Result<(), String> {
         if !simulate(&mut self.uut, 200) {
             return Err(format!("the RTL did not settle at time {t} (combinational loop?)"));
         }
-        if let Some(mut v) = self.vcd.take() {
-            v.timestamp(t).map_err(|e| format!("vcd: {e}"))?;
-            self.vcd = Some(write_vcd_change(v, &self.uut));
-        }
-        Ok(())
+        self.trace.dump(&self.uut, t)
     }
     /// Drive the inputs with the falling edge and return the outputs of the cycle.
     fn cycle(&mut self, cycle: u64, inp: &RcInputs) -> Result<RcOutputs, String> {
