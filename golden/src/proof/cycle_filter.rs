@@ -335,9 +335,22 @@ impl FilterModel {
     }
 }
 
-/// Filter a stream of shaded slots through the model with no gaps: configure, then return the pixels
-/// in order and the cycles the slots took.
-pub fn filter_slots(model: &mut FilterModel, cfg: &[CfgWrite], slots: &[ShadedSlot]) -> Result<(Vec<FilteredPixel>, u64), String> {
+/// A filter stage's cycle model: the 1x1 area ([`FilterModel`]) or the 2x2 one
+/// (`cycle_filter2x2::Filter2x2Model`), on the same ports.
+pub trait FilterStageModel {
+    fn step(&mut self, inp: &FilterIn) -> Result<FilterOut, String>;
+}
+
+impl FilterStageModel for FilterModel {
+    fn step(&mut self, inp: &FilterIn) -> Result<FilterOut, String> {
+        FilterModel::step(self, inp)
+    }
+}
+
+/// Filter a frame's stream of shaded slots through a filter model with no gaps: configure, then return
+/// the pixels in order and the cycles until the last one left. `idle_limit` cycles without a pixel is an
+/// error (a list without a last slot, or not a whole frame); the 2x2 area needs more than a row of them.
+pub fn filter_slots<M: FilterStageModel>(model: &mut M, cfg: &[CfgWrite], slots: &[ShadedSlot], idle_limit: u32) -> Result<(Vec<FilteredPixel>, u64), String> {
     for c in cfg {
         model.step(&FilterIn { cfg: Some(*c), down_ready: true, ..Default::default() })?;
     }
@@ -356,8 +369,8 @@ pub fn filter_slots(model: &mut FilterModel, cfg: &[CfgWrite], slots: &[ShadedSl
             idle = 0;
         } else {
             idle += 1;
-            if idle > 1000 {
-                return Err("the filter model produced no pixel for 1000 cycles (a list without a last slot?)".into());
+            if idle > idle_limit {
+                return Err(format!("the filter model produced no pixel for {idle_limit} cycles (a list without a last slot, or not a whole frame?)"));
             }
         }
     }

@@ -42,7 +42,6 @@
 
 use super::cycle_filter::{filter_write, FilterFront, FilterOut, FilteredPixel, Tag};
 use super::cycle_opp::GapRng;
-use super::cycle_shade::{CfgWrite, ShadedSlot};
 
 /// Clocks from a frame's first slot to its last pixel leaving the 2x2 stage when nothing stalls (the
 /// frame's slots one per clock, as the 1x1 stage's `slots + 8`): after the last slot, 7 registers to
@@ -383,33 +382,10 @@ impl Filter2x2Model {
     }
 }
 
-/// Filter a frame's stream of shaded slots through the 2x2 model with no gaps: configure, then return
-/// the pixels in order and the cycles the slots took (until the last pixel left).
-pub fn filter2x2_slots(model: &mut Filter2x2Model, cfg: &[CfgWrite], slots: &[ShadedSlot]) -> Result<(Vec<FilteredPixel>, u64), String> {
-    for c in cfg {
-        model.step(&FilterIn { cfg: Some(*c), down_ready: true, ..Default::default() })?;
+impl super::cycle_filter::FilterStageModel for Filter2x2Model {
+    fn step(&mut self, inp: &FilterIn) -> Result<FilterOut, String> {
+        Filter2x2Model::step(self, inp)
     }
-    let pixels = slots.iter().filter(|s| s.last).count();
-    let mut out = Vec::with_capacity(pixels);
-    let (mut i, mut idle, mut cycles) = (0usize, 0u32, 0u64);
-    while out.len() < pixels {
-        let inp = FilterIn { up_valid: i < slots.len(), up_data: slots.get(i).copied().unwrap_or_default(), down_ready: true, cfg: None };
-        let o = model.step(&inp)?;
-        cycles += 1;
-        if inp.up_valid && o.up_ready {
-            i += 1;
-        }
-        if o.down_valid {
-            out.push(o.down_data);
-            idle = 0;
-        } else {
-            idle += 1;
-            if idle > 4000 {
-                return Err("the 2x2 filter model produced no pixel for 4000 cycles (a list without a last slot, or not a whole frame?)".into());
-            }
-        }
-    }
-    Ok((out, cycles))
 }
 
 /// Random but consistent quadrant sums for the box's tests: coverage 0..=16 with the extremes often,
@@ -547,7 +523,7 @@ mod tests {
             // Without gaps: the frame takes its slots, the front's and Q's registers, the row of
             // lag and the flush.
             let mut m = Filter2x2Model::new(10, w, h).unwrap();
-            let (px, cycles) = filter2x2_slots(&mut m, &cfg, &slots).unwrap();
+            let (px, cycles) = super::super::cycle_filter::filter_slots(&mut m, &cfg, &slots, 4000).unwrap();
             assert_eq!(px.len(), (w * h) as usize);
             assert_eq!(cycles, filter2x2_frame_cycles(slots.len(), w), "{}: {} slots", mesh.name, slots.len());
         }
