@@ -114,6 +114,44 @@ fn nextpnr_ecp5() -> Result<PathBuf, String> {
     Ok(exe)
 }
 
+/// The place-and-route programs of one run, found once before the first synthesis (an ECP5 tool that
+/// cannot be had stops the run there, not after the first top's yosys).
+struct PnrTools {
+    /// nextpnr-ecp5 as an absolute path or a PATH name (the tools run inside each top's work folder).
+    ecp5: Option<PathBuf>,
+}
+
+impl PnrTools {
+    fn find(devices: &[Device]) -> Result<PnrTools, String> {
+        let ecp5 = match devices.iter().any(|d| d.ecp5()) {
+            false => None,
+            true => {
+                let p = nextpnr_ecp5()?;
+                Some(if p.components().count() > 1 { std::fs::canonicalize(&p).map_err(|e| format!("{}: {e}", p.display()))? } else { p })
+            }
+        };
+        Ok(PnrTools { ecp5 })
+    }
+    /// The program for a device, and its name for messages.
+    fn for_device(&self, dev: Device) -> (PathBuf, &'static str) {
+        match (&self.ecp5, dev.ecp5()) {
+            (Some(p), true) => (p.clone(), "nextpnr-ecp5"),
+            _ => (PathBuf::from("nextpnr-ice40"), "nextpnr-ice40"),
+        }
+    }
+    /// The versions of the programs the rows used, for the report's header.
+    fn versions(&self, rows: &[Row]) -> String {
+        let mut v = Vec::new();
+        if rows.iter().any(|r| !r.device.ecp5()) {
+            v.push(tool_version("nextpnr-ice40", "--version"));
+        }
+        if let (Some(p), true) = (&self.ecp5, rows.iter().any(|r| r.device.ecp5())) {
+            v.push(tool_version(&p.to_string_lossy(), "--version"));
+        }
+        v.join("; ")
+    }
+}
+
 #[derive(clap::Args, Debug)]
 pub struct FpgaArgs {
     /// One top (of `hdl::TOPS`); all of them when left out.
@@ -391,7 +429,7 @@ fn tool_version(tool: &str, arg: &str) -> String {
 /// design is PROOF's 1024-entry object table).
 const SCREEN_WORDS: u64 = 16384;
 
-fn report_top(top: &str, devices: &[Device], args: &FpgaArgs, dir: &Path) -> Result<Vec<Row>, String> {
+fn report_top(top: &str, devices: &[Device], tools: &PnrTools, args: &FpgaArgs, dir: &Path) -> Result<Vec<Row>, String> {
     let v = hdl::verilog_top(top)?;
     let ports = parse_ports(&v, top)?;
     if let Some((n, w)) = verilog_facts(&v).memories.into_iter().find(|(n, _)| *n >= SCREEN_WORDS) {
@@ -425,13 +463,10 @@ fn report_top(top: &str, devices: &[Device], args: &FpgaArgs, dir: &Path) -> Res
         }
         let core = parse_stat(&log, top).ok_or_else(|| format!("no `stat` of module {top} in {}", dir.join(&ylog).display()))?;
         let wrap = parse_stat(&log, &format!("fpga_{top}"));
-        let pnr_tool = if dev.ecp5() { nextpnr_ecp5()? } else { PathBuf::from("nextpnr-ice40") };
-        let pnr_name = if dev.ecp5() { "nextpnr-ecp5" } else { "nextpnr-ice40" };
+        let (pnr_tool, pnr_name) = tools.for_device(dev);
         crate::say!("  {top} / {d}: {} LUT4, {} FF, {} CARRY, {} BRAM, {} DSP ({synth_s:.0} s); {pnr_name} ...", core.lut4, core.ff, core.carry, core.bram, core.dsp);
         let plog = format!("nextpnr_{d}.log");
         let _ = std::fs::remove_file(dir.join(&plog));
-        // The tool runs in `dir`: a relative path to it (target/yowasp/...) must be made absolute.
-        let pnr_tool = if pnr_tool.components().count() > 1 { std::fs::canonicalize(&pnr_tool).unwrap_or(pnr_tool) } else { pnr_tool };
         let (_, pnr_s) = run_limited(
             Command::new(&pnr_tool)
                 .current_dir(dir)
@@ -461,14 +496,14 @@ fn report_top(top: &str, devices: &[Device], args: &FpgaArgs, dir: &Path) -> Res
 }
 
 /// The Markdown report.
-pub fn markdown(rows: &[Row], args: &FpgaArgs, wall: f64) -> String {
+fn markdown(rows: &[Row], tools: &PnrTools, args: &FpgaArgs, wall: f64) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "# FPGA utilisation and timing of the RTL tops (iCE40, ECP5)\n");
     let _ = writeln!(
         s,
         "Written by `idxrender fpga-report` ({}; {}), nextpnr seed {}, clock target {} MHz; wall time {:.0} s on this machine ({} CPUs).\n",
         tool_version("yosys", "-V"),
-        rows.iter().map(|r| if r.device.ecp5() { "nextpnr-ecp5" } else { "nextpnr-ice40" }).collect::<std::collections::BTreeSet<_>>().into_iter().map(|t| if t == "nextpnr-ecp5" { nextpnr_ecp5().map(|p| tool_version(&p.to_string_lossy(), "--version")).unwrap_or_default() } else { tool_version(t, "--version") }).collect::<Vec<_>>().join("; "),
+        tools.versions(rows),
         args.seed,
         args.freq,
         wall,
@@ -550,14 +585,15 @@ pub fn run(args: &FpgaArgs) -> Result<(), String> {
         return Err("--timeout must be at least 1 second".into());
     }
     let devices = if args.device.is_empty() { vec![Device::Up5k, Device::Hx8k, Device::Ecp5_45k] } else { args.device.clone() };
+    let tools = PnrTools::find(&devices)?;
     let t0 = Instant::now();
     let mut rows = Vec::new();
     for (i, top) in tops.iter().enumerate() {
         crate::say!("[{}/{}] {top}", i + 1, tops.len());
         let dir = args.work.join(top);
-        rows.extend(report_top(top, &devices, args, &dir)?);
+        rows.extend(report_top(top, &devices, &tools, args, &dir)?);
     }
-    let md = markdown(&rows, args, t0.elapsed().as_secs_f64());
+    let md = markdown(&rows, &tools, args, t0.elapsed().as_secs_f64());
     let (dir, name) = match (args.out.parent(), args.out.file_name()) {
         (Some(d), Some(n)) => (if d.as_os_str().is_empty() { Path::new(".") } else { d }, n.to_string_lossy().to_string()),
         _ => return Err(format!("--out {} is not a file path", args.out.display())),
