@@ -392,18 +392,43 @@ pub fn shaded_slots(width: u32, lists: &[Vec<super::format::Entry>], colours: &[
     v
 }
 
+/// Test fixtures shared by the 1x1 and 2x2 filter models' tests: a real scene's lists as a slot
+/// stream, and a run of any filter model with random gaps on both sides.
 #[cfg(test)]
-mod tests {
+pub(crate) mod fixtures {
     use super::*;
     use crate::proof::cycle_opp::GapRng;
-    use crate::proof::filter::{subpixel_mask, FilterArea};
     use crate::proof::format::Entry;
-    use crate::proof::render::{dirs_of, filter_lists, object_lists};
-    use crate::proof::setup::scene_setup;
+    use crate::proof::render::{dirs_of, object_lists};
+    use crate::proof::setup::{scene_setup, ProofScene};
     use crate::proof::shade::shade_entry;
-    use crate::scene::builtin;
+    use crate::scene::Mesh;
 
-    fn run_with_gaps(m: &mut FilterModel, cfg: &[CfgWrite], slots: &[ShadedSlot], seed: u64, gin: u64, gout: u64) -> Vec<FilteredPixel> {
+    /// A scene at w x h with the CLI's options: its object lists, their shaded colours, the slot stream
+    /// and the filter's configuration writes (10 object-address bits).
+    pub struct RealFrame {
+        pub sc: ProofScene,
+        pub lists: Vec<Vec<Entry>>,
+        pub colours: Vec<Vec<[u8; 3]>>,
+        pub slots: Vec<ShadedSlot>,
+        pub cfg: Vec<CfgWrite>,
+    }
+
+    pub fn real_frame(mesh: &Mesh, w: u32, h: u32) -> RealFrame {
+        let opts = crate::proof::study::cli_options(mesh, w, h);
+        let sc = scene_setup(mesh, &opts).unwrap();
+        let lists = object_lists(sc.screen, &sc.objects);
+        let colours: Vec<Vec<[u8; 3]>> =
+            lists.iter().map(|l| l.iter().map(|e| shade_entry(&sc.lights, e.normal, sc.material[e.id as usize])).collect()).collect();
+        let slots = shaded_slots(w, &lists, &colours);
+        let dirs: Vec<_> = (0..sc.objects.len()).map(|i| dirs_of(&sc, i as u16)).collect();
+        let cfg = filter_config(&dirs, sc.background, 10).unwrap();
+        RealFrame { sc, lists, colours, slots, cfg }
+    }
+
+    /// Configure, then feed the slots with `gin`% input gaps and `gout`% output stalls (seeded) until a
+    /// pixel per list has left.
+    pub fn run_with_gaps<M: FilterStageModel>(m: &mut M, cfg: &[CfgWrite], slots: &[ShadedSlot], seed: u64, gin: u64, gout: u64) -> Vec<FilteredPixel> {
         for c in cfg {
             m.step(&FilterIn { cfg: Some(*c), down_ready: true, ..Default::default() }).unwrap();
         }
@@ -424,19 +449,24 @@ mod tests {
         }
         out
     }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fixtures::{real_frame, run_with_gaps, RealFrame};
+    use super::*;
+    use crate::proof::cycle_opp::GapRng;
+    use crate::proof::filter::{subpixel_mask, FilterArea};
+    use crate::proof::format::Entry;
+    use crate::proof::render::filter_lists;
+    use crate::scene::builtin;
+
 
     #[test]
     fn the_filter_cycle_model_equals_the_algorithmic_filter_on_real_lists_with_gaps() {
         for (mesh, w, h) in [(builtin::polyhedron(), 64, 40), (builtin::teapot(2), 48, 30)] {
-            let opts = crate::proof::study::cli_options(&mesh, w, h);
-            let sc = scene_setup(&mesh, &opts).unwrap();
-            let lists = object_lists(sc.screen, &sc.objects);
-            let colours: Vec<Vec<[u8; 3]>> =
-                lists.iter().map(|l| l.iter().map(|e| shade_entry(&sc.lights, e.normal, sc.material[e.id as usize])).collect()).collect();
+            let RealFrame { sc, lists, colours, slots, cfg } = real_frame(&mesh, w, h);
             let (want_rgb, want_cov) = filter_lists(&sc, &lists, &colours, FilterArea::Box1);
-            let slots = shaded_slots(w, &lists, &colours);
-            let dirs: Vec<_> = (0..sc.objects.len()).map(|i| dirs_of(&sc, i as u16)).collect();
-            let cfg = filter_config(&dirs, sc.background, 10).unwrap();
             for (seed, gin, gout) in [(1, 0, 0), (3, 30, 30), (17, 5, 60)] {
                 let mut m = FilterModel::new(10).unwrap();
                 let out = run_with_gaps(&mut m, &cfg, &slots, seed, gin, gout);

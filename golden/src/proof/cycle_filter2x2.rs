@@ -429,11 +429,9 @@ pub fn box2_of_quads(width: u32, height: u32, quads: &[QuadPixel], background: [
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::proof::cycle_filter::{filter_config, shaded_slots};
+    use crate::proof::cycle_filter::fixtures::{real_frame, run_with_gaps, RealFrame};
     use crate::proof::filter::FilterArea;
-    use crate::proof::render::{dirs_of, filter_lists, object_lists};
-    use crate::proof::setup::scene_setup;
-    use crate::proof::shade::shade_entry;
+    use crate::proof::render::filter_lists;
     use crate::scene::builtin;
 
     fn run_box(m: &mut BoxModel, quads: &[QuadPixel], bg: [u8; 3], seed: u64, gin: u64, gout: u64) -> Vec<FilteredPixel> {
@@ -483,36 +481,14 @@ mod tests {
     #[test]
     fn the_2x2_cycle_model_equals_the_algorithmic_2x2_filter_on_real_lists_with_gaps() {
         for (mesh, w, h) in [(builtin::polyhedron(), 64, 40), (builtin::teapot(2), 48, 30)] {
-            let opts = crate::proof::study::cli_options(&mesh, w, h);
-            let sc = scene_setup(&mesh, &opts).unwrap();
-            let lists = object_lists(sc.screen, &sc.objects);
-            let colours: Vec<Vec<[u8; 3]>> =
-                lists.iter().map(|l| l.iter().map(|e| shade_entry(&sc.lights, e.normal, sc.material[e.id as usize])).collect()).collect();
+            let RealFrame { sc, lists, colours, slots, cfg } = real_frame(&mesh, w, h);
             let (want_rgb, want_cov) = filter_lists(&sc, &lists, &colours, FilterArea::Box2);
             let (rgb1, _) = filter_lists(&sc, &lists, &colours, FilterArea::Box1);
             assert_ne!(want_rgb, rgb1, "{}: the 2x2 image should differ from the 1x1 one", mesh.name);
-            let slots = shaded_slots(w, &lists, &colours);
-            let dirs: Vec<_> = (0..sc.objects.len()).map(|i| dirs_of(&sc, i as u16)).collect();
-            let cfg = filter_config(&dirs, sc.background, 10).unwrap();
             for (seed, gin, gout) in [(1u64, 0u64, 0u64), (3, 30, 30), (17, 5, 60)] {
                 let mut m = Filter2x2Model::new(10, w, h).unwrap();
-                for c in &cfg {
-                    m.step(&FilterIn { cfg: Some(*c), down_ready: true, ..Default::default() }).unwrap();
-                }
-                let mut rng = GapRng(seed);
-                let (mut i, mut out) = (0, Vec::new());
-                while out.len() < (w * h) as usize {
-                    let go = i < slots.len() && !rng.percent(gin);
-                    let ready = !rng.percent(gout);
-                    let inp = FilterIn { up_valid: go, up_data: slots.get(i).copied().unwrap_or_default(), down_ready: ready, cfg: None };
-                    let o = m.step(&inp).unwrap();
-                    if go && o.up_ready {
-                        i += 1;
-                    }
-                    if o.down_valid && ready {
-                        out.push(o.down_data);
-                    }
-                }
+                let out = run_with_gaps(&mut m, &cfg, &slots, seed, gin, gout);
+                assert_eq!(out.len(), (w * h) as usize);
                 for (p, o) in out.iter().enumerate() {
                     let (x, y) = ((p as u32 % w) as u16, (p as u32 / w) as u16);
                     assert_eq!((o.x, o.y), (x, y), "{} pixel order", mesh.name);
