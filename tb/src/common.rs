@@ -43,11 +43,6 @@ impl Trace {
         }
     }
 
-    /// The VCD's path, if one is written.
-    pub fn path(&self) -> Option<&Path> {
-        self.path.as_deref()
-    }
-
     /// A failure in cycle `cycle`, naming the waveform when there is one.
     pub fn fail(&self, cycle: u64, what: String) -> String {
         match &self.path {
