@@ -51,6 +51,52 @@ pub const PLANE_C_BITS: u32 = 56;
 /// Fraction bits of a normal-vector component (Q1.14).
 pub const NORMAL_FRAC: u32 = 14;
 
+/// Lights the Color Shader's Phong datapath holds (one light unit each, all working on every pixel).
+pub const CS_LIGHTS: usize = 2;
+/// Materials the Color Shader's Phong datapath holds (its material memory; TdbS's material field is
+/// read through its low `CS_MATERIAL_BITS` bits).
+pub const CS_MATERIAL_BITS: u32 = 4;
+pub const CS_MATERIALS: usize = 1 << CS_MATERIAL_BITS;
+/// Largest log2 of the gloss the Phong datapath squares for (gloss 1..=16: 4 squaring stages).
+pub const CS_GLOSS_LOG2_MAX: u32 = 4;
+
+/// Index bits of the reciprocal-square-root seed table: `m[31:24]` of the normalised |n|^2.
+pub const RSQRT_TABLE_BITS: u32 = 8;
+
+/// The seed table of [`rsqrt`]: for `i` in 64..=255, `round(2^19 / sqrt(i + 1/2))` = 2^16/sqrt(x) at the
+/// middle of the interval `x = m/2^30` in `[i/64, (i+1)/64)`; entries below 64 are never read (0).
+pub fn rsqrt_seed(i: u32) -> u32 {
+    if (64..256).contains(&i) {
+        ((1u64 << 19) as f64 / (i as f64 + 0.5).sqrt()).round() as u32
+    } else {
+        0
+    }
+}
+
+/// The reciprocal square root of the Color Shader's normaliser, in the hardware's integer steps.
+///
+/// Input: `m` in `[2^30, 2^32)`, a squared length normalised by an even left shift. Output
+/// `y ~ 2^16 / sqrt(m / 2^30)` in `[2^15 - 2, 2^16]` (17 bits):
+/// 1. `y0 = rsqrt_seed(m >> 24)` (a 192-entry table, relative error below 2^-8),
+/// 2. one Newton-Raphson step `y1 = y0 (3 - x y0^2) / 2` on 18-bit operands:
+///    `t = round(y0^2 / 2^14)`, `p = (m >> 14) * t` (= x y0^2 * 2^34), `e = round((3 * 2^34 - p) / 2^18)`,
+///    `y1 = round(y0 * e / 2^17)` (each rounding: add half, shift).
+///
+/// Its error against `2^16/sqrt(m/2^30)` is checked for every `m >> 14` (the only bits it reads) in
+/// `rsqrt_is_within_its_bound_over_the_whole_input_range` (the bound is [`RSQRT_MAX_ERROR`]).
+pub fn rsqrt(m: u32) -> u32 {
+    debug_assert!(m >= 1 << 30);
+    let y0 = rsqrt_seed(m >> 24) as u64;
+    let t = (y0 * y0 + (1 << 13)) >> 14;
+    let p = (m as u64 >> 14) * t;
+    let e = ((3u64 << 34) - p + (1 << 17)) >> 18;
+    ((y0 * e + (1 << 16)) >> 17) as u32
+}
+
+/// The largest error of [`rsqrt`], in units of its last place (2^-16 of 1/sqrt(x)); measured over the
+/// whole input range by the test named there.
+pub const RSQRT_MAX_ERROR: f64 = 2.0;
+
 /// Significant bits of the reciprocal mantissa: r = floor(2^(s+RECIP_BITS) / det), in [2^23, 2^24].
 pub const RECIP_BITS: u32 = 24;
 
@@ -217,6 +263,22 @@ mod tests {
             assert_eq!(r.mant as u128, exact, "det {det}");
             assert!(r.mant >= 1 << 23 && r.mant <= 1 << 24, "det {det}: mant {}", r.mant);
         }
+    }
+
+    #[test]
+    fn rsqrt_is_within_its_bound_over_the_whole_input_range() {
+        // rsqrt reads only m >> 14: every value of that is tried, at both ends of its interval.
+        let mut worst = 0.0f64;
+        for hi in (1u32 << 16)..(1u32 << 18) {
+            for m in [hi << 14, (hi << 14) | 0x3fff] {
+                let exact = 65536.0 / (m as f64 / (1u64 << 30) as f64).sqrt();
+                let y = rsqrt(m);
+                assert!(y >= (1 << 15) - 2 && y <= 1 << 16, "m {m:#x}: y {y}");
+                worst = worst.max((y as f64 - exact).abs());
+            }
+        }
+        assert!(worst <= RSQRT_MAX_ERROR, "worst error {worst} ulp");
+        eprintln!("rsqrt: worst error {worst:.3} ulp of 2^-16");
     }
 
     #[test]

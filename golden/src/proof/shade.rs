@@ -14,36 +14,12 @@
 use crate::format::{round_shift, NORMAL_FRAC};
 use crate::shade::PhongLights;
 
-/// Q1.14 one.
-pub const ONE_Q14: i64 = 1 << NORMAL_FRAC;
-
-/// The clamped dot product of a (not unit) normal with a unit vector, Q1.14 in [0, 1].
-pub fn dot_q14(n: [i16; 3], b: [i64; 3]) -> i64 {
-    let s: i64 = (0..3).map(|k| n[k] as i64 * b[k]).sum();
-    round_shift(s as i128, NORMAL_FRAC).clamp(0, ONE_Q14 as i128) as i64
-}
-
-/// x^(2^k) in Q1.14 by k roundings of a square.
-pub fn power_q14(mut x: i64, log2m: u32) -> i64 {
-    for _ in 0..log2m {
-        x = round_shift((x * x) as i128, NORMAL_FRAC) as i64;
-    }
-    x
-}
+pub use crate::shade::{dot_q14, power_q14, ONE_Q14};
 
 /// The unrounded intensity sum of the light-source pipeline for one entry, per channel, with
-/// 14 + 8 fraction bits.
+/// 14 + 8 fraction bits: the project's one light sum ([`PhongLights::intensity`]) on the OP's normal.
 pub fn intensity(lights: &PhongLights, n: [i16; 3], material: u16) -> [i64; 3] {
-    let m = &lights.materials[material as usize];
-    let mut acc = m.ambient.map(|a| a << NORMAL_FRAC);
-    for li in 0..lights.l.len() {
-        let nl = dot_q14(n, lights.l[li]);
-        let sp = if nl > 0 { power_q14(dot_q14(n, lights.h[li]), m.gloss_log2) } else { 0 };
-        for k in 0..3 {
-            acc[k] += m.diffuse[li][k] * nl + m.specular[li][k] * sp;
-        }
-    }
-    acc
+    lights.intensity(n.map(|c| c as i64), material)
 }
 
 /// The colour of one list entry.
