@@ -1,9 +1,10 @@
 //! Cycle-accurate model of the Color Shader (`hdl/src/cs/color_shader.rs`), seed 001 §3.1: the
 //! scan-out engine that reads the I-buffer in raster order, fetches TdbS by index and evaluates the
-//! colour planes, one pixel per clock, onto an AXI4-Stream video output.
+//! colour planes (flat, Gouraud) or lights the interpolated normal (Phong), one pixel per clock, onto
+//! an AXI4-Stream video output.
 //!
 //! Written from the timing specification below and the algorithmic model ([`Plane::eval_clamped`],
-//! `GoldenChipset::scanout`); it looks only at the block's ports.
+//! [`PhongLights::shade`], `GoldenChipset::scanout`); it looks only at the block's ports.
 //!
 //! ## Ports (one clock; every output is a function of registers only)
 //! * control in: `start` (pulse), `width`, `height` (11 bits each, 1..=1024), `background` (RGB888),
@@ -16,6 +17,12 @@
 //!   `DEPTH_MAX`), enabled when the frame was started with `clear_behind`;
 //! * video out: `tdata` (RGB888), `tvalid`, `tuser` (first pixel of the frame), `tlast` (last pixel
 //!   of a line); `tready` in. A beat moves at a rising edge with `tvalid && tready`.
+//! * Phong constants in: `shading_phong` (latched at start); a light write (`address` 0..=3, L and H
+//!   in Q1.14; addresses from [`CS_LIGHTS`] up are ignored) and a material write (`address` =
+//!   material 0..[`CS_MATERIALS`], `slot` 0 = ambient R, G, B and log2 gloss, slot 1 + l = light l's
+//!   diffuse R, G, B and specular R, G, B, 16 bits each; slots past the last light are ignored), both
+//!   taking effect at the edge. They are meant for an idle CS: the model lights a pixel with the
+//!   constants of the cycle its record arrives, the RTL reads them up to 22 cycles later.
 //!
 //! ## Timing
 //! * `start` is taken in a cycle where `busy` is low. It latches `width`, `height`, `background` and
@@ -28,22 +35,58 @@
 //!   happen in this cycle (the read has already happened at t's edge).
 //! * t+2: `tdbs_read_enable`, `tdbs_read_address` = the index.
 //! * t+3: the record arrives on `tdbs_read_data`; the planes are evaluated (t+3, t+4, t+5: products,
-//!   sum, round and clamp; background where the index is 0) and the beat enters the output FIFO at
-//!   t+5's edge.
-//! * t+6 at the earliest: the beat is offered on the video port, in order, until taken.
-//! * With `tready` always high a pixel is issued every cycle (6 pending < 8): a W x H frame takes
-//!   W*H + 6 cycles from the first issue to the last beat taken. `busy` is high from the cycle after
+//!   sum, round; clamped to 0..255 for flat and Gouraud, saturated to 16 bits as the normal for
+//!   Phong), the Phong path normalises (t+5..t+16) and lights (t+17..t+25) it, and at t+26 the beat
+//!   (background where the index is 0) enters the output FIFO, in every shading mode.
+//! * t+27 at the earliest: the beat is offered on the video port, in order, until taken.
+//! * With `tready` always high a pixel is issued every cycle (27 pending < 32): a W x H frame takes
+//!   W*H + 27 cycles from the first issue to the last beat taken. `busy` is high from the cycle after
 //!   the start until the last beat is taken.
 
-use crate::format::{Plane, DEPTH_MAX, MAX_SCREEN};
-use crate::shade::TdbsEntry;
+use crate::format::{Plane, CS_GLOSS_LOG2_MAX, CS_LIGHTS, CS_MATERIALS, DEPTH_MAX, MAX_SCREEN};
+use crate::shade::{PhongLights, PhongMaterial, TdbsEntry};
 use std::collections::VecDeque;
 
 /// Depth of the output FIFO, and the limit of pending pixels (the credit that makes back-pressure
 /// lossless against the memory latency).
-pub const CS_FIFO_DEPTH: usize = 8;
+pub const CS_FIFO_DEPTH: usize = 32;
 /// Cycles from a pixel's issue to the first cycle its beat can be on the video port.
-pub const CS_PIPELINE_CYCLES: u64 = 6;
+pub const CS_PIPELINE_CYCLES: u64 = 27;
+
+/// One write to the CS's Phong constants (one cycle of `light_write_*` or `material_write_*`).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum CsConfigWrite {
+    Light { address: u32, l: [i64; 3], h: [i64; 3] },
+    Material { address: u32, slot: u32, words: [u16; 6] },
+}
+
+/// The writes that load `lights` into the CS (host side, once per frame before the scan-out): per
+/// light unit its L and H, per material its ambient and gloss word and one coefficient word per light
+/// unit. A light unit the scene does not use gets zero vectors and zero coefficients, so it adds
+/// nothing. Errors name the limit a scene exceeds.
+pub fn phong_config(lights: &PhongLights) -> Result<Vec<CsConfigWrite>, String> {
+    lights.check_rtl_limits()?;
+    let q = |v: i64| v.clamp(0, u16::MAX as i64) as u16;
+    let mut w = Vec::new();
+    for li in 0..CS_LIGHTS {
+        let (l, h) = if li < lights.l.len() { (lights.l[li], lights.h[li]) } else { ([0; 3], [0; 3]) };
+        w.push(CsConfigWrite::Light { address: li as u32, l, h });
+    }
+    for (mi, m) in lights.materials.iter().enumerate() {
+        let a = m.ambient;
+        w.push(CsConfigWrite::Material { address: mi as u32, slot: 0, words: [q(a[0]), q(a[1]), q(a[2]), m.gloss_log2 as u16, 0, 0] });
+        for li in 0..CS_LIGHTS {
+            let words = if li < lights.l.len() {
+                let (d, s) = (m.diffuse[li], m.specular[li]);
+                [q(d[0]), q(d[1]), q(d[2]), q(s[0]), q(s[1]), q(s[2])]
+            } else {
+                [0; 6]
+            };
+            w.push(CsConfigWrite::Material { address: mi as u32, slot: 1 + li as u32, words });
+        }
+    }
+    Ok(w)
+}
 /// Width of the I-buffer address (pixels up to 1024 x 1024).
 pub const CS_ADDRESS_BITS: u32 = 20;
 /// Width of the size inputs.
@@ -70,6 +113,8 @@ pub struct CsInputs {
     pub ibuf_read_data: u16,
     pub tdbs_read_data: TdbsEntry,
     pub video_tready: bool,
+    pub shading_phong: bool,
+    pub config: Option<CsConfigWrite>,
 }
 
 /// A memory read port in one cycle.
@@ -129,16 +174,20 @@ pub struct ColorShaderModel {
     s2: Option<(Pixel, u16)>,
     /// Waiting for the TdbS data.
     s3: Option<(Pixel, u16)>,
-    /// Evaluated, two more pipeline cycles to the FIFO.
-    s4: Option<VideoBeat>,
-    s5: Option<VideoBeat>,
+    /// Evaluated: the beats of stages t+4 .. t+26, the oldest first (entering the FIFO next).
+    post: VecDeque<Option<VideoBeat>>,
     fifo: VecDeque<VideoBeat>,
+    phong: bool,
+    /// The Phong constants: per light unit L and H; per material its slot words.
+    light_regs: [([i64; 3], [i64; 3]); CS_LIGHTS],
+    material_words: [[[u16; 6]; 1 + CS_LIGHTS]; CS_MATERIALS],
     /// Beats taken by the consumer since construction.
     pub beats: u64,
 }
 
 /// The colour of one pixel: background where the index is 0, else the three planes evaluated at the
-/// pixel centre and clamped to 0..=255 (flat and Gouraud; `GoldenChipset::scanout`).
+/// pixel centre and clamped to 0..=255 (flat and Gouraud; `GoldenChipset::scanout`); for Phong see
+/// [`ColorShaderModel`]'s use of [`PhongLights::shade`].
 pub fn pixel_colour(index: u16, record: &TdbsEntry, x: u32, y: u32, background: [u8; 3]) -> [u8; 3] {
     if index == 0 {
         background
@@ -150,7 +199,25 @@ pub fn pixel_colour(index: u16, record: &TdbsEntry, x: u32, y: u32, background: 
 
 impl ColorShaderModel {
     pub fn new() -> ColorShaderModel {
-        ColorShaderModel::default()
+        ColorShaderModel { post: vec![None; CS_PIPELINE_CYCLES as usize - 4].into(), ..Default::default() }
+    }
+
+    /// The Phong constants as the hardware holds them, in the golden model's form. A log2 gloss
+    /// above [`CS_GLOSS_LOG2_MAX`] squares that many times (the number of squaring stages).
+    fn phong_lights(&self) -> PhongLights {
+        let l = self.light_regs.iter().map(|r| r.0).collect();
+        let h = self.light_regs.iter().map(|r| r.1).collect();
+        let materials = self
+            .material_words
+            .iter()
+            .map(|w| PhongMaterial {
+                ambient: [0, 1, 2].map(|k| w[0][k] as i64),
+                diffuse: (0..CS_LIGHTS).map(|li| [0, 1, 2].map(|k| w[1 + li][k] as i64)).collect(),
+                specular: (0..CS_LIGHTS).map(|li| [3, 4, 5].map(|k| w[1 + li][k] as i64)).collect(),
+                gloss_log2: ((w[0][3] & 7) as u32).min(CS_GLOSS_LOG2_MAX),
+            })
+            .collect();
+        PhongLights { l, h, materials }
     }
 
     fn busy(&self) -> bool {
@@ -194,16 +261,21 @@ impl ColorShaderModel {
             self.beats += 1;
         }
         // Pipeline, from the end backwards.
-        if let Some(b) = self.s5.take() {
+        if let Some(b) = self.post.pop_front().flatten() {
             assert!(self.fifo.len() < CS_FIFO_DEPTH, "CS model: output FIFO overflow (credit accounting broken)");
             self.fifo.push_back(b);
         }
-        self.s5 = self.s4.take();
-        self.s4 = self.s3.take().map(|(p, idx)| VideoBeat {
-            rgb: pixel_colour(idx, &inp.tdbs_read_data, p.x, p.y, self.background),
-            sof: p.sof,
-            eol: p.eol,
+        let beat = self.s3.take().map(|(p, idx)| {
+            let rec = &inp.tdbs_read_data;
+            let rgb = if self.phong && idx != 0 {
+                let n = [0, 1, 2].map(|k| rec.planes[k].eval(p.x, p.y));
+                self.phong_lights().shade(n, rec.material % CS_MATERIALS as u16)
+            } else {
+                pixel_colour(idx, rec, p.x, p.y, self.background)
+            };
+            VideoBeat { rgb, sof: p.sof, eol: p.eol }
         });
+        self.post.push_back(beat);
         self.s3 = self.s2.take();
         self.s2 = self.s1.take().map(|p| (p, inp.ibuf_read_data));
         // Issue.
@@ -223,6 +295,17 @@ impl ColorShaderModel {
                 self.x += 1;
             }
         }
+        // Phong constants.
+        match inp.config {
+            Some(CsConfigWrite::Light { address, l, h }) if (address as usize) < CS_LIGHTS => {
+                self.light_regs[address as usize] = (l.map(|c| c as i16 as i64), h.map(|c| c as i16 as i64));
+            }
+            Some(CsConfigWrite::Material { address, slot, words }) if (slot as usize) <= CS_LIGHTS => {
+                let words = if slot == 0 { [words[0], words[1], words[2], words[3] & 7, 0, 0] } else { words };
+                self.material_words[address as usize % CS_MATERIALS][slot as usize] = words;
+            }
+            _ => {}
+        }
         // Frame start.
         if inp.start && !out.busy {
             let (w, h) = (inp.width & size_mask, inp.height & size_mask);
@@ -233,6 +316,7 @@ impl ColorShaderModel {
                 self.height = h;
                 self.background = inp.background;
                 self.clear = inp.clear_behind;
+                self.phong = inp.shading_phong;
                 self.x = 0;
                 self.y = 0;
                 self.address = 0;
@@ -289,23 +373,40 @@ impl CsMemories {
 /// Run one frame through the model with the given back-pressure pattern (`tready(cycle)`), and
 /// return the RGB888 image in raster order and the number of cycles from the first pixel's issue to
 /// the last beat taken, both included.
+///
+/// For Phong (`phong` is `Some`), the constants are written first, one per cycle, and the frame
+/// starts in the cycle after the last write.
 pub fn scan_frame(
     mem: &mut CsMemories,
     width: u32,
     height: u32,
     background: [u8; 3],
     clear_behind: bool,
+    phong: Option<&[CsConfigWrite]>,
     mut tready: impl FnMut(u64) -> bool,
 ) -> Result<(Vec<u8>, u64), String> {
     let mut m = ColorShaderModel::new();
+    let config = phong.unwrap_or(&[]);
+    let start = config.len() as u64;
     let mut rgb = Vec::with_capacity((width * height * 3) as usize);
     let mut cycle = 0u64;
     let (mut first_issue, mut last_beat) = (None, 0u64);
-    let limit = 64 + 64 * (width as u64 * height as u64 + 64);
+    let limit = start + 64 + 64 * (width as u64 * height as u64 + 64);
     loop {
         let (ibuf_read_data, tdbs_read_data) = mem.read_data();
         let ready = tready(cycle);
-        let inp = CsInputs { start: cycle == 0, width, height, background, clear_behind, ibuf_read_data, tdbs_read_data, video_tready: ready };
+        let inp = CsInputs {
+            start: cycle == start,
+            width,
+            height,
+            background,
+            clear_behind,
+            ibuf_read_data,
+            tdbs_read_data,
+            video_tready: ready,
+            shading_phong: phong.is_some(),
+            config: config.get(cycle as usize).copied(),
+        };
         let o = m.step(&inp);
         if o.ibuf_read.enable && first_issue.is_none() {
             first_issue = Some(cycle);
@@ -315,7 +416,7 @@ pub fn scan_frame(
             last_beat = cycle;
         }
         mem.edge(&o);
-        if cycle > 0 && !o.busy {
+        if cycle > start && !o.busy {
             if o.size_error {
                 return Err(format!("the CS refused the screen size {width}x{height} (1..={MAX_SCREEN} each)"));
             }
@@ -338,7 +439,7 @@ mod tests {
     use crate::scene::{builtin, Winding};
     use crate::shade::Shading;
 
-    fn frame(name: &str, shading: Shading, w: u32, h: u32) -> (GoldenChipset, crate::render::Frame, [u8; 3]) {
+    fn frame(name: &str, shading: Shading, w: u32, h: u32) -> (GoldenChipset, crate::render::Frame, [u8; 3], PhongLights) {
         let mesh = if name == "teapot" { builtin::teapot(6) } else { builtin::scene(name).unwrap() };
         let screen = Screen::new(w, h).unwrap();
         let bg = [24, 24, 40];
@@ -354,7 +455,7 @@ mod tests {
         };
         let mut chip = GoldenChipset::new(screen);
         let f = render_with(&mesh, &opts, &mut chip).unwrap();
-        (chip, f, bg)
+        (chip, f, bg, PhongLights::new(&opts.lighting, &mesh.materials))
     }
 
     fn memories(chip: &GoldenChipset, f: &crate::render::Frame) -> CsMemories {
@@ -365,10 +466,12 @@ mod tests {
     #[test]
     fn color_shader_model_scans_out_the_golden_image_of_every_scene() {
         for name in builtin::SCENES {
-            for shading in [Shading::Gouraud, Shading::Flat] {
-                let (chip, f, bg) = frame(name, shading, 160, 100);
+            for shading in [Shading::Gouraud, Shading::Flat, Shading::Phong] {
+                let (chip, f, bg, lights) = frame(name, shading, 160, 100);
                 let mut mem = memories(&chip, &f);
-                let (rgb, cycles) = scan_frame(&mut mem, 160, 100, bg, false, |_| true).unwrap();
+                let config = phong_config(&lights).unwrap();
+                let phong = (shading == Shading::Phong).then_some(&config[..]);
+                let (rgb, cycles) = scan_frame(&mut mem, 160, 100, bg, false, phong, |_| true).unwrap();
                 assert!(rgb == f.rgb, "{name} {shading:?}: the model's image differs from the golden one");
                 assert_eq!(cycles, 160 * 100 + CS_PIPELINE_CYCLES, "{name}: one pixel per clock");
             }
@@ -377,10 +480,10 @@ mod tests {
 
     #[test]
     fn back_pressure_loses_and_repeats_no_pixel_and_clear_behind_clears_both_buffers() {
-        let (chip, f, bg) = frame("castle", Shading::Gouraud, 96, 64);
+        let (chip, f, bg, _) = frame("castle", Shading::Gouraud, 96, 64);
         let mut mem = memories(&chip, &f);
         let mut x = 0x9e3779b97f4a7c15u64;
-        let (rgb, cycles) = scan_frame(&mut mem, 96, 64, bg, true, |_| {
+        let (rgb, cycles) = scan_frame(&mut mem, 96, 64, bg, true, None, |_| {
             x ^= x << 13;
             x ^= x >> 7;
             x ^= x << 17;
@@ -397,7 +500,7 @@ mod tests {
     fn bad_screen_sizes_set_size_error_and_start_nothing() {
         for (w, h) in [(0, 10), (10, 0), (1025, 4), (4, 2047)] {
             let mut mem = CsMemories::new(vec![0; 16], vec![0; 16], vec![TdbsEntry::default()]);
-            let e = scan_frame(&mut mem, w, h, [0; 3], false, |_| true).unwrap_err();
+            let e = scan_frame(&mut mem, w, h, [0; 3], false, None, |_| true).unwrap_err();
             assert!(e.contains(&format!("{w}x{h}")), "{e}");
         }
     }

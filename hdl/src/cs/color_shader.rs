@@ -1,41 +1,59 @@
 //! `color_shader` (top `cs`): the Color Shader's scan-out engine (seed 001 §3.1, Fig. 5: "the CS
 //! utilizes the data in I-buffer and TdbS to generate the final result ... frame buffer can be optional
 //! if the CS can generate pixels in screen scan-out rate"). Reads the I-buffer in raster order, fetches
-//! the TdbS record of each pixel's index, evaluates `R,G,B = clamp(round((c + a*X + b*Y) / 2^16))`
-//! (background where the index is 0) and streams RGB888 out, one pixel per clock.
+//! the TdbS record of each pixel's index, evaluates the record's three planes `c + a*X + b*Y` and
+//! streams RGB888 out, one pixel per clock:
+//! * flat and Gouraud (`shading_phong` low): the planes are R, G, B, rounded and clamped to 0..255;
+//! * Phong (`shading_phong` high; seed 001 §3.3, seed 000 §III: per-pixel lighting at scan-out rate,
+//!   once per visible pixel): the planes are the interpolated normal, which the [`Normalizer`] makes
+//!   unit and [`CS_LIGHTS`] [`LightUnit`]s light with the pixel's material (seed 001 eq. 4: ambient,
+//!   per light diffuse and specular with the gloss), rounded and clamped.
+//!
+//! Background (index 0) pixels get `background`.
 //!
 //! ```text
-//!                      +--------------------------------------------------+
-//!  start ------------->| frame control: W, H, background, clear_behind    |--> busy
-//!  width, height ----->| (latched at start; 1..=1024 else size_error)     |--> size_error
-//!  background -------->|                                                  |
-//!  clear_behind ------>|  issue (credit < 8)                              |
-//!                      |   |                                              |--> ibuf_read_enable/_address (20 b)
-//!  ibuf_read_data ---->|   s1 (+1) index arrives; clear-behind writes ----|--> ibuf_write_*, zbuf_write_*
-//!                      |   s2 (+2) TdbS read                              |--> tdbs_read_enable/_address (16 b)
-//!  tdbs_read_data ---->|   s3 (+3) record arrives: 6 products 40x11       |
-//!                      |   s4 (+4) c + aX + bY + 1/2                      |
-//!                      |   s5 (+5) >>16, clamp 0..255, background mux     |
-//!                      |   video_fifo (8 deep) ------------------------- -|--> video_tdata {R,B,G}, _tvalid,
-//!  video_tready ------>|                                                  |    _tuser (SOF), _tlast (EOL)
-//!                      +--------------------------------------------------+
+//!                      +--------------------------------------------------------+
+//!  start ------------->| frame control: W, H, background, clear_behind, phong    |--> busy
+//!  width, height ----->| (latched at start; 1..=1024 else size_error)           |--> size_error
+//!  background -------->|                                                        |
+//!  clear_behind ------>|  issue (credit < 32)                                   |
+//!  shading_phong ----->|   |                                                    |--> ibuf_read_enable/_address (20 b)
+//!  ibuf_read_data ---->|   t+1 index arrives; clear-behind writes --------------|--> ibuf_write_*, zbuf_write_*
+//!                      |   t+2 TdbS read                                        |--> tdbs_read_enable/_address (16 b)
+//!  tdbs_read_data ---->|   t+3 record arrives: 6 products 40x11                 |
+//!                      |   t+4 c + aX + bY + 1/2                                |
+//!                      |   t+5 >>16: clamp 0..255 (Gouraud) | sat16 (normal) ---+-> normalizer (12)
+//!                      |   t+17 light units (8 each, chained) <- material memory|
+//!  light_write_* ----->|        L, H per light                                  |
+//!  material_write_* -->|        ambient, gloss, Kd Il, Ks Il per material       |
+//!                      |   t+25 ambient + lights;  t+26 round, clamp, mux       |
+//!                      |   video_fifo (32 deep) --------------------------------|--> video_tdata {R,B,G}, _tvalid,
+//!  video_tready ------>|                                                        |    _tuser (SOF), _tlast (EOL)
+//!                      +--------------------------------------------------------+
 //! ```
 //!
 //! Timing (`golden::cycle::color_shader` is the reference): a pixel issued in cycle t has its I-buffer
 //! address on the port in t, its index in t+1 (when the clear-behind writes of its address happen), its
-//! TdbS address in t+2, its record in t+3, and its beat in the FIFO at t+5's edge, on the video port
-//! from t+6. A pixel is issued only while fewer than 8 are pending (issued and not yet taken by the
-//! consumer): the FIFO can always hold every pixel in flight, so back-pressure loses or repeats nothing,
-//! and with `video_tready` high 6 are pending, so a pixel is issued every clock. Both memory read ports
-//! have latency 1 (data of the address of cycle t in t+1). All payload outputs are 0 while their
-//! enable / valid is low.
+//! TdbS address in t+2, its record in t+3, and its beat in the FIFO at t+26's edge, on the video port
+//! from t+27, whatever the shading (flat and Gouraud colours wait for the Phong path, so that one
+//! latency and one credit serve both). A pixel is issued only while fewer than 32 are pending (issued
+//! and not yet taken by the consumer): the FIFO can always hold every pixel in flight, so back-pressure
+//! loses or repeats nothing, and with `video_tready` high 27 are pending, so a pixel is issued every
+//! clock. Both memory read ports have latency 1 (data of the address of cycle t in t+1). All payload
+//! outputs are 0 while their enable / valid is low.
+//!
+//! The light and material writes are for an idle CS (between frames): a frame reads whatever the
+//! registers and the material memory hold while its pixels pass. The material memory is read at the
+//! low [`CS_MATERIAL_BITS`] bits of the record's `material`.
 //!
 //! `video_tdata` follows the AXI4-Stream video convention for RGB (Xilinx UG934): R in 23:16, B in
 //! 15:8, G in 7:0; `background` uses the same packing.
 
-use crate::common::{signed_bit_cast_safe, MulS};
+use crate::common::{signed_bit_cast_safe, FastRAM, MulS};
+use crate::cs::light_unit::LightUnit;
+use crate::cs::normalizer::Normalizer;
 use crate::cs::video_fifo::VideoFifo;
-use crate::cs::TdbsRecord;
+use crate::cs::{LightVectors, MaterialWord, TdbsRecord, CS_LIGHTS, CS_MATERIAL_BITS};
 use rust_hdl::prelude::*;
 
 #[derive(LogicBlock)]
@@ -52,6 +70,19 @@ pub struct ColorShader {
     pub background: Signal<In, Bits<24>>,
     /// Clear the I-buffer (to 0) and the Z-buffer (to far) behind the scan (latched at start).
     pub clear_behind: Signal<In, Bit>,
+    /// Phong: the planes are the normal, lit per pixel (latched at start); else they are R, G, B.
+    pub shading_phong: Signal<In, Bit>,
+    // From the host (Phong constants; write while not busy)
+    /// Load light `light_write_address`'s L and H (a light the scene lacks keeps zero coefficients).
+    pub light_write_enable: Signal<In, Bit>,
+    pub light_write_address: Signal<In, Bits<2>>,
+    pub light_write_data: Signal<In, LightVectors>,
+    /// Write word `material_write_slot` of material `material_write_address`: slot 0 = ambient and
+    /// log2 of the gloss, slot 1 + l = light l's diffuse and specular coefficients ([`MaterialWord`]).
+    pub material_write_enable: Signal<In, Bit>,
+    pub material_write_address: Signal<In, Bits<CS_MATERIAL_BITS>>,
+    pub material_write_slot: Signal<In, Bits<3>>,
+    pub material_write_data: Signal<In, MaterialWord>,
     // To the controller
     /// A frame is being scanned (from the cycle after the start to the cycle its last beat is taken).
     pub busy: Signal<Out, Bit>,
@@ -92,6 +123,10 @@ pub struct ColorShader {
     pub video_tlast: Signal<Out, Bit>,
 
     fifo: VideoFifo,
+    normalizer: Normalizer,
+    lights: [LightUnit; CS_LIGHTS],
+    gloss_ram: FastRAM<Bits<3>, CS_MATERIAL_BITS>,
+    ambient_ram: FastRAM<MaterialWord, CS_MATERIAL_BITS>,
     mul_ra: MulS<40, 11, 51>,
     mul_rb: MulS<40, 11, 51>,
     mul_ga: MulS<40, 11, 51>,
@@ -105,10 +140,11 @@ pub struct ColorShader {
     last_y: DFF<Bits<10>>,
     bg: DFF<Bits<24>>,
     clear: DFF<Bit>,
+    phong: DFF<Bit>,
     x: DFF<Bits<10>>,
     y: DFF<Bits<10>>,
     addr: DFF<Bits<20>>,
-    pending: DFF<Bits<4>>,
+    pending: DFF<Bits<6>>,
     // s1: waiting for the index
     s1_valid: DFF<Bit>,
     s1_x: DFF<Bits<10>>,
@@ -152,6 +188,14 @@ pub struct ColorShader {
     s5_sum_r: DFF<Signed<58>>,
     s5_sum_g: DFF<Signed<58>>,
     s5_sum_b: DFF<Signed<58>>,
+    // The material of the pixel whose record arrived j + 1 cycles ago (t+4+j).
+    mat: [DFF<Bits<CS_MATERIAL_BITS>>; 21],
+    // From t+5 to t+26: {eol, sof, bg, valid, rgb (flat / Gouraud)} of the pixel in stage t+6+j.
+    tags: [DFF<Bits<28>>; 21],
+    // C1: ambient + lights, 22 fraction bits
+    acc_r: DFF<Bits<34>>,
+    acc_g: DFF<Bits<34>>,
+    acc_b: DFF<Bits<34>>,
     // Combinational
     issue: Signal<Local, Bit>,
     pop: Signal<Local, Bit>,
@@ -170,13 +214,51 @@ pub struct ColorShader {
     eol_bit: Signal<Local, Bits<26>>,
     hi_g: Signal<Local, Bits<33>>,
     hi_b: Signal<Local, Bits<33>>,
+    n_r: Signal<Local, Signed<16>>,
+    n_g: Signal<Local, Signed<16>>,
+    n_b: Signal<Local, Signed<16>>,
+    top_r: Signal<Local, Bits<27>>,
+    top_g: Signal<Local, Bits<27>>,
+    top_b: Signal<Local, Bits<27>>,
+    tag_in: Signal<Local, Bits<28>>,
+    g_rgb: Signal<Local, Bits<24>>,
+    t_valid: Signal<Local, Bits<28>>,
+    t_bg: Signal<Local, Bits<28>>,
+    t_sof: Signal<Local, Bits<28>>,
+    t_eol: Signal<Local, Bits<28>>,
+    tag_out: Signal<Local, Bits<28>>,
+    light_sel: Signal<Local, Bits<4>>,
+    slot_sel: Signal<Local, Bits<8>>,
+    amb_r: Signal<Local, Bits<34>>,
+    amb_g: Signal<Local, Bits<34>>,
+    amb_b: Signal<Local, Bits<34>>,
+    rnd_r: Signal<Local, Bits<34>>,
+    rnd_g: Signal<Local, Bits<34>>,
+    rnd_b: Signal<Local, Bits<34>>,
+    ph_r: Signal<Local, Bits<8>>,
+    ph_g: Signal<Local, Bits<8>>,
+    ph_b: Signal<Local, Bits<8>>,
     w_ok: Signal<Local, Bit>,
     h_ok: Signal<Local, Bit>,
     w_m1: Signal<Local, Bits<11>>,
     h_m1: Signal<Local, Bits<11>>,
-    k0_4: Constant<Bits<4>>,
-    k1_4: Constant<Bits<4>>,
-    k8_4: Constant<Bits<4>>,
+    k0_6: Constant<Bits<6>>,
+    k1_6: Constant<Bits<6>>,
+    kdepth_6: Constant<Bits<6>>,
+    k1_lsel: Constant<Bits<4>>,
+    k1_ssel: Constant<Bits<8>>,
+    k0_3: Constant<Bits<3>>,
+    k0_27: Constant<Bits<27>>,
+    kones_27: Constant<Bits<27>>,
+    kmax_16: Constant<Signed<16>>,
+    kmin_16: Constant<Signed<16>>,
+    khalf_34: Constant<Bits<34>>,
+    k255_12: Constant<Bits<12>>,
+    k0_28: Constant<Bits<28>>,
+    kvalid_28: Constant<Bits<28>>,
+    kbg_28: Constant<Bits<28>>,
+    ksof_28: Constant<Bits<28>>,
+    keol_28: Constant<Bits<28>>,
     k0_10: Constant<Bits<10>>,
     k1_10: Constant<Bits<10>>,
     k0_11: Constant<Bits<11>>,
@@ -204,6 +286,14 @@ impl Default for ColorShader {
             height: Default::default(),
             background: Default::default(),
             clear_behind: Default::default(),
+            shading_phong: Default::default(),
+            light_write_enable: Default::default(),
+            light_write_address: Default::default(),
+            light_write_data: Default::default(),
+            material_write_enable: Default::default(),
+            material_write_address: Default::default(),
+            material_write_slot: Default::default(),
+            material_write_data: Default::default(),
             busy: Default::default(),
             size_error: Default::default(),
             ibuf_read_enable: Default::default(),
@@ -224,6 +314,10 @@ impl Default for ColorShader {
             video_tuser: Default::default(),
             video_tlast: Default::default(),
             fifo: Default::default(),
+            normalizer: Default::default(),
+            lights: Default::default(),
+            gloss_ram: Default::default(),
+            ambient_ram: Default::default(),
             mul_ra: Default::default(),
             mul_rb: Default::default(),
             mul_ga: Default::default(),
@@ -236,6 +330,7 @@ impl Default for ColorShader {
             last_y: Default::default(),
             bg: Default::default(),
             clear: Default::default(),
+            phong: Default::default(),
             x: Default::default(),
             y: Default::default(),
             addr: Default::default(),
@@ -278,6 +373,11 @@ impl Default for ColorShader {
             s5_sum_r: Default::default(),
             s5_sum_g: Default::default(),
             s5_sum_b: Default::default(),
+            mat: Default::default(),
+            tags: Default::default(),
+            acc_r: Default::default(),
+            acc_g: Default::default(),
+            acc_b: Default::default(),
             issue: Default::default(),
             pop: Default::default(),
             at_eol: Default::default(),
@@ -295,13 +395,51 @@ impl Default for ColorShader {
             eol_bit: Default::default(),
             hi_g: Default::default(),
             hi_b: Default::default(),
+            n_r: Default::default(),
+            n_g: Default::default(),
+            n_b: Default::default(),
+            top_r: Default::default(),
+            top_g: Default::default(),
+            top_b: Default::default(),
+            tag_in: Default::default(),
+            g_rgb: Default::default(),
+            t_valid: Default::default(),
+            t_bg: Default::default(),
+            t_sof: Default::default(),
+            t_eol: Default::default(),
+            tag_out: Default::default(),
+            light_sel: Default::default(),
+            slot_sel: Default::default(),
+            amb_r: Default::default(),
+            amb_g: Default::default(),
+            amb_b: Default::default(),
+            rnd_r: Default::default(),
+            rnd_g: Default::default(),
+            rnd_b: Default::default(),
+            ph_r: Default::default(),
+            ph_g: Default::default(),
+            ph_b: Default::default(),
             w_ok: Default::default(),
             h_ok: Default::default(),
             w_m1: Default::default(),
             h_m1: Default::default(),
-            k0_4: Constant::new(0.into()),
-            k1_4: Constant::new(1.into()),
-            k8_4: Constant::new(8.into()),
+            k0_6: Constant::new(0.into()),
+            k1_6: Constant::new(1.into()),
+            kdepth_6: Constant::new((crate::cs::video_fifo::VIDEO_FIFO_DEPTH as u64).into()),
+            k1_lsel: Constant::new(1.into()),
+            k1_ssel: Constant::new(1.into()),
+            k0_3: Constant::new(0.into()),
+            k0_27: Constant::new(0.into()),
+            kones_27: Constant::new(((1u64 << 27) - 1).into()),
+            kmax_16: Constant::new(Signed::<16>::from(i16::MAX as i64)),
+            kmin_16: Constant::new(Signed::<16>::from(i16::MIN as i64)),
+            khalf_34: Constant::new((1u64 << 21).into()),
+            k255_12: Constant::new(255.into()),
+            k0_28: Constant::new(0.into()),
+            kvalid_28: Constant::new((1u64 << 24).into()),
+            kbg_28: Constant::new((1u64 << 25).into()),
+            ksof_28: Constant::new((1u64 << 26).into()),
+            keol_28: Constant::new((1u64 << 27).into()),
             k0_10: Constant::new(0.into()),
             k1_10: Constant::new(1.into()),
             k0_11: Constant::new(0.into()),
@@ -329,18 +467,45 @@ impl Logic for ColorShader {
             self, clock, running, size_err, last_x, last_y, bg, clear, x, y, addr, pending, s1_valid, s1_x, s1_y,
             s1_addr, s1_sof, s1_eol, s2_valid, s2_x, s2_y, s2_sof, s2_eol, s2_idx, s3_valid, s3_x, s3_y, s3_sof,
             s3_eol, s3_bg, s4_valid, s4_sof, s4_eol, s4_bg, s4_pa_r, s4_pb_r, s4_c_r, s4_pa_g, s4_pb_g, s4_c_g,
-            s4_pa_b, s4_pb_b, s4_c_b, s5_valid, s5_sof, s5_eol, s5_bg, s5_sum_r, s5_sum_g, s5_sum_b
+            s4_pa_b, s4_pb_b, s4_c_b, s5_valid, s5_sof, s5_eol, s5_bg, s5_sum_r, s5_sum_g, s5_sum_b, phong, acc_r,
+            acc_g, acc_b
         );
-        clock!(self, clock, fifo);
+        clock!(self, clock, fifo, normalizer);
+        for i in 0..21 {
+            self.mat[i].clock.next = self.clock.val();
+            self.tags[i].clock.next = self.clock.val();
+        }
+        self.gloss_ram.read_clock.next = self.clock.val();
+        self.gloss_ram.write_clock.next = self.clock.val();
+        self.ambient_ram.read_clock.next = self.clock.val();
+        self.ambient_ram.write_clock.next = self.clock.val();
+
+        // Phong constants: light vectors per unit, material words by slot.
+        self.light_sel.next = self.k1_lsel.val() << self.light_write_address.val();
+        self.slot_sel.next = self.k1_ssel.val() << self.material_write_slot.val();
+        for k in 0..self.lights.len() {
+            self.lights[k].clock.next = self.clock.val();
+            self.lights[k].vectors_write_enable.next = self.light_write_enable.val() & self.light_sel.val().get_bit(k);
+            self.lights[k].vectors_write_data.next = self.light_write_data.val();
+            self.lights[k].coeff_write_enable.next = self.material_write_enable.val() & self.slot_sel.val().get_bit(k + 1);
+            self.lights[k].coeff_write_address.next = self.material_write_address.val();
+            self.lights[k].coeff_write_data.next = self.material_write_data.val();
+        }
+        self.gloss_ram.write_enable.next = self.material_write_enable.val() & (self.material_write_slot.val() == self.k0_3.val());
+        self.gloss_ram.write_address.next = self.material_write_address.val();
+        self.gloss_ram.write_data.next = self.material_write_data.val().w3.get_bits::<3>(0);
+        self.ambient_ram.write_enable.next = self.material_write_enable.val() & (self.material_write_slot.val() == self.k0_3.val());
+        self.ambient_ram.write_address.next = self.material_write_address.val();
+        self.ambient_ram.write_data.next = self.material_write_data.val();
 
         // Credit: issue while fewer than 8 pixels are pending; a pixel stops pending when taken.
-        self.issue.next = self.running.q.val() & (self.pending.q.val() != self.k8_4.val());
+        self.issue.next = self.running.q.val() & (self.pending.q.val() != self.kdepth_6.val());
         self.pop.next = self.fifo.read_valid.val() & self.video_tready.val();
         if self.issue.val() & !self.pop.val() {
-            self.pending.d.next = self.pending.q.val() + self.k1_4.val();
+            self.pending.d.next = self.pending.q.val() + self.k1_6.val();
         }
         if !self.issue.val() & self.pop.val() {
-            self.pending.d.next = self.pending.q.val() - self.k1_4.val();
+            self.pending.d.next = self.pending.q.val() - self.k1_6.val();
         }
 
         // Issue: raster-order counters.
@@ -422,7 +587,7 @@ impl Logic for ColorShader {
         self.s5_sum_g.d.next = self.sum_g.val() + signed_bit_cast_safe::<58, 51>(self.s4_pb_g.q.val()) + self.khalf_58.val();
         self.s5_sum_b.d.next = self.sum_b.val() + signed_bit_cast_safe::<58, 51>(self.s4_pb_b.q.val()) + self.khalf_58.val();
 
-        // s5 -> FIFO: >> 16 and clamp to 0..=255 (negative -> 0; bits 56:24 not all 0 -> 255).
+        // t+5: >> 16 and clamp to 0..=255 (negative -> 0; bits 56:24 not all 0 -> 255): flat / Gouraud.
         self.ch_r.next = unsigned_cast(self.s5_sum_r.q.val().get_bits::<8>(16));
         self.hi_r.next = unsigned_cast(self.s5_sum_r.q.val().get_bits::<33>(24));
         if self.hi_r.val().any() {
@@ -448,17 +613,126 @@ impl Logic for ColorShader {
             self.ch_b.next = self.k0_8.val();
         }
         // UG934 RGB order: R 23:16, B 15:8, G 7:0.
-        self.rgb.next = (bit_cast::<24, 8>(self.ch_r.val()) << 16) | (bit_cast::<24, 8>(self.ch_b.val()) << 8) | bit_cast::<24, 8>(self.ch_g.val());
+        self.g_rgb.next = (bit_cast::<24, 8>(self.ch_r.val()) << 16) | (bit_cast::<24, 8>(self.ch_b.val()) << 8) | bit_cast::<24, 8>(self.ch_g.val());
+
+        // t+5: the same sums as a normal (Phong): >> 16 saturated to 16 bits (bits 57:31 all the sign).
+        self.top_r.next = unsigned_cast(self.s5_sum_r.q.val()).get_bits::<27>(31);
+        self.top_g.next = unsigned_cast(self.s5_sum_g.q.val()).get_bits::<27>(31);
+        self.top_b.next = unsigned_cast(self.s5_sum_b.q.val()).get_bits::<27>(31);
+        self.n_r.next = signed_cast(unsigned_cast(self.s5_sum_r.q.val()).get_bits::<16>(16));
+        if self.s5_sum_r.q.val().get_bit(57) & (self.top_r.val() != self.kones_27.val()) {
+            self.n_r.next = self.kmin_16.val();
+        }
+        if !self.s5_sum_r.q.val().get_bit(57) & (self.top_r.val() != self.k0_27.val()) {
+            self.n_r.next = self.kmax_16.val();
+        }
+        self.n_g.next = signed_cast(unsigned_cast(self.s5_sum_g.q.val()).get_bits::<16>(16));
+        if self.s5_sum_g.q.val().get_bit(57) & (self.top_g.val() != self.kones_27.val()) {
+            self.n_g.next = self.kmin_16.val();
+        }
+        if !self.s5_sum_g.q.val().get_bit(57) & (self.top_g.val() != self.k0_27.val()) {
+            self.n_g.next = self.kmax_16.val();
+        }
+        self.n_b.next = signed_cast(unsigned_cast(self.s5_sum_b.q.val()).get_bits::<16>(16));
+        if self.s5_sum_b.q.val().get_bit(57) & (self.top_b.val() != self.kones_27.val()) {
+            self.n_b.next = self.kmin_16.val();
+        }
+        if !self.s5_sum_b.q.val().get_bit(57) & (self.top_b.val() != self.k0_27.val()) {
+            self.n_b.next = self.kmax_16.val();
+        }
+        self.normalizer.n_x.next = self.n_r.val();
+        self.normalizer.n_y.next = self.n_g.val();
+        self.normalizer.n_z.next = self.n_b.val();
+
+        // The pixel's tags and flat / Gouraud colour wait for the Phong path (t+5 .. t+26).
+        self.t_valid.next = self.k0_28.val();
+        if self.s5_valid.q.val() {
+            self.t_valid.next = self.kvalid_28.val();
+        }
+        self.t_bg.next = self.k0_28.val();
         if self.s5_bg.q.val() {
+            self.t_bg.next = self.kbg_28.val();
+        }
+        self.t_sof.next = self.k0_28.val();
+        if self.s5_sof.q.val() {
+            self.t_sof.next = self.ksof_28.val();
+        }
+        self.t_eol.next = self.k0_28.val();
+        if self.s5_eol.q.val() {
+            self.t_eol.next = self.keol_28.val();
+        }
+        self.tag_in.next = bit_cast::<28, 24>(self.g_rgb.val()) | self.t_valid.val() | self.t_bg.val() | self.t_sof.val() | self.t_eol.val();
+        self.tags[0].d.next = self.tag_in.val();
+        for i in 1..21 {
+            self.tags[i].d.next = self.tags[i - 1].q.val();
+        }
+
+        // The material travels from the record (t+3) to the memories' reads (t+18, t+22, t+24).
+        self.mat[0].d.next = self.tdbs_read_data.val().material.get_bits::<CS_MATERIAL_BITS>(0);
+        for i in 1..21 {
+            self.mat[i].d.next = self.mat[i - 1].q.val();
+        }
+        self.gloss_ram.read_address.next = self.mat[14].q.val();
+        self.ambient_ram.read_address.next = self.mat[20].q.val();
+
+        // t+17: the light units, chained from the ambient term (read at t+24, used at t+25).
+        self.amb_r.next = bit_cast::<34, 16>(self.ambient_ram.read_data.val().w0) << 14;
+        self.amb_g.next = bit_cast::<34, 16>(self.ambient_ram.read_data.val().w1) << 14;
+        self.amb_b.next = bit_cast::<34, 16>(self.ambient_ram.read_data.val().w2) << 14;
+        for k in 0..self.lights.len() {
+            self.lights[k].u_x.next = self.normalizer.u_x.val();
+            self.lights[k].u_y.next = self.normalizer.u_y.val();
+            self.lights[k].u_z.next = self.normalizer.u_z.val();
+            self.lights[k].gloss_log2.next = self.gloss_ram.read_data.val();
+            self.lights[k].material.next = self.mat[18].q.val();
+        }
+        self.lights[0].acc_in_r.next = self.amb_r.val();
+        self.lights[0].acc_in_g.next = self.amb_g.val();
+        self.lights[0].acc_in_b.next = self.amb_b.val();
+        for k in 1..self.lights.len() {
+            self.lights[k].acc_in_r.next = self.lights[k - 1].acc_out_r.val();
+            self.lights[k].acc_in_g.next = self.lights[k - 1].acc_out_g.val();
+            self.lights[k].acc_in_b.next = self.lights[k - 1].acc_out_b.val();
+        }
+        // C1 (t+25): the last unit's sum.
+        for k in 0..self.lights.len() {
+            self.acc_r.d.next = self.lights[k].acc_out_r.val();
+            self.acc_g.d.next = self.lights[k].acc_out_g.val();
+            self.acc_b.d.next = self.lights[k].acc_out_b.val();
+        }
+
+        // C2 (t+26): round by 22 bits, clamp to 255 (the sum is never negative); pick the shading's
+        // colour or the background; into the FIFO.
+        self.rnd_r.next = self.acc_r.q.val() + self.khalf_34.val();
+        self.rnd_g.next = self.acc_g.q.val() + self.khalf_34.val();
+        self.rnd_b.next = self.acc_b.q.val() + self.khalf_34.val();
+        self.ph_r.next = self.rnd_r.val().get_bits::<8>(22);
+        if self.rnd_r.val().get_bits::<12>(22) > self.k255_12.val() {
+            self.ph_r.next = self.k255_8.val();
+        }
+        self.ph_g.next = self.rnd_g.val().get_bits::<8>(22);
+        if self.rnd_g.val().get_bits::<12>(22) > self.k255_12.val() {
+            self.ph_g.next = self.k255_8.val();
+        }
+        self.ph_b.next = self.rnd_b.val().get_bits::<8>(22);
+        if self.rnd_b.val().get_bits::<12>(22) > self.k255_12.val() {
+            self.ph_b.next = self.k255_8.val();
+        }
+        self.tag_out.next = self.tags[20].q.val();
+        self.rgb.next = self.tag_out.val().get_bits::<24>(0);
+        if self.phong.q.val() {
+            self.rgb.next = (bit_cast::<24, 8>(self.ph_r.val()) << 16) | (bit_cast::<24, 8>(self.ph_b.val()) << 8) | bit_cast::<24, 8>(self.ph_g.val());
+        }
+        if self.tag_out.val().get_bit(25) {
             self.rgb.next = self.bg.q.val();
         }
-        self.fifo.write.next = self.s5_valid.q.val();
+        self.fifo.write.next = self.tag_out.val().get_bit(24);
         self.sof_bit.next = self.k0_26.val();
-        if self.s5_sof.q.val() {
+        if self.tag_out.val().get_bit(26) {
             self.sof_bit.next = self.k_sof_26.val();
         }
         self.eol_bit.next = self.k0_26.val();
-        if self.s5_eol.q.val() {
+        if self.tag_out.val().get_bit(27) {
             self.eol_bit.next = self.k_eol_26.val();
         }
         self.fifo.write_data.next = bit_cast::<26, 24>(self.rgb.val()) | self.sof_bit.val() | self.eol_bit.val();
@@ -494,7 +768,7 @@ impl Logic for ColorShader {
         }
 
         // Frame start (only when idle).
-        self.busy.next = self.running.q.val() | (self.pending.q.val() != self.k0_4.val());
+        self.busy.next = self.running.q.val() | (self.pending.q.val() != self.k0_6.val());
         self.w_ok.next = (self.width.val() != self.k0_11.val()) & (self.width.val() <= self.k1024_11.val());
         self.h_ok.next = (self.height.val() != self.k0_11.val()) & (self.height.val() <= self.k1024_11.val());
         self.w_m1.next = self.width.val() - self.k1_11.val();
@@ -507,6 +781,7 @@ impl Logic for ColorShader {
                 self.last_y.d.next = self.h_m1.val().get_bits::<10>(0);
                 self.bg.d.next = self.background.val();
                 self.clear.d.next = self.clear_behind.val();
+                self.phong.d.next = self.shading_phong.val();
                 self.x.d.next = self.k0_10.val();
                 self.y.d.next = self.k0_10.val();
                 self.addr.d.next = self.k0_20.val();

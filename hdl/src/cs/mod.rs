@@ -23,6 +23,8 @@
 //! behind ports, because they do not fit FPGA block RAM; the testbenches model them.
 
 pub mod color_shader;
+pub mod light_unit;
+pub mod normalizer;
 pub mod colour_setup;
 pub mod video_fifo;
 
@@ -59,6 +61,39 @@ pub struct TdbsRecord {
     pub b_b: Bits<40>,
     pub b_c: Bits<56>,
     pub material: Bits<16>,
+}
+
+/// Address bits of the Color Shader's material memory: it holds `2^CS_MATERIAL_BITS` materials (16) and
+/// reads TdbS's `material` field through its low bits (`golden::format::CS_MATERIALS`).
+pub const CS_MATERIAL_BITS: usize = 4;
+/// Light units of the Color Shader's Phong datapath (`golden::format::CS_LIGHTS`): each lights every
+/// pixel with one directional light; a light the scene does not define has zero coefficients.
+pub const CS_LIGHTS: usize = 2;
+
+/// One light's constant vectors for the Phong datapath (written through `light_write_*` while the CS
+/// is idle): the direction L and the halfway vector H, unit vectors in Q1.14 (two's complement).
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct LightVectors {
+    pub l_x: Bits<16>,
+    pub l_y: Bits<16>,
+    pub l_z: Bits<16>,
+    pub h_x: Bits<16>,
+    pub h_y: Bits<16>,
+    pub h_z: Bits<16>,
+}
+
+/// One word of the material memory (written through `material_write_*`), six unsigned 16-bit fields of
+/// colour x 255 with 8 fraction bits. Slot 0 of a material: `w0..w2` = ambient R, G, B (Ka Ia),
+/// `w3` = log2 of the gloss (0..=4). Slot 1 + l: light l's `w0..w2` = diffuse (Kd Il) and `w3..w5` =
+/// specular (Ks Il) R, G, B.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct MaterialWord {
+    pub w0: Bits<16>,
+    pub w1: Bits<16>,
+    pub w2: Bits<16>,
+    pub w3: Bits<16>,
+    pub w4: Bits<16>,
+    pub w5: Bits<16>,
 }
 
 /// Width of a packed [`TdbsRecord`].

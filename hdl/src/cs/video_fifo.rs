@@ -1,10 +1,10 @@
-//! `video_fifo`: the Color Shader's output FIFO, 8 entries of 26 bits (RGB888 + SOF + EOL), held in
+//! `video_fifo`: the Color Shader's output FIFO, 32 entries of 26 bits (RGB888 + SOF + EOL), held in
 //! registers so that the head is on the output in the cycle after it was written (show-ahead).
 //!
 //! ```text
 //!               +---------------------+
 //!  write ------>|                     |---> read_valid   (not empty)
-//!  write_data ->|  8 x 26 registers   |---> read_data    (the head; 0 when empty)
+//!  write_data ->|  32 x 26 registers  |---> read_data    (the head; 0 when empty)
 //!               |  wr_ptr rd_ptr count|<--- read         (pop the head if not empty)
 //!  clock ------>|                     |---> overflow     (sticky: a write while full was dropped)
 //!               +---------------------+
@@ -16,7 +16,7 @@
 use rust_hdl::prelude::*;
 
 /// Entries.
-pub const VIDEO_FIFO_DEPTH: usize = 8;
+pub const VIDEO_FIFO_DEPTH: usize = 32;
 /// Entry width: RGB888 (bits 23:0), SOF (24), EOL (25).
 pub const VIDEO_FIFO_BITS: usize = 26;
 
@@ -37,18 +37,18 @@ pub struct VideoFifo {
     /// Sticky: some write found the FIFO full.
     pub overflow: Signal<Out, Bit>,
 
-    mem: [DFF<Bits<26>>; 8],
-    wr_ptr: DFF<Bits<3>>,
-    rd_ptr: DFF<Bits<3>>,
-    count: DFF<Bits<4>>,
+    mem: [DFF<Bits<26>>; 32],
+    wr_ptr: DFF<Bits<5>>,
+    rd_ptr: DFF<Bits<5>>,
+    count: DFF<Bits<6>>,
     overflowed: DFF<Bit>,
     push: Signal<Local, Bit>,
     pop: Signal<Local, Bit>,
     full: Signal<Local, Bit>,
-    k0_4: Constant<Bits<4>>,
-    k1_4: Constant<Bits<4>>,
-    k8_4: Constant<Bits<4>>,
-    k1_3: Constant<Bits<3>>,
+    k0_6: Constant<Bits<6>>,
+    k1_6: Constant<Bits<6>>,
+    kdepth_6: Constant<Bits<6>>,
+    k1_5: Constant<Bits<5>>,
     k0_26: Constant<Bits<26>>,
 }
 
@@ -70,10 +70,10 @@ impl Default for VideoFifo {
             push: Default::default(),
             pop: Default::default(),
             full: Default::default(),
-            k0_4: Constant::new(0.into()),
-            k1_4: Constant::new(1.into()),
-            k8_4: Constant::new((VIDEO_FIFO_DEPTH as u64).into()),
-            k1_3: Constant::new(1.into()),
+            k0_6: Constant::new(0.into()),
+            k1_6: Constant::new(1.into()),
+            kdepth_6: Constant::new((VIDEO_FIFO_DEPTH as u64).into()),
+            k1_5: Constant::new(1.into()),
             k0_26: Constant::new(0.into()),
         }
     }
@@ -83,16 +83,16 @@ impl Logic for VideoFifo {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, wr_ptr, rd_ptr, count, overflowed);
-        for i in 0..8 {
+        for i in 0..32 {
             self.mem[i].clock.next = self.clock.val();
             self.mem[i].d.next = self.mem[i].q.val();
         }
-        self.full.next = self.count.q.val() == self.k8_4.val();
-        self.read_valid.next = self.count.q.val() != self.k0_4.val();
+        self.full.next = self.count.q.val() == self.kdepth_6.val();
+        self.read_valid.next = self.count.q.val() != self.k0_6.val();
         self.push.next = self.write.val() & !self.full.val();
         self.pop.next = self.read.val() & self.read_valid.val();
         self.read_data.next = self.k0_26.val();
-        for i in 0..8 {
+        for i in 0..32 {
             if self.read_valid.val() & (self.rd_ptr.q.val().index() == i) {
                 self.read_data.next = self.mem[i].q.val();
             }
@@ -101,16 +101,16 @@ impl Logic for VideoFifo {
             }
         }
         if self.push.val() {
-            self.wr_ptr.d.next = self.wr_ptr.q.val() + self.k1_3.val();
+            self.wr_ptr.d.next = self.wr_ptr.q.val() + self.k1_5.val();
         }
         if self.pop.val() {
-            self.rd_ptr.d.next = self.rd_ptr.q.val() + self.k1_3.val();
+            self.rd_ptr.d.next = self.rd_ptr.q.val() + self.k1_5.val();
         }
         if self.push.val() & !self.pop.val() {
-            self.count.d.next = self.count.q.val() + self.k1_4.val();
+            self.count.d.next = self.count.q.val() + self.k1_6.val();
         }
         if !self.push.val() & self.pop.val() {
-            self.count.d.next = self.count.q.val() - self.k1_4.val();
+            self.count.d.next = self.count.q.val() - self.k1_6.val();
         }
         if self.write.val() & self.full.val() {
             self.overflowed.d.next = true;
