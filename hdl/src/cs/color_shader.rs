@@ -217,6 +217,11 @@ pub struct ColorShader {
     n_r: Signal<Local, Signed<16>>,
     n_g: Signal<Local, Signed<16>>,
     n_b: Signal<Local, Signed<16>>,
+    mw3: Signal<Local, Bits<16>>,
+    rec_material: Signal<Local, Bits<16>>,
+    us_r: Signal<Local, Bits<58>>,
+    us_g: Signal<Local, Bits<58>>,
+    us_b: Signal<Local, Bits<58>>,
     top_r: Signal<Local, Bits<27>>,
     top_g: Signal<Local, Bits<27>>,
     top_b: Signal<Local, Bits<27>>,
@@ -398,6 +403,11 @@ impl Default for ColorShader {
             n_r: Default::default(),
             n_g: Default::default(),
             n_b: Default::default(),
+            mw3: Default::default(),
+            rec_material: Default::default(),
+            us_r: Default::default(),
+            us_g: Default::default(),
+            us_b: Default::default(),
             top_r: Default::default(),
             top_g: Default::default(),
             top_b: Default::default(),
@@ -493,7 +503,8 @@ impl Logic for ColorShader {
         }
         self.gloss_ram.write_enable.next = self.material_write_enable.val() & (self.material_write_slot.val() == self.k0_3.val());
         self.gloss_ram.write_address.next = self.material_write_address.val();
-        self.gloss_ram.write_data.next = self.material_write_data.val().w3.get_bits::<3>(0);
+        self.mw3.next = self.material_write_data.val().w3;
+        self.gloss_ram.write_data.next = self.mw3.val().get_bits::<3>(0);
         self.ambient_ram.write_enable.next = self.material_write_enable.val() & (self.material_write_slot.val() == self.k0_3.val());
         self.ambient_ram.write_address.next = self.material_write_address.val();
         self.ambient_ram.write_data.next = self.material_write_data.val();
@@ -616,24 +627,27 @@ impl Logic for ColorShader {
         self.g_rgb.next = (bit_cast::<24, 8>(self.ch_r.val()) << 16) | (bit_cast::<24, 8>(self.ch_b.val()) << 8) | bit_cast::<24, 8>(self.ch_g.val());
 
         // t+5: the same sums as a normal (Phong): >> 16 saturated to 16 bits (bits 57:31 all the sign).
-        self.top_r.next = unsigned_cast(self.s5_sum_r.q.val()).get_bits::<27>(31);
-        self.top_g.next = unsigned_cast(self.s5_sum_g.q.val()).get_bits::<27>(31);
-        self.top_b.next = unsigned_cast(self.s5_sum_b.q.val()).get_bits::<27>(31);
-        self.n_r.next = signed_cast(unsigned_cast(self.s5_sum_r.q.val()).get_bits::<16>(16));
+        self.us_r.next = unsigned_cast(self.s5_sum_r.q.val());
+        self.top_r.next = self.us_r.val().get_bits::<27>(31);
+        self.us_g.next = unsigned_cast(self.s5_sum_g.q.val());
+        self.top_g.next = self.us_g.val().get_bits::<27>(31);
+        self.us_b.next = unsigned_cast(self.s5_sum_b.q.val());
+        self.top_b.next = self.us_b.val().get_bits::<27>(31);
+        self.n_r.next = signed_cast(self.us_r.val().get_bits::<16>(16));
         if self.s5_sum_r.q.val().get_bit(57) & (self.top_r.val() != self.kones_27.val()) {
             self.n_r.next = self.kmin_16.val();
         }
         if !self.s5_sum_r.q.val().get_bit(57) & (self.top_r.val() != self.k0_27.val()) {
             self.n_r.next = self.kmax_16.val();
         }
-        self.n_g.next = signed_cast(unsigned_cast(self.s5_sum_g.q.val()).get_bits::<16>(16));
+        self.n_g.next = signed_cast(self.us_g.val().get_bits::<16>(16));
         if self.s5_sum_g.q.val().get_bit(57) & (self.top_g.val() != self.kones_27.val()) {
             self.n_g.next = self.kmin_16.val();
         }
         if !self.s5_sum_g.q.val().get_bit(57) & (self.top_g.val() != self.k0_27.val()) {
             self.n_g.next = self.kmax_16.val();
         }
-        self.n_b.next = signed_cast(unsigned_cast(self.s5_sum_b.q.val()).get_bits::<16>(16));
+        self.n_b.next = signed_cast(self.us_b.val().get_bits::<16>(16));
         if self.s5_sum_b.q.val().get_bit(57) & (self.top_b.val() != self.kones_27.val()) {
             self.n_b.next = self.kmin_16.val();
         }
@@ -668,7 +682,8 @@ impl Logic for ColorShader {
         }
 
         // The material travels from the record (t+3) to the memories' reads (t+18, t+22, t+24).
-        self.mat[0].d.next = self.tdbs_read_data.val().material.get_bits::<CS_MATERIAL_BITS>(0);
+        self.rec_material.next = self.tdbs_read_data.val().material;
+        self.mat[0].d.next = self.rec_material.val().get_bits::<CS_MATERIAL_BITS>(0);
         for i in 1..21 {
             self.mat[i].d.next = self.mat[i - 1].q.val();
         }

@@ -120,6 +120,8 @@ pub struct LightUnit {
     dh_a: Signal<Local, Signed<34>>,
     dh_b: Signal<Local, Signed<34>>,
     dh_c: Signal<Local, Signed<34>>,
+    dl_u: Signal<Local, Bits<34>>,
+    dh_u: Signal<Local, Bits<34>>,
     dl_mag: Signal<Local, Bits<19>>,
     dh_mag: Signal<Local, Bits<19>>,
     nl: Signal<Local, Bits<15>>,
@@ -217,6 +219,8 @@ impl Default for LightUnit {
             dh_a: Default::default(),
             dh_b: Default::default(),
             dh_c: Default::default(),
+            dl_u: Default::default(),
+            dh_u: Default::default(),
             dl_mag: Default::default(),
             dh_mag: Default::default(),
             nl: Default::default(),
@@ -288,8 +292,10 @@ impl Logic for LightUnit {
         self.dh_a.next = signed_bit_cast_safe::<34, 32>(self.ph_x.q.val()) + signed_bit_cast_safe::<34, 32>(self.ph_y.q.val());
         self.dh_b.next = self.dh_a.val() + signed_bit_cast_safe::<34, 32>(self.ph_z.q.val());
         self.dh_c.next = self.dh_b.val() + self.khalf_34.val();
-        self.dl_mag.next = unsigned_cast(self.dl_c.val()).get_bits::<19>(14);
-        self.dh_mag.next = unsigned_cast(self.dh_c.val()).get_bits::<19>(14);
+        self.dl_u.next = unsigned_cast(self.dl_c.val());
+        self.dh_u.next = unsigned_cast(self.dh_c.val());
+        self.dl_mag.next = self.dl_u.val().get_bits::<19>(14);
+        self.dh_mag.next = self.dh_u.val().get_bits::<19>(14);
         self.nl.next = self.dl_mag.val().get_bits::<15>(0);
         if self.dl_mag.val() > self.kone_19.val() {
             self.nl.next = self.kone_15.val();

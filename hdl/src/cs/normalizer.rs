@@ -8,7 +8,7 @@
 //!  n_x, n_y, --->| N1  n_k^2 (3 products 16x16)                                    |
 //!  n_z (Q1.14,   | N2  len2 = sum (32 b)                                           |
 //!  16 b signed)  | N3  k = lz(len2)/2, m = len2 << 2k in [2^30, 2^32), zero flag   |
-//!                | N4  seed table address m[31:24] (rsqrt_table, 256 x 16 ROM)     |
+//!                | N4  seed table address m[31:24] (seed_rom, 256 x 16 ROM)        |
 //!                | N5  t = round(y0^2 / 2^14)                                      |
 //!                | N6  p = (m >> 14) * t            (18 x 18)                      |
 //!                | N7  e = round((3*2^34 - p) / 2^18)                              |
@@ -57,7 +57,7 @@ pub struct Normalizer {
     pub u_y: Signal<Out, Signed<16>>,
     pub u_z: Signal<Out, Signed<16>>,
 
-    table: SyncROM<Bits<16>, 8>,
+    seed_rom: SyncROM<Bits<16>, 8>,
     sq_x: MulS<16, 16, 32>,
     sq_y: MulS<16, 16, 32>,
     sq_z: MulS<16, 16, 32>,
@@ -115,6 +115,12 @@ pub struct Normalizer {
     e_full: Signal<Local, Bits<36>>,
     y1_full: Signal<Local, Bits<34>>,
     y1_s: Signal<Local, Signed<18>>,
+    sq_x_u: Signal<Local, Bits<32>>,
+    sq_y_u: Signal<Local, Bits<32>>,
+    sq_z_u: Signal<Local, Bits<32>>,
+    qs_x: Signal<Local, Signed<50>>,
+    qs_y: Signal<Local, Signed<50>>,
+    qs_z: Signal<Local, Signed<50>>,
     qw_x: Signal<Local, Bits<50>>,
     qw_y: Signal<Local, Bits<50>>,
     qw_z: Signal<Local, Bits<50>>,
@@ -149,7 +155,7 @@ impl Default for Normalizer {
             u_x: Default::default(),
             u_y: Default::default(),
             u_z: Default::default(),
-            table: (0..256u64).map(|i| Bits::<16>::from(rsqrt_table_entry(i))).into(),
+            seed_rom: (0..256u64).map(|i| Bits::<16>::from(rsqrt_table_entry(i))).into(),
             sq_x: Default::default(),
             sq_y: Default::default(),
             sq_z: Default::default(),
@@ -200,6 +206,12 @@ impl Default for Normalizer {
             e_full: Default::default(),
             y1_full: Default::default(),
             y1_s: Default::default(),
+            sq_x_u: Default::default(),
+            sq_y_u: Default::default(),
+            sq_z_u: Default::default(),
+            qs_x: Default::default(),
+            qs_y: Default::default(),
+            qs_z: Default::default(),
             qw_x: Default::default(),
             qw_y: Default::default(),
             qw_z: Default::default(),
@@ -233,7 +245,7 @@ impl Logic for Normalizer {
             self, clock, s1_x, s1_y, s1_z, len2, m3, m4, m5, y0_5, y0_6, y0_7, t5, p6, e7, y0e8, y1_9, q10_x, q10_y,
             q10_z, r11_x, r11_y, r11_z, u12_x, u12_y, u12_z
         );
-        self.table.clock.next = self.clock.val();
+        self.seed_rom.clock.next = self.clock.val();
         for i in 0..9 {
             self.n_xd[i].clock.next = self.clock.val();
             self.n_yd[i].clock.next = self.clock.val();
@@ -260,9 +272,12 @@ impl Logic for Normalizer {
         self.sq_y.b.next = self.n_y.val();
         self.sq_z.a.next = self.n_z.val();
         self.sq_z.b.next = self.n_z.val();
-        self.s1_x.d.next = unsigned_cast(self.sq_x.p.val()).get_bits::<31>(0);
-        self.s1_y.d.next = unsigned_cast(self.sq_y.p.val()).get_bits::<31>(0);
-        self.s1_z.d.next = unsigned_cast(self.sq_z.p.val()).get_bits::<31>(0);
+        self.sq_x_u.next = unsigned_cast(self.sq_x.p.val());
+        self.s1_x.d.next = self.sq_x_u.val().get_bits::<31>(0);
+        self.sq_y_u.next = unsigned_cast(self.sq_y.p.val());
+        self.s1_y.d.next = self.sq_y_u.val().get_bits::<31>(0);
+        self.sq_z_u.next = unsigned_cast(self.sq_z.p.val());
+        self.s1_z.d.next = self.sq_z_u.val().get_bits::<31>(0);
 
         // N2: |n|^2 < 3 * 2^30 fits 32 bits.
         self.ext_x.next = bit_cast::<32, 31>(self.s1_x.q.val());
@@ -292,15 +307,15 @@ impl Logic for Normalizer {
         }
 
         // N4: the seed table is read at m[31:24] (its data is registered: y0 in N5).
-        self.table.address.next = self.m3.q.val().get_bits::<8>(24);
+        self.seed_rom.address.next = self.m3.q.val().get_bits::<8>(24);
         self.m4.d.next = self.m3.q.val();
 
         // N5: t = round(y0^2 / 2^14).
-        self.y0sq.a.next = self.table.data.val();
-        self.y0sq.b.next = self.table.data.val();
+        self.y0sq.a.next = self.seed_rom.data.val();
+        self.y0sq.b.next = self.seed_rom.data.val();
         self.y0sq_r.next = self.y0sq.p.val() + self.khalf13_32.val();
         self.t5.d.next = self.y0sq_r.val().get_bits::<18>(14);
-        self.y0_5.d.next = self.table.data.val();
+        self.y0_5.d.next = self.seed_rom.data.val();
         self.m5.d.next = self.m4.q.val();
 
         // N6: p = (m >> 14) * t = x y0^2 2^34.
@@ -336,9 +351,12 @@ impl Logic for Normalizer {
         self.q10_z.d.next = self.q_z.p.val();
 
         // N11: r_k = (q_k << k) + 2^16, two's complement in 50 bits (|q << k| < 2^49).
-        self.qw_x.next = unsigned_cast(signed_bit_cast_safe::<50, 34>(self.q10_x.q.val()));
-        self.qw_y.next = unsigned_cast(signed_bit_cast_safe::<50, 34>(self.q10_y.q.val()));
-        self.qw_z.next = unsigned_cast(signed_bit_cast_safe::<50, 34>(self.q10_z.q.val()));
+        self.qs_x.next = signed_bit_cast_safe::<50, 34>(self.q10_x.q.val());
+        self.qw_x.next = unsigned_cast(self.qs_x.val());
+        self.qs_y.next = signed_bit_cast_safe::<50, 34>(self.q10_y.q.val());
+        self.qw_y.next = unsigned_cast(self.qs_y.val());
+        self.qs_z.next = signed_bit_cast_safe::<50, 34>(self.q10_z.q.val());
+        self.qw_z.next = unsigned_cast(self.qs_z.val());
         self.sh_x.next = self.qw_x.val() << self.kd[7].q.val();
         self.sh_y.next = self.qw_y.val() << self.kd[7].q.val();
         self.sh_z.next = self.qw_z.val() << self.kd[7].q.val();

@@ -2,13 +2,15 @@
 //! direct drive, GUIDE §5) and the cycle model (`golden::cycle::color_shader::ColorShaderModel`) get
 //! the same inputs every cycle: frame starts (also while busy, where they must be ignored), random
 //! back-pressure on the video stream, and the read data of the I-buffer and TdbS memory models
-//! ([`CsMemories`], latency 1), which answer the ports. Every output port is compared every cycle; the
-//! first mismatch stops the run with the cycle, the port, both values and the path of a VCD.
+//! ([`CsMemories`], latency 1), which answer the ports, and the Phong constants (written while idle,
+//! before the first frame). Every output port is compared every cycle; the first mismatch stops the
+//! run with the cycle, the port, both values and the path of a VCD.
 
 use crate::common::{vcd_path, vcd_wanted, Rng, Trace};
 use crate::cs::pack::{record_of, tdata_of, BitVector};
 use crate::cs::replay::{port, PortSpec, Recording};
-use golden::cycle::color_shader::{ColorShaderModel, CsInputs, CsMemories, CsOutputs, ReadPort, VideoBeat, WritePort};
+use golden::cycle::color_shader::{ColorShaderModel, CsConfigWrite, CsInputs, CsMemories, CsOutputs, ReadPort, VideoBeat, WritePort};
+use hdl::cs::{LightVectors, MaterialWord};
 use hdl::cs::color_shader::ColorShader;
 use rust_hdl::prelude::*;
 use std::path::PathBuf;
@@ -20,6 +22,8 @@ pub struct FrameSpec {
     pub height: u32,
     pub background: [u8; 3],
     pub clear_behind: bool,
+    /// Phong scan-out (the constants are the run's `config`).
+    pub phong: bool,
 }
 
 /// How the environment behaves.
@@ -65,6 +69,14 @@ pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
             port("height", 11),
             port("background", 24),
             port("clear_behind", 1),
+            port("shading_phong", 1),
+            port("light_write_enable", 1),
+            port("light_write_address", 2),
+            port("light_write_data", 96),
+            port("material_write_enable", 1),
+            port("material_write_address", hdl::cs::CS_MATERIAL_BITS),
+            port("material_write_slot", 3),
+            port("material_write_data", 96),
             port("ibuf_read_data", 16),
             port("tdbs_read_data", hdl::cs::TDBS_RECORD_BITS),
             port("video_tready", 1),
@@ -90,6 +102,27 @@ pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
     )
 }
 
+/// Six 16-bit fields packed as a `LogicStruct` (field 0 in the least significant bits).
+fn pack6(f: [u64; 6]) -> u128 {
+    f.iter().enumerate().fold(0u128, |acc, (k, &x)| acc | (((x & 0xffff) as u128) << (16 * k)))
+}
+
+/// The config write of a cycle as the ports carry it: (light enable, address, data), (material
+/// enable, address, slot, data).
+fn config_ports(c: Option<CsConfigWrite>) -> ((bool, u64, u128), (bool, u64, u64, u128)) {
+    let q = |v: i64| v as u16 as u64;
+    match c {
+        Some(CsConfigWrite::Light { address, l, h }) => {
+            ((true, address as u64 & 3, pack6([q(l[0]), q(l[1]), q(l[2]), q(h[0]), q(h[1]), q(h[2])])), (false, 0, 0, 0))
+        }
+        Some(CsConfigWrite::Material { address, slot, words }) => {
+            let mask = (1u64 << hdl::cs::CS_MATERIAL_BITS) - 1;
+            ((false, 0, 0), (true, address as u64 & mask, slot as u64 & 7, pack6(words.map(|w| w as u64))))
+        }
+        None => ((false, 0, 0), (false, 0, 0, 0)),
+    }
+}
+
 fn in_vector(i: &CsInputs) -> BitVector {
     let mut v = BitVector::default();
     v.push(i.start as u128, 1);
@@ -97,6 +130,15 @@ fn in_vector(i: &CsInputs) -> BitVector {
     v.push(i.height as u128, 11);
     v.push(tdata_of(i.background) as u128, 24);
     v.push(i.clear_behind as u128, 1);
+    v.push(i.shading_phong as u128, 1);
+    let ((le, la, ld), (me, ma, ms, md)) = config_ports(i.config);
+    v.push(le as u128, 1);
+    v.push(la as u128, 2);
+    v.push(ld, 96);
+    v.push(me as u128, 1);
+    v.push(ma as u128, hdl::cs::CS_MATERIAL_BITS);
+    v.push(ms as u128, 3);
+    v.push(md, 96);
     v.push(i.ibuf_read_data as u128, 16);
     v.push_record(&i.tdbs_read_data);
     v.push(i.video_tready as u128, 1);
@@ -181,6 +223,16 @@ impl Rtl {
         u.height.next = (i.height as u64 & 0x7ff).into();
         u.background.next = (tdata_of(i.background) as u64).into();
         u.clear_behind.next = i.clear_behind;
+        u.shading_phong.next = i.shading_phong;
+        let ((le, la, ld), (me, ma, ms, md)) = config_ports(i.config);
+        let f = |d: u128, k: usize| -> Bits<16> { (((d >> (16 * k)) & 0xffff) as u64).into() };
+        u.light_write_enable.next = le;
+        u.light_write_address.next = la.into();
+        u.light_write_data.next = LightVectors { l_x: f(ld, 0), l_y: f(ld, 1), l_z: f(ld, 2), h_x: f(ld, 3), h_y: f(ld, 4), h_z: f(ld, 5) };
+        u.material_write_enable.next = me;
+        u.material_write_address.next = ma.into();
+        u.material_write_slot.next = ms.into();
+        u.material_write_data.next = MaterialWord { w0: f(md, 0), w1: f(md, 1), w2: f(md, 2), w3: f(md, 3), w4: f(md, 4), w5: f(md, 5) };
         u.ibuf_read_data.next = (i.ibuf_read_data as u64).into();
         u.tdbs_read_data.next = record_of(&i.tdbs_read_data);
         u.video_tready.next = i.video_tready;
@@ -202,6 +254,7 @@ enum Stop {
 fn run_inner(
     mem: &mut CsMemories,
     frames: &[FrameSpec],
+    config: &[CsConfigWrite],
     drive: CsDrive,
     with_rtl: bool,
     vcd: Option<&PathBuf>,
@@ -234,11 +287,14 @@ fn run_inner(
         }
         was_busy = busy;
         let spec = frames.get(next).copied();
+        // The Phong constants go in first, one write per cycle, while the CS is idle.
+        let cfg = config.get(cycle as usize).copied();
         let start = match spec {
+            _ if cfg.is_some() => false,
             Some(_) if !busy => idle == 0,
             _ => busy && drive.start_while_busy_percent > 0 && rng.chance(drive.start_while_busy_percent),
         };
-        let s = spec.or(frames.last().copied()).unwrap_or(FrameSpec { width: 1, height: 1, background: [0; 3], clear_behind: false });
+        let s = spec.or(frames.last().copied()).unwrap_or(FrameSpec { width: 1, height: 1, background: [0; 3], clear_behind: false, phong: false });
         let (ibuf_read_data, tdbs_read_data) = mem.read_data();
         let inp = CsInputs {
             start,
@@ -249,6 +305,8 @@ fn run_inner(
             ibuf_read_data,
             tdbs_read_data,
             video_tready: !rng.chance(drive.stall_percent),
+            shading_phong: if busy { rng.chance(50) } else { s.phong },
+            config: cfg,
         };
         let expected = model.step(&inp);
         if let Some(r) = rtl.as_mut() {
@@ -271,7 +329,7 @@ fn run_inner(
                 run.frames.push(Vec::new());
             }
         }
-        if !busy && idle > 0 {
+        if !busy && idle > 0 && cfg.is_none() {
             idle -= 1;
         }
         if expected.ibuf_read.enable && first_issue.is_none() {
@@ -304,25 +362,33 @@ fn run_inner(
 }
 
 /// The cycle model alone.
-pub fn run_model(mem: &mut CsMemories, frames: &[FrameSpec], drive: CsDrive) -> Result<CsRun, String> {
-    run_inner(mem, frames, drive, false, None, false).map_err(|s| match s {
+pub fn run_model(mem: &mut CsMemories, frames: &[FrameSpec], config: &[CsConfigWrite], drive: CsDrive) -> Result<CsRun, String> {
+    run_inner(mem, frames, config, drive, false, None, false).map_err(|s| match s {
         Stop::Error(e) => e,
         Stop::Mismatch(..) => unreachable!(),
     })
 }
 
-/// The RTL against the model, every port every cycle; `mem` is updated by the run's writes. `test`
-/// names the VCD (`target/vcd/cs/<test>.vcd`): written with `VCD=1`, and always for a failing run.
-pub fn run_rtl_vs_model(test: &str, mem: &mut CsMemories, frames: &[FrameSpec], drive: CsDrive, record: bool) -> Result<CsRun, String> {
+/// The RTL against the model, every port every cycle; `mem` is updated by the run's writes; `config`
+/// is written before the first frame. `test` names the VCD (`target/vcd/cs/<test>.vcd`): written
+/// with `VCD=1`, and always for a failing run.
+pub fn run_rtl_vs_model(
+    test: &str,
+    mem: &mut CsMemories,
+    frames: &[FrameSpec],
+    config: &[CsConfigWrite],
+    drive: CsDrive,
+    record: bool,
+) -> Result<CsRun, String> {
     let path = vcd_path("cs", test);
     let vcd = if vcd_wanted() { Some(&path) } else { None };
     let start_mem = mem.clone();
-    match run_inner(mem, frames, drive, true, vcd, record) {
+    match run_inner(mem, frames, config, drive, true, vcd, record) {
         Ok(r) => Ok(r),
         Err(Stop::Error(e)) => Err(e),
         Err(Stop::Mismatch(cycle, port, e, a)) => {
             let mut again = start_mem;
-            let _ = run_inner(&mut again, frames, drive, true, Some(&path), false);
+            let _ = run_inner(&mut again, frames, config, drive, true, Some(&path), false);
             Err(format!(
                 "cs differs from its cycle model in cycle {cycle} (seed {}), port {port}: expected {e:#x}, actual {a:#x}\n  VCD: {}",
                 drive.seed,

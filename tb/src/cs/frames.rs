@@ -34,6 +34,8 @@ pub struct RecordedFrame {
     pub frame: Frame,
     pub chip: Recorder,
     pub background: [u8; 3],
+    /// The frame's Phong constants (what the host loads into the CS for a Phong scan-out).
+    pub lights: PhongLights,
 }
 
 impl RecordedFrame {
@@ -62,5 +64,6 @@ pub fn record(name: &str, shading: Shading, width: u32, height: u32) -> Result<R
     };
     let mut chip = Recorder { inner: GoldenChipset::new(screen), setups: Vec::new() };
     let frame = render_with(&mesh, &opts, &mut chip)?;
-    Ok(RecordedFrame { frame, chip, background })
+    let lights = PhongLights::new(&opts.lighting, &mesh.materials);
+    Ok(RecordedFrame { frame, chip, background, lights })
 }

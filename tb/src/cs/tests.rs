@@ -6,11 +6,12 @@ use super::colour_setup_bench::{self as setb, SetupDrive};
 use super::frames::record;
 use super::replay::{lint, replay_iverilog, synth_ice40};
 use crate::common::{have_tool, scratch_dir, Rng};
-use golden::cycle::color_shader::{CsMemories, CS_PIPELINE_CYCLES};
+use golden::cycle::color_shader::{phong_config, CsConfigWrite, CsMemories, CS_PIPELINE_CYCLES};
 use golden::cycle::colour_setup::{SetupCmd, FLAT_CYCLES, SHADED_CYCLES};
 use golden::format::{Plane, DEPTH_MAX};
 use golden::scene::builtin;
-use golden::shade::{Shading, TdbsEntry};
+use golden::format::{CS_GLOSS_LOG2_MAX, CS_LIGHTS, CS_MATERIALS};
+use golden::shade::{normal_q14, PhongLights, PhongMaterial, Shading, TdbsEntry};
 
 // ------------------------------------------------------------------------------------------------
 // Stimulus
@@ -91,6 +92,40 @@ fn random_memories(rng: &mut Rng, w: u32, h: u32, records: usize) -> CsMemories 
     CsMemories::new(ibuf, zbuf, tdbs)
 }
 
+/// Random Phong constants at the RTL's limits: [`CS_LIGHTS`] lights (unit L and H, sometimes any
+/// 16-bit vector), [`CS_MATERIALS`] materials with coefficients anywhere in 16 bits and every gloss.
+fn random_lights(rng: &mut Rng) -> PhongLights {
+    let vector = |rng: &mut Rng| -> [i64; 3] {
+        if rng.chance(15) {
+            [0, 1, 2].map(|_| rng.below(65536) as i64 - 32768)
+        } else {
+            let v = [0, 1, 2].map(|_| rng.below(2001) as f64 - 1000.0);
+            normal_q14([v[0], v[1], v[2] + 0.5])
+        }
+    };
+    let l = (0..CS_LIGHTS).map(|_| vector(rng)).collect();
+    let h = (0..CS_LIGHTS).map(|_| vector(rng)).collect();
+    let c = |rng: &mut Rng| [0, 1, 2].map(|_| if rng.chance(10) { 65535 } else { rng.below(1 << 15) as i64 });
+    let materials = (0..CS_MATERIALS)
+        .map(|_| PhongMaterial {
+            ambient: c(rng),
+            diffuse: (0..CS_LIGHTS).map(|_| c(rng)).collect(),
+            specular: (0..CS_LIGHTS).map(|_| c(rng)).collect(),
+            gloss_log2: rng.below(CS_GLOSS_LOG2_MAX as u64 + 1) as u32,
+        })
+        .collect();
+    PhongLights { l, h, materials }
+}
+
+/// Writes the CS must ignore: light addresses past its units, material slots past its lights.
+fn ignored_writes(rng: &mut Rng) -> Vec<CsConfigWrite> {
+    let mut w = vec![CsConfigWrite::Light { address: CS_LIGHTS as u32, l: [123, -5, 77], h: [-1, -2, -3] }];
+    for slot in CS_LIGHTS as u32 + 1..8 {
+        w.push(CsConfigWrite::Material { address: rng.below(CS_MATERIALS as u64) as u32, slot, words: [0xffff; 6] });
+    }
+    w
+}
+
 fn seed_for(test: &str, default: u64) -> u64 {
     let seed = Rng::new(default).seed();
     println!("{test}: seed {seed} (set SEED={seed} to replay)");
@@ -153,17 +188,17 @@ fn cs_matches_its_cycle_model_every_cycle_under_random_back_pressure() {
     let mut rng = Rng::new(seed);
     let mut mem = random_memories(&mut rng, 64, 24, 200);
     let frames = [
-        FrameSpec { width: 64, height: 24, background: [1, 2, 3], clear_behind: false },
-        FrameSpec { width: 0, height: 5, background: [0; 3], clear_behind: false },
-        FrameSpec { width: 1, height: 1, background: [9, 8, 7], clear_behind: false },
-        FrameSpec { width: 1, height: 17, background: [9, 8, 7], clear_behind: false },
-        FrameSpec { width: 1025, height: 1, background: [0; 3], clear_behind: false },
-        FrameSpec { width: 37, height: 3, background: [200, 100, 50], clear_behind: true },
-        FrameSpec { width: 64, height: 24, background: [5, 5, 5], clear_behind: false },
+        FrameSpec { width: 64, height: 24, background: [1, 2, 3], clear_behind: false, phong: false },
+        FrameSpec { width: 0, height: 5, background: [0; 3], clear_behind: false, phong: false },
+        FrameSpec { width: 1, height: 1, background: [9, 8, 7], clear_behind: false, phong: false },
+        FrameSpec { width: 1, height: 17, background: [9, 8, 7], clear_behind: false, phong: false },
+        FrameSpec { width: 1025, height: 1, background: [0; 3], clear_behind: false, phong: false },
+        FrameSpec { width: 37, height: 3, background: [200, 100, 50], clear_behind: true, phong: false },
+        FrameSpec { width: 64, height: 24, background: [5, 5, 5], clear_behind: false, phong: false },
     ];
     let reference = mem.clone();
     let drive = CsDrive { stall_percent: 40, start_while_busy_percent: 20, max_idle: 5, seed };
-    let run = csb::run_rtl_vs_model("cs_random", &mut mem, &frames, drive, false).unwrap();
+    let run = csb::run_rtl_vs_model("cs_random", &mut mem, &frames, &[], drive, false).unwrap();
     assert_eq!(run.refused, 2);
     let accepted: Vec<&FrameSpec> = frames.iter().filter(|f| (1..=1024).contains(&f.width) && (1..=1024).contains(&f.height)).collect();
     assert_eq!(run.frames.len(), accepted.len());
@@ -188,13 +223,16 @@ fn cs_matches_its_cycle_model_every_cycle_under_random_back_pressure() {
 #[test]
 fn cs_scans_out_the_golden_image_of_every_builtin_scene_under_back_pressure() {
     let seed = seed_for("cs_scenes", 11);
-    for (name, shading) in builtin::SCENES.iter().map(|n| (*n, Shading::Gouraud)).chain([("dolphins", Shading::Flat)]) {
+    let phong = builtin::SCENES.iter().map(|n| (*n, Shading::Phong));
+    for (name, shading) in builtin::SCENES.iter().map(|n| (*n, Shading::Gouraud)).chain([("dolphins", Shading::Flat)]).chain(phong) {
         let f = record(name, shading, 96, 60).unwrap();
         let mut mem = f.memories();
-        let spec = FrameSpec { width: 96, height: 60, background: f.background, clear_behind: true };
+        let is_phong = shading == Shading::Phong;
+        let config = if is_phong { phong_config(&f.lights).unwrap() } else { Vec::new() };
+        let spec = FrameSpec { width: 96, height: 60, background: f.background, clear_behind: true, phong: is_phong };
         let drive = CsDrive { stall_percent: 30, start_while_busy_percent: 10, max_idle: 0, seed };
         let test = format!("cs_{name}_{shading:?}").to_lowercase();
-        let run = csb::run_rtl_vs_model(&test, &mut mem, &[spec], drive, false).unwrap();
+        let run = csb::run_rtl_vs_model(&test, &mut mem, &[spec], &config, drive, false).unwrap();
         let img = csb::frame_image(&run.frames[0], 96, 60).unwrap();
         assert!(img == f.frame.rgb, "{name} {shading:?}: the RTL's image differs from the golden one");
         assert!(mem.ibuf.iter().all(|&i| i == 0) && mem.zbuf.iter().all(|&z| z == DEPTH_MAX), "{name}: clear-behind");
@@ -202,20 +240,70 @@ fn cs_scans_out_the_golden_image_of_every_builtin_scene_under_back_pressure() {
 }
 
 #[test]
-fn cs_streams_one_pixel_per_clock_on_a_320x200_frame() {
-    let f = record("teapot", Shading::Gouraud, 320, 200).unwrap();
-    let mut mem = f.memories();
-    let spec = FrameSpec { width: 320, height: 200, background: f.background, clear_behind: false };
-    let run = csb::run_rtl_vs_model("cs_320x200", &mut mem, &[spec], CsDrive::ideal(), false).unwrap();
-    let img = csb::frame_image(&run.frames[0], 320, 200).unwrap();
-    assert!(img == f.frame.rgb, "teapot 320x200: image differs");
-    let cycles = run.frame_cycles[0];
-    assert_eq!(cycles, 64000 + CS_PIPELINE_CYCLES);
-    println!(
-        "cs 320x200: {cycles} cycles from the first I-buffer read to the last beat for 64000 pixels = {:.4} pixels/clock; RustHDL {:.0} cycles/s",
-        64000.0 / cycles as f64,
-        run.rtl_cycles_per_second
-    );
+fn cs_streams_one_pixel_per_clock_on_a_320x200_frame_in_gouraud_and_in_phong() {
+    for shading in [Shading::Gouraud, Shading::Phong] {
+        let f = record("teapot", shading, 320, 200).unwrap();
+        let mut mem = f.memories();
+        let is_phong = shading == Shading::Phong;
+        let config = if is_phong { phong_config(&f.lights).unwrap() } else { Vec::new() };
+        let spec = FrameSpec { width: 320, height: 200, background: f.background, clear_behind: false, phong: is_phong };
+        let test = format!("cs_320x200_{shading:?}").to_lowercase();
+        let run = csb::run_rtl_vs_model(&test, &mut mem, &[spec], &config, CsDrive::ideal(), false).unwrap();
+        let img = csb::frame_image(&run.frames[0], 320, 200).unwrap();
+        assert!(img == f.frame.rgb, "teapot 320x200 {shading:?}: image differs");
+        let cycles = run.frame_cycles[0];
+        assert_eq!(cycles, 64000 + CS_PIPELINE_CYCLES);
+        println!(
+            "cs 320x200 {shading:?}: {cycles} cycles from the first I-buffer read to the last beat for 64000 pixels = {:.4} pixels/clock; RustHDL {:.0} cycles/s",
+            64000.0 / cycles as f64,
+            run.rtl_cycles_per_second
+        );
+    }
+}
+
+#[test]
+fn cs_matches_its_cycle_model_every_cycle_in_phong_with_random_constants_records_and_back_pressure() {
+    let seed = seed_for("cs_phong_random", 0x9409);
+    let mut rng = Rng::new(seed);
+    let mut mem = random_memories(&mut rng, 48, 20, 300);
+    // Normals of every length, most of them near unit length as real frames have them.
+    for e in mem.tdbs.iter_mut() {
+        if rng.chance(70) {
+            for k in 0..3 {
+                e.planes[k] = Plane { a: rng.below(1 << 17) as i64 - (1 << 16), b: rng.below(1 << 17) as i64 - (1 << 16), c: (rng.below(1 << 15) as i64 - (1 << 14)) << 16 };
+            }
+        }
+    }
+    let lights = random_lights(&mut rng);
+    let mut config = ignored_writes(&mut rng);
+    config.extend(phong_config(&lights).unwrap());
+    let frames = [
+        FrameSpec { width: 48, height: 20, background: [1, 2, 3], clear_behind: false, phong: true },
+        FrameSpec { width: 48, height: 20, background: [1, 2, 3], clear_behind: false, phong: false },
+        FrameSpec { width: 5, height: 3, background: [9, 8, 7], clear_behind: false, phong: true },
+        FrameSpec { width: 48, height: 20, background: [7, 7, 7], clear_behind: false, phong: true },
+    ];
+    let reference = mem.clone();
+    let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 4, seed };
+    let run = csb::run_rtl_vs_model("cs_phong_random", &mut mem, &frames, &config, drive, false).unwrap();
+    assert_eq!(run.frames.len(), frames.len());
+    // The first frame against the algorithmic model, pixel by pixel.
+    let img = csb::frame_image(&run.frames[0], 48, 20).unwrap();
+    let mut lit = 0;
+    for (i, px) in img.chunks(3).enumerate() {
+        let idx = reference.ibuf[i];
+        let (x, y) = (i as u32 % 48, i as u32 / 48);
+        let want = if idx == 0 {
+            [1, 2, 3]
+        } else {
+            let e = &reference.tdbs[idx as usize];
+            lit += 1;
+            lights.shade([0, 1, 2].map(|k| e.planes[k].eval(x, y)), e.material % CS_MATERIALS as u16)
+        };
+        assert_eq!(px, want, "pixel ({x}, {y})");
+    }
+    assert!(lit > 500, "too few lit pixels ({lit})");
+    println!("cs phong: {} cycles, RustHDL {:.0} cycles/s", run.cycles, run.rtl_cycles_per_second);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -244,13 +332,17 @@ fn cs_verilog_replays_the_recorded_vectors() {
     let seed = seed_for("cs_replay", 0xC5);
     let mut rng = Rng::new(seed);
     let mut mem = random_memories(&mut rng, 40, 12, 100);
+    let lights = random_lights(&mut rng);
+    let mut config = ignored_writes(&mut rng);
+    config.extend(phong_config(&lights).unwrap());
     let frames = [
-        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: true },
-        FrameSpec { width: 2000, height: 1, background: [0; 3], clear_behind: false },
-        FrameSpec { width: 40, height: 12, background: [4, 5, 6], clear_behind: false },
+        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: false, phong: true },
+        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: true, phong: false },
+        FrameSpec { width: 2000, height: 1, background: [0; 3], clear_behind: false, phong: false },
+        FrameSpec { width: 40, height: 12, background: [4, 5, 6], clear_behind: false, phong: true },
     ];
     let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed };
-    let run = csb::run_rtl_vs_model("cs_replay", &mut mem, &frames, drive, true).unwrap();
+    let run = csb::run_rtl_vs_model("cs_replay", &mut mem, &frames, &config, drive, true).unwrap();
     let rec = run.recording.unwrap();
     let v = hdl::verilog_top("cs").unwrap();
     let r = replay_iverilog(&v, "cs", &rec, &scratch_dir("cs/cs_replay")).unwrap();
@@ -264,8 +356,8 @@ fn the_verilog_replay_catches_a_changed_constant() {
     }
     let mut rng = Rng::new(3);
     let mut mem = random_memories(&mut rng, 8, 4, 10);
-    let frames = [FrameSpec { width: 8, height: 4, background: [1, 2, 3], clear_behind: true }];
-    let run = csb::run_rtl_vs_model("cs_replay_broken", &mut mem, &frames, CsDrive::ideal(), true).unwrap();
+    let frames = [FrameSpec { width: 8, height: 4, background: [1, 2, 3], clear_behind: true, phong: false }];
+    let run = csb::run_rtl_vs_model("cs_replay_broken", &mut mem, &frames, &[], CsDrive::ideal(), true).unwrap();
     let v = hdl::verilog_top("cs").unwrap();
     let far = "24'hffffff";
     assert!(v.contains(far), "the far depth constant is not in the Verilog");
