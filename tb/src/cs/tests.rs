@@ -367,6 +367,26 @@ fn the_verilog_replay_catches_a_changed_constant() {
 }
 
 #[test]
+fn the_verilog_replay_catches_a_changed_phong_rounding_constant() {
+    if !have_tool("iverilog") {
+        panic!("iverilog is not installed (the test script installs it)");
+    }
+    let f = record("polyhedron", Shading::Phong, 24, 16).unwrap();
+    let mut mem = f.memories();
+    let config = phong_config(&f.lights).unwrap();
+    let frames = [FrameSpec { width: 24, height: 16, background: f.background, clear_behind: false, phong: true }];
+    let run = csb::run_rtl_vs_model("cs_replay_phong_broken", &mut mem, &frames, &config, CsDrive::ideal(), true).unwrap();
+    let v = hdl::verilog_top("cs").unwrap();
+    // The rounding half of the final >> 22 of the Phong sum.
+    let half = "localparam  khalf_34 = 34'h200000;";
+    assert!(v.contains(half), "the Phong rounding constant is not in the Verilog");
+    let broken = v.replacen(half, "localparam  khalf_34 = 34'h0;", 1);
+    let e = replay_iverilog(&broken, "cs", run.recording.as_ref().unwrap(), &scratch_dir("cs/cs_replay_phong_broken")).unwrap_err();
+    assert!(e.contains("port video_tdata expected"), "{e}");
+    println!("broken Phong rounding: {}", e.lines().next().unwrap_or(""));
+}
+
+#[test]
 fn colour_setup_and_cs_pass_verilator_lint() {
     if !have_tool("verilator") {
         panic!("verilator is not installed (the test script installs it)");
