@@ -11,7 +11,7 @@
 use crate::cli::{BackendArg, RenderArgs};
 use golden::render::{render, render_with, Frame, RenderOptions};
 use golden::scene::Mesh;
-use golden::shade::Shading;
+use golden::shade::{PhongLights, Shading};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::PathBuf;
 
@@ -30,7 +30,10 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
             ));
         }
         if opts.shading == Shading::Phong {
-            return Err("--shading phong: the CS RTL does flat and Gouraud only (Phong is in the golden model); use --backend golden".into());
+            // Before any simulation: a scene whose lights or materials the CS cannot hold.
+            PhongLights::new(&opts.lighting, &mesh.materials)
+                .check_rtl_limits()
+                .map_err(|e| format!("--shading phong through the RTL: {e}; use --backend golden"))?;
         }
     }
     let t0 = std::time::Instant::now();

@@ -11,7 +11,8 @@
 //!   setup_cmd -(valid/ready)-> [ colour_setup ] -- tdbs write --------->| TdbS (2^16 x 424) |
 //!                                                        |  |  tdbs rd <-+-------------------+
 //!  scan_start, scan_background,                          |  |
-//!  scan_clear_behind -------> [ cs ] -- i read, tdbs read, clear-behind i/z writes
+//!  scan_clear_behind, scan_phong,                        |  |
+//!  light_write_*, material_write_* -> [ cs ] -- i read, tdbs read, clear-behind i/z writes
 //!                               +--> video (AXI4-Stream: tdata RGB888, tvalid/tready, tuser, tlast)
 //! ```
 //!
@@ -29,7 +30,7 @@
 use crate::common::{StreamIn, StreamOut};
 use crate::cs::color_shader::ColorShader;
 use crate::cs::colour_setup::ColourSetup;
-use crate::cs::{SetupCommand, TdbsRecord};
+use crate::cs::{LightVectors, MaterialWord, SetupCommand, TdbsRecord, CS_MATERIAL_BITS};
 use crate::rc::{Rc, RcCommand, RcResult};
 use rust_hdl::prelude::*;
 
@@ -53,6 +54,16 @@ pub struct Chipset {
     pub scan_background: Signal<In, Bits<24>>,
     /// Clear the I- and Z-buffer behind the scan for the next frame.
     pub scan_clear_behind: Signal<In, Bit>,
+    /// Light the interpolated normals per pixel (Phong) instead of evaluating colours (latched at start).
+    pub scan_phong: Signal<In, Bit>,
+    /// The CS's Phong constants (see `cs::color_shader`): write while `scan_busy` is low.
+    pub light_write_enable: Signal<In, Bit>,
+    pub light_write_address: Signal<In, Bits<2>>,
+    pub light_write_data: Signal<In, LightVectors>,
+    pub material_write_enable: Signal<In, Bit>,
+    pub material_write_address: Signal<In, Bits<CS_MATERIAL_BITS>>,
+    pub material_write_slot: Signal<In, Bits<3>>,
+    pub material_write_data: Signal<In, MaterialWord>,
     /// A frame is being scanned out.
     pub scan_busy: Signal<Out, Bit>,
     // To the display (AXI4-Stream video)
@@ -111,6 +122,14 @@ impl Chipset {
             scan_start: Default::default(),
             scan_background: Default::default(),
             scan_clear_behind: Default::default(),
+            scan_phong: Default::default(),
+            light_write_enable: Default::default(),
+            light_write_address: Default::default(),
+            light_write_data: Default::default(),
+            material_write_enable: Default::default(),
+            material_write_address: Default::default(),
+            material_write_slot: Default::default(),
+            material_write_data: Default::default(),
             scan_busy: Default::default(),
             video_tdata: Default::default(),
             video_tvalid: Default::default(),
@@ -171,6 +190,14 @@ impl Logic for Chipset {
         self.cs.height.next = self.height.val();
         self.cs.background.next = self.scan_background.val();
         self.cs.clear_behind.next = self.scan_clear_behind.val();
+        self.cs.shading_phong.next = self.scan_phong.val();
+        self.cs.light_write_enable.next = self.light_write_enable.val();
+        self.cs.light_write_address.next = self.light_write_address.val();
+        self.cs.light_write_data.next = self.light_write_data.val();
+        self.cs.material_write_enable.next = self.material_write_enable.val();
+        self.cs.material_write_address.next = self.material_write_address.val();
+        self.cs.material_write_slot.next = self.material_write_slot.val();
+        self.cs.material_write_data.next = self.material_write_data.val();
         self.scan_busy.next = self.cs.busy.val();
         self.i_re.next = self.cs.ibuf_read_enable.val();
         self.i_rd_addr.next = self.cs.ibuf_read_address.val();

@@ -25,6 +25,7 @@ use golden::cycle::rc::RcCmd;
 use golden::format::{Screen, DEPTH_MAX};
 use golden::raster::{Culled, CullMode, FrontFace, TriResult};
 use golden::render::{Chipset, RcCommand, ScanOut, SetupCommand};
+use golden::cycle::color_shader::phong_config;
 use golden::shade::{PhongLights, Shading, TdbsEntry};
 use hdl::chipset::Chipset as ChipsetRtl;
 use hdl::cs::TdbsRecord;
@@ -281,6 +282,8 @@ impl RtlChipset {
         u.setup_cmd.valid.next = false;
         u.scan_start.next = false;
         u.video_tready.next = true;
+        u.light_write_enable.next = false;
+        u.material_write_enable.next = false;
     }
 
     /// The buffers as the RC left them at the end of the last rasterization.
@@ -398,19 +401,26 @@ impl Chipset for RtlChipset {
         Ok(())
     }
 
-    fn scanout(&mut self, shading: Shading, _lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String> {
-        if shading == Shading::Phong {
-            return Err("--backend rtl: the RTL Color Shader evaluates flat and Gouraud planes; Phong lighting per pixel is only in the golden model".into());
-        }
+    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String> {
+        let phong = shading == Shading::Phong;
+        let config = if phong { phong_config(lights)? } else { Vec::new() };
         let (w, h) = (self.screen.width as usize, self.screen.height as usize);
         let mut rgb = Vec::with_capacity(w * h * 3);
         let (start, limit) = (self.cycle, self.cycle + self.budget(w as u64 * h as u64));
+        // Phong: the constants first, one write per cycle, while the CS is idle.
+        for c in &config {
+            self.idle_inputs();
+            crate::cs::color_shader_bench::drive_config(&mut *self.uut, Some(*c));
+            self.low()?;
+            self.high()?;
+        }
         let mut started = false;
         let mut pixels = 0usize;
         loop {
             self.idle_inputs();
             self.uut.scan_background.next = (tdata_of(background) as u64).into();
             self.uut.scan_clear_behind.next = true;
+            self.uut.scan_phong.next = phong;
             self.uut.scan_start.next = !started;
             self.low()?;
             let u = &self.uut;

@@ -277,7 +277,8 @@ pub fn teapot(grid: u32) -> Mesh {
             }
         }
     }
-    let teapot_colour = Material { ambient: [0.8, 0.55, 0.25], diffuse: [0.8, 0.55, 0.25], specular: [0.5, 0.5, 0.5], gloss: 16 };
+    // Glazed: a white specular strong enough that per-pixel (Phong) highlights show plainly.
+    let teapot_colour = Material { ambient: [0.75, 0.5, 0.22], diffuse: [0.75, 0.5, 0.22], specular: [0.9, 0.9, 0.9], gloss: 16 };
     Mesh { name: "teapot".into(), positions, normals, materials: vec![teapot_colour], triangles, front_face: Winding::Cw }
 }
 

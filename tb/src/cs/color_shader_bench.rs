@@ -123,6 +123,66 @@ fn config_ports(c: Option<CsConfigWrite>) -> ((bool, u64, u128), (bool, u64, u64
     }
 }
 
+/// A block with the CS's Phong-constant write ports (the `cs` and `chipset` tops).
+pub trait ConfigPorts {
+    #[allow(clippy::type_complexity)]
+    fn config_ports(
+        &mut self,
+    ) -> (
+        &mut Signal<In, Bit>,
+        &mut Signal<In, Bits<2>>,
+        &mut Signal<In, LightVectors>,
+        &mut Signal<In, Bit>,
+        &mut Signal<In, Bits<{ hdl::cs::CS_MATERIAL_BITS }>>,
+        &mut Signal<In, Bits<3>>,
+        &mut Signal<In, MaterialWord>,
+    );
+}
+
+macro_rules! config_ports_of {
+    ($t:ty) => {
+        impl ConfigPorts for $t {
+            fn config_ports(
+                &mut self,
+            ) -> (
+                &mut Signal<In, Bit>,
+                &mut Signal<In, Bits<2>>,
+                &mut Signal<In, LightVectors>,
+                &mut Signal<In, Bit>,
+                &mut Signal<In, Bits<{ hdl::cs::CS_MATERIAL_BITS }>>,
+                &mut Signal<In, Bits<3>>,
+                &mut Signal<In, MaterialWord>,
+            ) {
+                (
+                    &mut self.light_write_enable,
+                    &mut self.light_write_address,
+                    &mut self.light_write_data,
+                    &mut self.material_write_enable,
+                    &mut self.material_write_address,
+                    &mut self.material_write_slot,
+                    &mut self.material_write_data,
+                )
+            }
+        }
+    };
+}
+config_ports_of!(ColorShader);
+config_ports_of!(hdl::chipset::Chipset);
+
+/// Drive one cycle's Phong-constant write (or none) onto a block's write ports.
+pub fn drive_config(u: &mut impl ConfigPorts, c: Option<CsConfigWrite>) {
+    let ((le, la, ld), (me, ma, ms, md)) = config_ports(c);
+    let f = |d: u128, k: usize| -> Bits<16> { (((d >> (16 * k)) & 0xffff) as u64).into() };
+    let (lwe, lwa, lwd, mwe, mwa, mws, mwd) = u.config_ports();
+    lwe.next = le;
+    lwa.next = la.into();
+    lwd.next = LightVectors { l_x: f(ld, 0), l_y: f(ld, 1), l_z: f(ld, 2), h_x: f(ld, 3), h_y: f(ld, 4), h_z: f(ld, 5) };
+    mwe.next = me;
+    mwa.next = ma.into();
+    mws.next = ms.into();
+    mwd.next = MaterialWord { w0: f(md, 0), w1: f(md, 1), w2: f(md, 2), w3: f(md, 3), w4: f(md, 4), w5: f(md, 5) };
+}
+
 fn in_vector(i: &CsInputs) -> BitVector {
     let mut v = BitVector::default();
     v.push(i.start as u128, 1);
@@ -224,15 +284,7 @@ impl Rtl {
         u.background.next = (tdata_of(i.background) as u64).into();
         u.clear_behind.next = i.clear_behind;
         u.shading_phong.next = i.shading_phong;
-        let ((le, la, ld), (me, ma, ms, md)) = config_ports(i.config);
-        let f = |d: u128, k: usize| -> Bits<16> { (((d >> (16 * k)) & 0xffff) as u64).into() };
-        u.light_write_enable.next = le;
-        u.light_write_address.next = la.into();
-        u.light_write_data.next = LightVectors { l_x: f(ld, 0), l_y: f(ld, 1), l_z: f(ld, 2), h_x: f(ld, 3), h_y: f(ld, 4), h_z: f(ld, 5) };
-        u.material_write_enable.next = me;
-        u.material_write_address.next = ma.into();
-        u.material_write_slot.next = ms.into();
-        u.material_write_data.next = MaterialWord { w0: f(md, 0), w1: f(md, 1), w2: f(md, 2), w3: f(md, 3), w4: f(md, 4), w5: f(md, 5) };
+        drive_config(u, i.config);
         u.ibuf_read_data.next = (i.ibuf_read_data as u64).into();
         u.tdbs_read_data.next = record_of(&i.tdbs_read_data);
         u.video_tready.next = i.video_tready;

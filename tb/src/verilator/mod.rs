@@ -39,6 +39,7 @@ use golden::cycle::rc::RcCmd;
 use golden::format::Screen;
 use golden::raster::{Culled, CullMode, FrontFace, TriResult};
 use golden::render::{Chipset, RcCommand, ScanOut, SetupCommand};
+use golden::cycle::color_shader::{phong_config, CsConfigWrite};
 use golden::shade::{PhongLights, Shading};
 use hdl::rc::RcResult;
 use rust_hdl::prelude::*;
@@ -470,14 +471,22 @@ impl Chipset for VerilatorChipset {
         Ok(())
     }
 
-    fn scanout(&mut self, shading: Shading, _lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String> {
-        if shading == Shading::Phong {
-            return Err("--backend verilator: the RTL Color Shader evaluates flat and Gouraud planes; Phong lighting per pixel is only in the golden model".into());
+    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String> {
+        let phong = shading == Shading::Phong;
+        let config = if phong { phong_config(lights)? } else { Vec::new() };
+        let mut words = Vec::with_capacity(6 * config.len());
+        for c in &config {
+            let q = |v: i64| v as u16 as u32;
+            let (kind, address, slot, f) = match *c {
+                CsConfigWrite::Light { address, l, h } => (0, address, 0, [q(l[0]), q(l[1]), q(l[2]), q(h[0]), q(h[1]), q(h[2])]),
+                CsConfigWrite::Material { address, slot, words } => (1, address, slot, words.map(|w| w as u32)),
+            };
+            words.extend_from_slice(&[kind, address, slot, f[0] | f[1] << 16, f[2] | f[3] << 16, f[4] | f[5] << 16]);
         }
         let pixels = self.screen.pixels();
         let start = self.cycle;
         let budget = self.budget(pixels as u64);
-        self.send(format!("scan {} {budget}\n", tdata_of(background)).as_bytes(), &[])?;
+        self.send(format!("scan {} {budget} {} {}\n", tdata_of(background), phong as u8, config.len()).as_bytes(), &words)?;
         let f = self.expect("O")?;
         let [cycle, n] = f[..] else {
             return Err(format!("verilated chipset: bad scan-out reply {f:?}"));

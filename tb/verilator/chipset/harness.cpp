@@ -20,7 +20,9 @@
 // little-endian words):
 //   raster <n> <budget>\n   + n RC command words of 6 x u32 (190 bits): run the geometry phase
 //   setup <n> <budget>\n    + n colour-setup words of 10 x u32 (297 bits): run colour setup
-//   scan <tdata> <budget>\n  run the scan-out (background as video_tdata, clear behind on)
+//   scan <tdata> <budget> <phong> <n>\n + n Phong-constant writes of 6 x u32 (kind 0 = light, 1 =
+//                           material; address; slot; 96 data bits): write them one per cycle, then run
+//                           the scan-out (background as video_tdata, clear behind on, Phong if set)
 //   vcd_close\n             flush and close the VCD
 //   quit\n                  exit
 // Harness -> Rust on the protocol channel (the original stdout; the process's stdout is redirected to
@@ -55,6 +57,7 @@ namespace {
 constexpr int RC_WORDS = 6;      // 190-bit RC command
 constexpr int SETUP_WORDS = 10;  // 297-bit colour-setup command
 constexpr int TDBS_WORDS = 14;   // 424-bit TdbS record
+constexpr size_t CONFIG_WORDS = 6;  // one Phong-constant write
 constexpr uint64_t PROGRESS_EVERY = 1 << 16;
 using Record = std::array<uint32_t, TDBS_WORDS>;
 
@@ -112,7 +115,7 @@ class Bench {
     // One phase loop per command; each mirrors the same function of RtlChipset line by line.
     void rasterize(const std::vector<uint32_t>& words, uint64_t budget);
     void colour_setup(const std::vector<uint32_t>& words, uint64_t budget);
-    void scanout(uint32_t background, uint64_t budget);
+    void scanout(uint32_t background, uint64_t budget, bool phong, const std::vector<uint32_t>& config);
 
   private:
     const uint32_t width, height;
@@ -143,6 +146,8 @@ class Bench {
         top->setup_cmd__024valid = 0;
         top->scan_start = 0;
         top->video_tready = 1;
+        top->light_write_enable = 0;
+        top->material_write_enable = 0;
     }
 
     void low() {
@@ -284,17 +289,35 @@ void Bench::colour_setup(const std::vector<uint32_t>& words, uint64_t budget) {
     fflush(proto_out);
 }
 
-void Bench::scanout(uint32_t background, uint64_t budget) {
+void Bench::scanout(uint32_t background, uint64_t budget, bool phong, const std::vector<uint32_t>& config) {
     const size_t w = width, h = height;
     std::vector<uint32_t> tdata;
     tdata.reserve(w * h);
     const uint64_t start = cycle, limit = cycle + budget;
+    // Phong constants first, one write per cycle, while the CS is idle (as RtlChipset).
+    for (size_t i = 0; i + CONFIG_WORDS <= config.size(); i += CONFIG_WORDS) {
+        idle_inputs();
+        const uint32_t* c = &config[i];
+        if (c[0] == 0) {
+            top->light_write_enable = 1;
+            top->light_write_address = c[1];
+            for (int k = 0; k < 3; k++) top->light_write_data[k] = c[3 + k];
+        } else {
+            top->material_write_enable = 1;
+            top->material_write_address = c[1];
+            top->material_write_slot = c[2];
+            for (int k = 0; k < 3; k++) top->material_write_data[k] = c[3 + k];
+        }
+        low();
+        high();
+    }
     bool started = false;
     size_t pixels = 0;
     for (;;) {
         idle_inputs();
         top->scan_background = background;
         top->scan_clear_behind = 1;
+        top->scan_phong = phong;
         top->scan_start = !started;
         low();
         const bool start_taken = !started && !top->scan_busy;
@@ -367,8 +390,8 @@ int main(int argc, char** argv) {
     std::vector<uint32_t> words;
     while (fgets(line, sizeof line, stdin)) {
         char cmd[32] = {0};
-        unsigned long long a = 0, b = 0;
-        const int got = sscanf(line, "%31s %llu %llu", cmd, &a, &b);
+        unsigned long long a = 0, b = 0, c = 0, d = 0;
+        const int got = sscanf(line, "%31s %llu %llu %llu %llu", cmd, &a, &b, &c, &d);
         try {
             if (got == 3 && !strcmp(cmd, "raster")) {
                 if (!read_words(words, size_t(a) * RC_WORDS)) return 4;
@@ -376,8 +399,9 @@ int main(int argc, char** argv) {
             } else if (got == 3 && !strcmp(cmd, "setup")) {
                 if (!read_words(words, size_t(a) * SETUP_WORDS)) return 4;
                 bench.colour_setup(words, b);
-            } else if (got == 3 && !strcmp(cmd, "scan")) {
-                bench.scanout(uint32_t(a), b);
+            } else if (got == 5 && !strcmp(cmd, "scan")) {
+                if (!read_words(words, size_t(d) * CONFIG_WORDS)) return 4;
+                bench.scanout(uint32_t(a), b, c != 0, words);
             } else if (got == 1 && !strcmp(cmd, "vcd_close")) {
                 bench.close_vcd();
                 fprintf(proto_out, "V\n");
