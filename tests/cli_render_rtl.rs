@@ -64,6 +64,21 @@ fn rtl_backend_writes_the_golden_files_byte_for_byte_plus_cycles_verilog_and_vcd
 }
 
 #[test]
+fn phong_through_the_rtl_backend_writes_the_golden_files_byte_for_byte() {
+    let d = temp_dir("phong");
+    let (g, r) = (d.join("golden"), d.join("rtl"));
+    let common = ["render", "--scene", "teapot", "--grid", "3", "--shading", "phong", "--size", "64x40"];
+    let (ok, _, err) = run(&[&common[..], &["--out", g.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    let (ok, out, err) = run(&[&common[..], &["--backend", "rtl", "--out", r.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    assert!(out.contains("RTL frame equals the golden model's"), "{out}");
+    for f in ["frame.png", "index.bin", "index.png"] {
+        assert!(read(&g, f) == read(&r, f), "{f} differs between --backend golden and --backend rtl (Phong)");
+    }
+}
+
+#[test]
 fn bad_input_through_the_rtl_backend_gives_clean_errors_and_keeps_earlier_outputs() {
     let d = temp_dir("bad");
     let o = d.join("out");
@@ -78,7 +93,18 @@ fn bad_input_through_the_rtl_backend_gives_clean_errors_and_keeps_earlier_output
     assert_clean_error(&["render", "--obj", nan.to_str().unwrap(), "--backend", "rtl", "--out", os], "nan.obj:3");
     assert_clean_error(&["render", "--scene", "teapot", "--grid", "4", "--index-bits", "4", "--backend", "rtl", "--out", os], "4-bit triangle index");
     assert_clean_error(&["render", "--scene", "polyhedron", "--index-bits", "20", "--backend", "rtl", "--out", os], "16 bits");
-    assert_clean_error(&["render", "--scene", "polyhedron", "--shading", "phong", "--backend", "rtl", "--out", os], "phong");
+    // Phong through the RTL: 17 materials are one more than the CS's material memory holds.
+    let many = d.join("many.obj");
+    let mut mtl = String::new();
+    let mut obj = String::from("mtllib many.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n");
+    for i in 0..17 {
+        mtl.push_str(&format!("newmtl m{i}\nKd 0.{i:02} 0.5 0.5\n"));
+        obj.push_str(&format!("usemtl m{i}\nf 1//1 2//1 3//1\n"));
+    }
+    std::fs::write(d.join("many.mtl"), mtl).unwrap();
+    std::fs::write(&many, obj).unwrap();
+    assert_clean_error(&["render", "--obj", many.to_str().unwrap(), "--shading", "phong", "--backend", "rtl", "--out", os], "17 materials");
+    assert_clean_error(&["render", "--obj", many.to_str().unwrap(), "--shading", "phong", "--backend", "verilator", "--out", os], "at most 16");
     assert_clean_error(&["render", "--scene", "polyhedron", "--vcd", "--out", os], "--vcd needs --backend rtl");
     assert_clean_error(&["render", "--scene", "polyhedron", "--backend", "fpga", "--out", os], "fpga");
 

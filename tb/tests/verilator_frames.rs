@@ -88,15 +88,17 @@ fn every_builtin_scene_at_320x200_and_640x480_through_the_verilated_chipset_equa
         let screen = Screen::new(w, h).unwrap();
         let mut chip = VerilatorChipset::new(screen, None).unwrap();
         for name in builtin::SCENES {
-            let mesh = builtin::scene(name).unwrap();
-            let opts = RenderOptions::for_scene(&mesh, screen, Shading::Gouraud);
-            let golden = render(&mesh, &opts).unwrap();
-            match render_with(&mesh, &opts, &mut chip) {
-                Err(e) => failures.push(format!("{name} {w}x{h}: Verilator run failed: {e}")),
-                Ok(vl) => match first_difference(&golden, &vl) {
-                    Some(d) => failures.push(format!("{name} {w}x{h} (golden vs Verilator): {d}")),
-                    None => eprintln!("{name} {w}x{h}: equal to golden; {:?}", chip.phases),
-                },
+            for shading in [Shading::Gouraud, Shading::Phong] {
+                let mesh = builtin::scene(name).unwrap();
+                let opts = RenderOptions::for_scene(&mesh, screen, shading);
+                let golden = render(&mesh, &opts).unwrap();
+                match render_with(&mesh, &opts, &mut chip) {
+                    Err(e) => failures.push(format!("{name} {w}x{h} {shading:?}: Verilator run failed: {e}")),
+                    Ok(vl) => match first_difference(&golden, &vl) {
+                        Some(d) => failures.push(format!("{name} {w}x{h} {shading:?} (golden vs Verilator): {d}")),
+                        None => eprintln!("{name} {w}x{h} {shading:?}: equal to golden; {:?}", chip.phases),
+                    },
+                }
             }
         }
     }
@@ -110,19 +112,21 @@ fn polyhedron_cycles_per_phase_through_verilator_equal_the_rusthdl_simulations()
     }
     let screen = Screen::new(64, 48).unwrap();
     let mesh = builtin::polyhedron();
-    let opts = RenderOptions::for_scene(&mesh, screen, Shading::Gouraud);
-    let mut rtl = RtlChipset::new(screen, None).unwrap();
-    let a = render_with(&mesh, &opts, &mut rtl).unwrap();
-    let mut vl = VerilatorChipset::new(screen, None).unwrap();
-    let b = render_with(&mesh, &opts, &mut vl).unwrap();
-    if let Some(d) = first_difference(&a, &b) {
-        panic!("polyhedron 64x48: RustHDL vs Verilator: {d}");
+    for shading in [Shading::Gouraud, Shading::Phong] {
+        let opts = RenderOptions::for_scene(&mesh, screen, shading);
+        let mut rtl = RtlChipset::new(screen, None).unwrap();
+        let a = render_with(&mesh, &opts, &mut rtl).unwrap();
+        let mut vl = VerilatorChipset::new(screen, None).unwrap();
+        let b = render_with(&mesh, &opts, &mut vl).unwrap();
+        if let Some(d) = first_difference(&a, &b) {
+            panic!("polyhedron 64x48 {shading:?}: RustHDL vs Verilator: {d}");
+        }
+        assert_eq!(rtl.phases, vl.phases, "{shading:?} cycles per phase: RustHDL (left) vs Verilator (right)");
+        assert_eq!(rtl.cycle, vl.cycle, "cycles since reset");
+        let golden = render(&mesh, &opts).unwrap();
+        assert!(first_difference(&golden, &b).is_none(), "polyhedron 64x48 {shading:?} through Verilator differs from golden");
+        eprintln!("polyhedron 64x48 {shading:?}: {:?} in both simulations", vl.phases);
     }
-    assert_eq!(rtl.phases, vl.phases, "cycles per phase: RustHDL (left) vs Verilator (right)");
-    assert_eq!(rtl.cycle, vl.cycle, "cycles since reset");
-    let golden = render(&mesh, &opts).unwrap();
-    assert!(first_difference(&golden, &b).is_none(), "polyhedron 64x48 through Verilator differs from golden");
-    eprintln!("polyhedron 64x48: {:?} in both simulations", vl.phases);
 }
 
 #[test]
@@ -150,14 +154,15 @@ fn a_second_verilated_frame_uses_the_buffers_the_color_shader_cleared_behind_the
 }
 
 #[test]
-fn phong_and_an_unwritable_vcd_path_are_clear_errors_through_verilator() {
+fn lights_beyond_the_cs_and_an_unwritable_vcd_path_are_clear_errors_through_verilator() {
     if verilator_missing("Verilator bad input") {
         return;
     }
     let screen = Screen::new(64, 48).unwrap();
     let mut vl = VerilatorChipset::new(screen, None).unwrap();
-    let e = vl.scanout(Shading::Phong, &PhongLights { l: vec![], h: vec![], materials: vec![] }, [0, 0, 0]).err().expect("Phong must be refused");
-    assert!(e.contains("Phong"), "{e}");
+    let three = PhongLights { l: vec![[0, 0, 16384]; 3], h: vec![[0, 0, 16384]; 3], materials: vec![] };
+    let e = vl.scanout(Shading::Phong, &three, [0, 0, 0]).err().expect("three lights must be refused");
+    assert!(e.contains("3 lights") && e.contains("at most 2"), "{e}");
     // An unwritable VCD path is named.
     let e = VerilatorChipset::new(screen, Some("/nonexistent-dir/x.vcd".into())).err().expect("bad VCD path must fail");
     assert!(e.contains("/nonexistent-dir/x.vcd"), "{e}");
