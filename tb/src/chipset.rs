@@ -119,6 +119,14 @@ impl Block for Ports<'_> {
         u.scan_start.accept("scan_start", probe);
         u.scan_background.accept("scan_background", probe);
         u.scan_clear_behind.accept("scan_clear_behind", probe);
+        u.scan_phong.accept("scan_phong", probe);
+        u.light_write_enable.accept("light_write_enable", probe);
+        u.light_write_address.accept("light_write_address", probe);
+        u.light_write_data.accept("light_write_data", probe);
+        u.material_write_enable.accept("material_write_enable", probe);
+        u.material_write_address.accept("material_write_address", probe);
+        u.material_write_slot.accept("material_write_slot", probe);
+        u.material_write_data.accept("material_write_data", probe);
         u.scan_busy.accept("scan_busy", probe);
         u.video_tdata.accept("video_tdata", probe);
         u.video_tvalid.accept("video_tvalid", probe);
@@ -282,8 +290,8 @@ impl RtlChipset {
         u.setup_cmd.valid.next = false;
         u.scan_start.next = false;
         u.video_tready.next = true;
-        u.light_write_enable.next = false;
-        u.material_write_enable.next = false;
+        // Phong-constant writes: none, and payloads 0.
+        crate::cs::color_shader_bench::drive_config(&mut **u, None);
     }
 
     /// The buffers as the RC left them at the end of the last rasterization.

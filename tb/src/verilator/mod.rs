@@ -25,7 +25,7 @@
 //! the harness, the Verilator flags and `verilator --version` is unchanged (written in `hash` there).
 //!
 //! VCD: with a path, the harness is built with `--trace --trace-depth 1` (and [`PORTS_VLT`]) and dumps
-//! the 38 top-level ports only (scope `uut`, `$` in port names as in the Verilog: `rc_cmd$data`), at time 10*cycle with the clock
+//! the 46 top-level ports only (scope `uut`, `$` in port names as in the Verilog: `rc_cmd$data`), at time 10*cycle with the clock
 //! low and 10*cycle + 5 after the rising edge: the same instants as `RtlChipset`'s VCD of the same ports
 //! (whose scope is `uut` and whose streams are sub-scopes `rc_cmd` with `data`, `valid`, `ready`), for
 //! a `vcd-diff` of the two. [`VcdScope::Full`] builds without the depth limit (every signal).

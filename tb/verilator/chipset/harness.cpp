@@ -146,8 +146,13 @@ class Bench {
         top->setup_cmd__024valid = 0;
         top->scan_start = 0;
         top->video_tready = 1;
+        // Phong-constant writes: none, and payloads 0 (as RtlChipset drives them).
         top->light_write_enable = 0;
+        top->light_write_address = 0;
         top->material_write_enable = 0;
+        top->material_write_address = 0;
+        top->material_write_slot = 0;
+        for (int k = 0; k < 3; k++) top->light_write_data[k] = top->material_write_data[k] = 0;
     }
 
     void low() {
