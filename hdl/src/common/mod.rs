@@ -10,7 +10,7 @@ pub mod mul;
 pub mod stream;
 
 pub use fast_ram::FastRAM;
-pub use mul::{MulS, MulU, MulULut};
+pub use mul::{MulS, MulU};
 pub use stream::{StreamIn, StreamOut};
 
 use rust_hdl::prelude::*;

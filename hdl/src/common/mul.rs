@@ -48,40 +48,6 @@ impl<const A: usize, const B: usize, const P: usize> Logic for MulU<A, B, P> {
     }
 }
 
-/// Unsigned A x B -> P bits as shift-and-add logic (no DSP block): the same product as [`MulU`], but
-/// the Verilog is a sum of shifted partial products, which yosys builds from LUTs and carry chains
-/// instead of a `$mul` it would put on a multiplier block. For blocks that would otherwise take more
-/// multiplier blocks than the FPGA has (the CS's gloss squarers on the ECP5-45F).
-#[derive(LogicBlock, Default)]
-pub struct MulULut<const A: usize, const B: usize, const P: usize> {
-    pub a: Signal<In, Bits<A>>,
-    pub b: Signal<In, Bits<B>>,
-    pub p: Signal<Out, Bits<P>>,
-}
-
-impl<const A: usize, const B: usize, const P: usize> Logic for MulULut<A, B, P> {
-    fn update(&mut self) {
-        let prod = self.a.val().to_u128().wrapping_mul(self.b.val().to_u128());
-        self.p.next = bits_from_u128::<P>(prod);
-    }
-    fn connect(&mut self) {
-        self.p.connect();
-    }
-    fn hdl(&self) -> Verilog {
-        Verilog::Custom(format!(
-            "integer i;
-reg [{pm}:0] acc;
-always @(*) begin
-    acc = {P}'d0;
-    for (i = 0; i < {B}; i = i + 1)
-        if (b[i]) acc = acc + ({{{{({P}-{A}){{1'b0}}}}, a}} << i);
-    p = acc;
-end",
-            pm = P - 1
-        ))
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -49,7 +49,8 @@
 //! `video_tdata` follows the AXI4-Stream video convention for RGB (Xilinx UG934): R in 23:16, B in
 //! 15:8, G in 7:0; `background` uses the same packing.
 
-use crate::common::{signed_bit_cast_safe, FastRAM, MulS};
+use crate::common::{signed_bit_cast_safe, FastRAM};
+use crate::cs::plane_mul::PlaneMul;
 use crate::cs::light_unit::LightUnit;
 use crate::cs::normalizer::Normalizer;
 use crate::cs::video_fifo::VideoFifo;
@@ -127,12 +128,12 @@ pub struct ColorShader {
     lights: [LightUnit; CS_LIGHTS],
     gloss_ram: FastRAM<Bits<3>, CS_MATERIAL_BITS>,
     ambient_ram: FastRAM<MaterialWord, CS_MATERIAL_BITS>,
-    mul_ra: MulS<40, 11, 51>,
-    mul_rb: MulS<40, 11, 51>,
-    mul_ga: MulS<40, 11, 51>,
-    mul_gb: MulS<40, 11, 51>,
-    mul_ba: MulS<40, 11, 51>,
-    mul_bb: MulS<40, 11, 51>,
+    mul_ra: PlaneMul,
+    mul_rb: PlaneMul,
+    mul_ga: PlaneMul,
+    mul_gb: PlaneMul,
+    mul_ba: PlaneMul,
+    mul_bb: PlaneMul,
     // Frame control
     running: DFF<Bit>,
     size_err: DFF<Bit>,

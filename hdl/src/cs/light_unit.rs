@@ -20,10 +20,9 @@
 //!
 //! Formats: u, L, H in Q1.14; dot products rounded to Q1.14 and clamped to [0, 1] (so every square
 //! stays in [0, 1]); coefficients colour x 255 with 8 fraction bits (16 bits unsigned); `own` carries
-//! 14 + 8 fraction bits. The four squarers are shift-and-add logic ([`MulULut`]), not multiplier blocks:
-//! with them on DSPs the chipset needed 76 MULT18X18D, and the ECP5-45F has 72. The specular term is 0 where N.L <= 0, as in the golden model.
+//! 14 + 8 fraction bits. The specular term is 0 where N.L <= 0, as in the golden model.
 
-use crate::common::{signed_bit_cast_safe, FastRAM, MulS, MulU, MulULut};
+use crate::common::{signed_bit_cast_safe, FastRAM, MulS, MulU};
 use crate::cs::{LightVectors, MaterialWord, CS_MATERIAL_BITS};
 use rust_hdl::prelude::*;
 
@@ -73,10 +72,10 @@ pub struct LightUnit {
     m_hx: MulS<16, 16, 32>,
     m_hy: MulS<16, 16, 32>,
     m_hz: MulS<16, 16, 32>,
-    sq3: MulULut<15, 15, 30>,
-    sq4: MulULut<15, 15, 30>,
-    sq5: MulULut<15, 15, 30>,
-    sq6: MulULut<15, 15, 30>,
+    sq3: MulU<15, 15, 30>,
+    sq4: MulU<15, 15, 30>,
+    sq5: MulU<15, 15, 30>,
+    sq6: MulU<15, 15, 30>,
     m_dr: MulU<16, 15, 31>,
     m_dg: MulU<16, 15, 31>,
     m_db: MulU<16, 15, 31>,

@@ -25,6 +25,7 @@
 pub mod color_shader;
 pub mod light_unit;
 pub mod normalizer;
+pub mod plane_mul;
 pub mod colour_setup;
 pub mod video_fifo;
 

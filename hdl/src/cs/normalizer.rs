@@ -8,8 +8,8 @@
 //!  n_x, n_y, --->| N1  n_k^2 (3 products 16x16)                                    |
 //!  n_z (Q1.14,   | N2  len2 = sum (32 b)                                           |
 //!  16 b signed)  | N3  k = lz(len2)/2, m = len2 << 2k in [2^30, 2^32), zero flag   |
-//!                | N4  seed table address m[31:24] (seed_rom, 256 x 16 ROM)        |
-//!                | N5  t = round(y0^2 / 2^14)                                      |
+//!                | N4  seed table address m[31:24] (seed_rom, 256 x 34 ROM: y0, t) |
+//!                | N5  y0, t = round(y0^2 / 2^14) from the ROM                     |
 //!                | N6  p = (m >> 14) * t            (18 x 18)                      |
 //!                | N7  e = round((3*2^34 - p) / 2^18)                              |
 //!                | N8  y0 * e                       (16 x 18)                      |
@@ -25,7 +25,7 @@
 //! even left shift brings `|n|^2` into `[1, 4)` (as `m / 2^30`), where a 192-entry table (index
 //! `m[31:24]`) is good to 2^-8 and one Newton-Raphson step `y (3 - x y^2) / 2` to 1.9 units of 2^-16
 //! over every input (`golden::format::tests`); the shift comes back as a left shift by k of the product.
-//! All products fit 18x18 multipliers.
+//! All products fit 18x18 multipliers; `y0^2` is stored beside `y0` in the ROM.
 
 use crate::common::{signed_bit_cast_safe, MulS, MulU};
 use rust_hdl::prelude::*;
@@ -43,6 +43,13 @@ pub fn rsqrt_table_entry(i: u64) -> u64 {
     }
 }
 
+/// The ROM word at `i`: the seed `y0` in bits 15:0 and the Newton step's `t = round(y0^2 / 2^14)` in
+/// bits 33:16 (a function of the seed, so it is stored rather than computed: one multiplier block less).
+pub fn seed_rom_word(i: u64) -> u64 {
+    let y0 = rsqrt_table_entry(i);
+    y0 | (((y0 * y0 + (1 << 13)) >> 14) << 16)
+}
+
 #[derive(LogicBlock)]
 pub struct Normalizer {
     pub clock: Signal<In, Clock>,
@@ -57,11 +64,10 @@ pub struct Normalizer {
     pub u_y: Signal<Out, Signed<16>>,
     pub u_z: Signal<Out, Signed<16>>,
 
-    seed_rom: SyncROM<Bits<16>, 8>,
+    seed_rom: SyncROM<Bits<34>, 8>,
     sq_x: MulS<16, 16, 32>,
     sq_y: MulS<16, 16, 32>,
     sq_z: MulS<16, 16, 32>,
-    y0sq: MulU<16, 16, 32>,
     mul_p: MulU<18, 18, 36>,
     mul_y1: MulU<16, 18, 34>,
     q_x: MulS<16, 18, 34>,
@@ -111,7 +117,7 @@ pub struct Normalizer {
     k: Signal<Local, Bits<4>>,
     k5: Signal<Local, Bits<5>>,
     two_k: Signal<Local, Bits<5>>,
-    y0sq_r: Signal<Local, Bits<32>>,
+    rom_word: Signal<Local, Bits<34>>,
     e_full: Signal<Local, Bits<36>>,
     y1_full: Signal<Local, Bits<34>>,
     y1_s: Signal<Local, Signed<18>>,
@@ -133,7 +139,6 @@ pub struct Normalizer {
     k0_4: Constant<Bits<4>>,
     k0_32: Constant<Bits<32>>,
     k0_2: Constant<Bits<2>>,
-    khalf13_32: Constant<Bits<32>>,
     k_e_36: Constant<Bits<36>>,
     khalf16_34: Constant<Bits<34>>,
     khalf16_50: Constant<Bits<50>>,
@@ -155,11 +160,10 @@ impl Default for Normalizer {
             u_x: Default::default(),
             u_y: Default::default(),
             u_z: Default::default(),
-            seed_rom: (0..256u64).map(|i| Bits::<16>::from(rsqrt_table_entry(i))).into(),
+            seed_rom: (0..256u64).map(|i| Bits::<34>::from(seed_rom_word(i))).into(),
             sq_x: Default::default(),
             sq_y: Default::default(),
             sq_z: Default::default(),
-            y0sq: Default::default(),
             mul_p: Default::default(),
             mul_y1: Default::default(),
             q_x: Default::default(),
@@ -202,7 +206,7 @@ impl Default for Normalizer {
             k: Default::default(),
             k5: Default::default(),
             two_k: Default::default(),
-            y0sq_r: Default::default(),
+            rom_word: Default::default(),
             e_full: Default::default(),
             y1_full: Default::default(),
             y1_s: Default::default(),
@@ -224,7 +228,6 @@ impl Default for Normalizer {
             k0_4: Constant::new(0.into()),
             k0_32: Constant::new(0.into()),
             k0_2: Constant::new(0.into()),
-            khalf13_32: Constant::new((1u64 << 13).into()),
             k_e_36: Constant::new(((3u64 << 34) + (1u64 << 17)).into()),
             khalf16_34: Constant::new((1u64 << 16).into()),
             khalf16_50: Constant::new((1u64 << 16).into()),
@@ -310,12 +313,10 @@ impl Logic for Normalizer {
         self.seed_rom.address.next = self.m3.q.val().get_bits::<8>(24);
         self.m4.d.next = self.m3.q.val();
 
-        // N5: t = round(y0^2 / 2^14).
-        self.y0sq.a.next = self.seed_rom.data.val();
-        self.y0sq.b.next = self.seed_rom.data.val();
-        self.y0sq_r.next = self.y0sq.p.val() + self.khalf13_32.val();
-        self.t5.d.next = self.y0sq_r.val().get_bits::<18>(14);
-        self.y0_5.d.next = self.seed_rom.data.val();
+        // N5: y0 and t = round(y0^2 / 2^14) from the ROM.
+        self.rom_word.next = self.seed_rom.data.val();
+        self.t5.d.next = self.rom_word.val().get_bits::<18>(16);
+        self.y0_5.d.next = self.rom_word.val().get_bits::<16>(0);
         self.m5.d.next = self.m4.q.val();
 
         // N6: p = (m >> 14) * t = x y0^2 2^34.

@@ -262,6 +262,17 @@ fn cs_streams_one_pixel_per_clock_on_a_320x200_frame_in_gouraud_and_in_phong() {
 }
 
 #[test]
+fn the_normalizers_seed_rom_holds_the_golden_models_table_and_its_squares() {
+    // hdl computes its ROM itself (it does not depend on golden); this ties the two together.
+    for i in 0..256u64 {
+        let y0 = golden::format::rsqrt_seed(i as u32) as u64;
+        let word = hdl::cs::normalizer::seed_rom_word(i);
+        assert_eq!(word & 0xffff, y0, "seed {i}");
+        assert_eq!(word >> 16, (y0 * y0 + (1 << 13)) >> 14, "square of seed {i}");
+    }
+}
+
+#[test]
 fn cs_matches_its_cycle_model_every_cycle_in_phong_with_random_constants_records_and_back_pressure() {
     let seed = seed_for("cs_phong_random", 0x9409);
     let mut rng = Rng::new(seed);
