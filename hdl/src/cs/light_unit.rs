@@ -7,7 +7,8 @@
 //!  u_x,u_y,u_z ------>| L1 u.L, u.H: 6 products 16x16                             |
 //!  (cycle c, Q1.14)   | L2 nl = clamp(round(u.L/2^14), 0, 2^14); sp = nl>0 ? same  |
 //!  gloss_log2 (c+2) ->|    for u.H : 0                                             |
-//!                     | L3..L6 sp = round(sp^2/2^14) while stage < gloss_log2      |
+//!                     | L3..L6 gloss_square x 4: sp = round(sp^2/2^14) while the   |
+//!                     |    stage is below log2 of the gloss                        |
 //!  material (c+5) --->|  coefficient memory (2^MB words) read: Kd Il, Ks Il        |
 //!                     | L7 Kd Il * nl, Ks Il * sp: 6 products 16x15                |
 //!                     | L8 own = diffuse + specular per channel                    |
@@ -23,6 +24,7 @@
 //! 14 + 8 fraction bits. The specular term is 0 where N.L <= 0, as in the golden model.
 
 use crate::common::{signed_bit_cast_safe, FastRAM, MulS, MulU};
+use crate::cs::gloss_square::GlossSquare;
 use crate::cs::{LightVectors, MaterialWord, CS_MATERIAL_BITS};
 use rust_hdl::prelude::*;
 
@@ -72,10 +74,7 @@ pub struct LightUnit {
     m_hx: MulS<16, 16, 32>,
     m_hy: MulS<16, 16, 32>,
     m_hz: MulS<16, 16, 32>,
-    sq3: MulU<15, 15, 30>,
-    sq4: MulU<15, 15, 30>,
-    sq5: MulU<15, 15, 30>,
-    sq6: MulU<15, 15, 30>,
+    squares: [GlossSquare; 4],
     m_dr: MulU<16, 15, 31>,
     m_dg: MulU<16, 15, 31>,
     m_db: MulU<16, 15, 31>,
@@ -91,18 +90,7 @@ pub struct LightUnit {
     ph_z: DFF<Signed<32>>,
     // L2..L6
     nl2: DFF<Bits<15>>,
-    nl3: DFF<Bits<15>>,
-    nl4: DFF<Bits<15>>,
-    nl5: DFF<Bits<15>>,
-    nl6: DFF<Bits<15>>,
     sp2: DFF<Bits<15>>,
-    sp3: DFF<Bits<15>>,
-    sp4: DFF<Bits<15>>,
-    sp5: DFF<Bits<15>>,
-    sp6: DFF<Bits<15>>,
-    g3: DFF<Bits<3>>,
-    g4: DFF<Bits<3>>,
-    g5: DFF<Bits<3>>,
     // L7, L8
     pd_r: DFF<Bits<31>>,
     pd_g: DFF<Bits<31>>,
@@ -126,10 +114,6 @@ pub struct LightUnit {
     dh_mag: Signal<Local, Bits<19>>,
     nl: Signal<Local, Bits<15>>,
     nh: Signal<Local, Bits<15>>,
-    r3: Signal<Local, Bits<30>>,
-    r4: Signal<Local, Bits<30>>,
-    r5: Signal<Local, Bits<30>>,
-    r6: Signal<Local, Bits<30>>,
     wd_r: Signal<Local, Bits<32>>,
     wd_g: Signal<Local, Bits<32>>,
     wd_b: Signal<Local, Bits<32>>,
@@ -137,14 +121,10 @@ pub struct LightUnit {
     own34_g: Signal<Local, Bits<34>>,
     own34_b: Signal<Local, Bits<34>>,
     khalf_34: Constant<Signed<34>>,
-    khalf_30: Constant<Bits<30>>,
     kone_19: Constant<Bits<19>>,
     kone_15: Constant<Bits<15>>,
     k0_15: Constant<Bits<15>>,
-    k0_3: Constant<Bits<3>>,
-    k1_3: Constant<Bits<3>>,
-    k2_3: Constant<Bits<3>>,
-    k3_3: Constant<Bits<3>>,
+    kstage: [Constant<Bits<3>>; 4],
 }
 
 impl Default for LightUnit {
@@ -175,16 +155,13 @@ impl Default for LightUnit {
             m_hx: Default::default(),
             m_hy: Default::default(),
             m_hz: Default::default(),
-            sq3: Default::default(),
-            sq4: Default::default(),
-            sq5: Default::default(),
-            sq6: Default::default(),
             m_dr: Default::default(),
             m_dg: Default::default(),
             m_db: Default::default(),
             m_sr: Default::default(),
             m_sg: Default::default(),
             m_sb: Default::default(),
+            squares: Default::default(),
             pl_x: Default::default(),
             pl_y: Default::default(),
             pl_z: Default::default(),
@@ -192,18 +169,7 @@ impl Default for LightUnit {
             ph_y: Default::default(),
             ph_z: Default::default(),
             nl2: Default::default(),
-            nl3: Default::default(),
-            nl4: Default::default(),
-            nl5: Default::default(),
-            nl6: Default::default(),
             sp2: Default::default(),
-            sp3: Default::default(),
-            sp4: Default::default(),
-            sp5: Default::default(),
-            sp6: Default::default(),
-            g3: Default::default(),
-            g4: Default::default(),
-            g5: Default::default(),
             pd_r: Default::default(),
             pd_g: Default::default(),
             pd_b: Default::default(),
@@ -225,10 +191,6 @@ impl Default for LightUnit {
             dh_mag: Default::default(),
             nl: Default::default(),
             nh: Default::default(),
-            r3: Default::default(),
-            r4: Default::default(),
-            r5: Default::default(),
-            r6: Default::default(),
             wd_r: Default::default(),
             wd_g: Default::default(),
             wd_b: Default::default(),
@@ -236,14 +198,10 @@ impl Default for LightUnit {
             own34_g: Default::default(),
             own34_b: Default::default(),
             khalf_34: Constant::new(Signed::<34>::from(1i64 << 13)),
-            khalf_30: Constant::new((1u64 << 13).into()),
             kone_19: Constant::new((1u64 << 14).into()),
             kone_15: Constant::new((1u64 << 14).into()),
             k0_15: Constant::new(0.into()),
-            k0_3: Constant::new(0.into()),
-            k1_3: Constant::new(1.into()),
-            k2_3: Constant::new(2.into()),
-            k3_3: Constant::new(3.into()),
+            kstage: std::array::from_fn(|i| Constant::new((i as u64).into())),
         }
     }
 }
@@ -252,8 +210,7 @@ impl Logic for LightUnit {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, vectors, pl_x, pl_y, pl_z, ph_x, ph_y, ph_z, nl2, nl3, nl4, nl5, nl6, sp2, sp3, sp4, sp5, sp6,
-            g3, g4, g5, pd_r, pd_g, pd_b, ps_r, ps_g, ps_b, own_r, own_g, own_b
+            self, clock, vectors, pl_x, pl_y, pl_z, ph_x, ph_y, ph_z, nl2, sp2, pd_r, pd_g, pd_b, ps_r, ps_g, ps_b, own_r, own_g, own_b
         );
         self.coeff.read_clock.next = self.clock.val();
         self.coeff.write_clock.next = self.clock.val();
@@ -315,58 +272,32 @@ impl Logic for LightUnit {
 
         // L3..L6: the gloss (a power of two) by repeated squaring, one squaring per stage while the
         // stage is below log2 of the gloss.
-        self.sq3.a.next = self.sp2.q.val();
-        self.sq3.b.next = self.sp2.q.val();
-        self.r3.next = self.sq3.p.val() + self.khalf_30.val();
-        self.sp3.d.next = self.sp2.q.val();
-        if self.gloss_log2.val() > self.k0_3.val() {
-            self.sp3.d.next = self.r3.val().get_bits::<15>(14);
+        for i in 0..4 {
+            self.squares[i].clock.next = self.clock.val();
+            self.squares[i].stage.next = self.kstage[i].val();
         }
-        self.g3.d.next = self.gloss_log2.val();
-        self.nl3.d.next = self.nl2.q.val();
-
-        self.sq4.a.next = self.sp3.q.val();
-        self.sq4.b.next = self.sp3.q.val();
-        self.r4.next = self.sq4.p.val() + self.khalf_30.val();
-        self.sp4.d.next = self.sp3.q.val();
-        if self.g3.q.val() > self.k1_3.val() {
-            self.sp4.d.next = self.r4.val().get_bits::<15>(14);
+        self.squares[0].sp_in.next = self.sp2.q.val();
+        self.squares[0].nl_in.next = self.nl2.q.val();
+        self.squares[0].gloss_in.next = self.gloss_log2.val();
+        for i in 1..4 {
+            self.squares[i].sp_in.next = self.squares[i - 1].sp_out.val();
+            self.squares[i].nl_in.next = self.squares[i - 1].nl_out.val();
+            self.squares[i].gloss_in.next = self.squares[i - 1].gloss_out.val();
         }
-        self.g4.d.next = self.g3.q.val();
-        self.nl4.d.next = self.nl3.q.val();
-
-        self.sq5.a.next = self.sp4.q.val();
-        self.sq5.b.next = self.sp4.q.val();
-        self.r5.next = self.sq5.p.val() + self.khalf_30.val();
-        self.sp5.d.next = self.sp4.q.val();
-        if self.g4.q.val() > self.k2_3.val() {
-            self.sp5.d.next = self.r5.val().get_bits::<15>(14);
-        }
-        self.g5.d.next = self.g4.q.val();
-        self.nl5.d.next = self.nl4.q.val();
-
-        self.sq6.a.next = self.sp5.q.val();
-        self.sq6.b.next = self.sp5.q.val();
-        self.r6.next = self.sq6.p.val() + self.khalf_30.val();
-        self.sp6.d.next = self.sp5.q.val();
-        if self.g5.q.val() > self.k3_3.val() {
-            self.sp6.d.next = self.r6.val().get_bits::<15>(14);
-        }
-        self.nl6.d.next = self.nl5.q.val();
 
         // L7: the coefficients of the pixel's material (read in L6) times the terms.
         self.m_dr.a.next = self.coeff.read_data.val().w0;
-        self.m_dr.b.next = self.nl6.q.val();
+        self.m_dr.b.next = self.squares[3].nl_out.val();
         self.m_dg.a.next = self.coeff.read_data.val().w1;
-        self.m_dg.b.next = self.nl6.q.val();
+        self.m_dg.b.next = self.squares[3].nl_out.val();
         self.m_db.a.next = self.coeff.read_data.val().w2;
-        self.m_db.b.next = self.nl6.q.val();
+        self.m_db.b.next = self.squares[3].nl_out.val();
         self.m_sr.a.next = self.coeff.read_data.val().w3;
-        self.m_sr.b.next = self.sp6.q.val();
+        self.m_sr.b.next = self.squares[3].sp_out.val();
         self.m_sg.a.next = self.coeff.read_data.val().w4;
-        self.m_sg.b.next = self.sp6.q.val();
+        self.m_sg.b.next = self.squares[3].sp_out.val();
         self.m_sb.a.next = self.coeff.read_data.val().w5;
-        self.m_sb.b.next = self.sp6.q.val();
+        self.m_sb.b.next = self.squares[3].sp_out.val();
         self.pd_r.d.next = self.m_dr.p.val();
         self.pd_g.d.next = self.m_dg.p.val();
         self.pd_b.d.next = self.m_db.p.val();

@@ -23,6 +23,7 @@
 //! behind ports, because they do not fit FPGA block RAM; the testbenches model them.
 
 pub mod color_shader;
+pub mod gloss_square;
 pub mod light_unit;
 pub mod normalizer;
 pub mod plane_mul;

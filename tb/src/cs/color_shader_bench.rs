@@ -123,45 +123,35 @@ fn config_ports(c: Option<CsConfigWrite>) -> ((bool, u64, u128), (bool, u64, u64
     }
 }
 
-/// A block with the CS's Phong-constant write ports (the `cs` and `chipset` tops).
+/// The CS's Phong-constant write ports of a block (the `cs` and `chipset` tops name them alike).
+pub struct ConfigPortRefs<'a> {
+    pub light_enable: &'a mut Signal<In, Bit>,
+    pub light_address: &'a mut Signal<In, Bits<2>>,
+    pub light_data: &'a mut Signal<In, LightVectors>,
+    pub material_enable: &'a mut Signal<In, Bit>,
+    pub material_address: &'a mut Signal<In, Bits<{ hdl::cs::CS_MATERIAL_BITS }>>,
+    pub material_slot: &'a mut Signal<In, Bits<3>>,
+    pub material_data: &'a mut Signal<In, MaterialWord>,
+}
+
+/// A block with the CS's Phong-constant write ports.
 pub trait ConfigPorts {
-    #[allow(clippy::type_complexity)]
-    fn config_ports(
-        &mut self,
-    ) -> (
-        &mut Signal<In, Bit>,
-        &mut Signal<In, Bits<2>>,
-        &mut Signal<In, LightVectors>,
-        &mut Signal<In, Bit>,
-        &mut Signal<In, Bits<{ hdl::cs::CS_MATERIAL_BITS }>>,
-        &mut Signal<In, Bits<3>>,
-        &mut Signal<In, MaterialWord>,
-    );
+    fn config_ports(&mut self) -> ConfigPortRefs<'_>;
 }
 
 macro_rules! config_ports_of {
     ($t:ty) => {
         impl ConfigPorts for $t {
-            fn config_ports(
-                &mut self,
-            ) -> (
-                &mut Signal<In, Bit>,
-                &mut Signal<In, Bits<2>>,
-                &mut Signal<In, LightVectors>,
-                &mut Signal<In, Bit>,
-                &mut Signal<In, Bits<{ hdl::cs::CS_MATERIAL_BITS }>>,
-                &mut Signal<In, Bits<3>>,
-                &mut Signal<In, MaterialWord>,
-            ) {
-                (
-                    &mut self.light_write_enable,
-                    &mut self.light_write_address,
-                    &mut self.light_write_data,
-                    &mut self.material_write_enable,
-                    &mut self.material_write_address,
-                    &mut self.material_write_slot,
-                    &mut self.material_write_data,
-                )
+            fn config_ports(&mut self) -> ConfigPortRefs<'_> {
+                ConfigPortRefs {
+                    light_enable: &mut self.light_write_enable,
+                    light_address: &mut self.light_write_address,
+                    light_data: &mut self.light_write_data,
+                    material_enable: &mut self.material_write_enable,
+                    material_address: &mut self.material_write_address,
+                    material_slot: &mut self.material_write_slot,
+                    material_data: &mut self.material_write_data,
+                }
             }
         }
     };
@@ -173,14 +163,14 @@ config_ports_of!(hdl::chipset::Chipset);
 pub fn drive_config(u: &mut impl ConfigPorts, c: Option<CsConfigWrite>) {
     let ((le, la, ld), (me, ma, ms, md)) = config_ports(c);
     let f = |d: u128, k: usize| -> Bits<16> { (((d >> (16 * k)) & 0xffff) as u64).into() };
-    let (lwe, lwa, lwd, mwe, mwa, mws, mwd) = u.config_ports();
-    lwe.next = le;
-    lwa.next = la.into();
-    lwd.next = LightVectors { l_x: f(ld, 0), l_y: f(ld, 1), l_z: f(ld, 2), h_x: f(ld, 3), h_y: f(ld, 4), h_z: f(ld, 5) };
-    mwe.next = me;
-    mwa.next = ma.into();
-    mws.next = ms.into();
-    mwd.next = MaterialWord { w0: f(md, 0), w1: f(md, 1), w2: f(md, 2), w3: f(md, 3), w4: f(md, 4), w5: f(md, 5) };
+    let p = u.config_ports();
+    p.light_enable.next = le;
+    p.light_address.next = la.into();
+    p.light_data.next = LightVectors { l_x: f(ld, 0), l_y: f(ld, 1), l_z: f(ld, 2), h_x: f(ld, 3), h_y: f(ld, 4), h_z: f(ld, 5) };
+    p.material_enable.next = me;
+    p.material_address.next = ma.into();
+    p.material_slot.next = ms.into();
+    p.material_data.next = MaterialWord { w0: f(md, 0), w1: f(md, 1), w2: f(md, 2), w3: f(md, 3), w4: f(md, 4), w5: f(md, 5) };
 }
 
 fn in_vector(i: &CsInputs) -> BitVector {
