@@ -14,18 +14,18 @@
 //! | command | cycles after c0 | what happens |
 //! |---|---|---|
 //! | flat | c0+1 | write of `flat_setup(rgb)` (material 0, as the algorithmic model) |
-//! | shaded | c0+1, c0+2 | the two products of `det` (one shared multiplier, its product registered) |
-//! | | c0+3 | `det` = the difference of the registered products |
-//! | | c0+4 | canonical order (swap vertices 1, 2 if `det < 0`), `|det|` to the reciprocal |
-//! | | c0+5 ..= c0+30 | reciprocal: 25 restoring steps, result in c0+30; meanwhile the 12 products of the 6 plane numerators |
-//! | | c0+31 ..= c0+37 | A, B of R, G, B: `sat40(round(n * mant >> (s+4)))`, one product per cycle, each used the cycle after |
-//! | | c0+38 ..= c0+44 | C of R, G, B: two products each, C formed the cycle after the second |
-//! | | c0+45 | write of `colour_setup(...)` |
-//! | zero area (`det == 0`) | c0+5 ..= c0+11 | A = B = 0 and the C sequence, which gives constant planes at vertex 0's values |
-//! | | c0+12 | write (the algorithmic model has no such case: the RC never flags a zero-area triangle visible) |
+//! | shaded | c0+1, c0+2 | the operands of the two products of `det` (one shared multiplier, operands and product registered) |
+//! | | c0+3, c0+4 | the first product is kept; `det` = the difference of the two products |
+//! | | c0+5 | canonical order (swap vertices 1, 2 if `det < 0`), `|det|` to the reciprocal |
+//! | | c0+6 ..= c0+31 | reciprocal: 25 restoring steps, result in c0+31; meanwhile the 12 products of the 6 plane numerators |
+//! | | c0+32 ..= c0+39 | A, B of R, G, B: `sat40(round(n * mant >> (s+4)))`, one product per cycle, each used two cycles after |
+//! | | c0+40 ..= c0+47 | C of R, G, B: two products each, C formed two cycles after the second's operands |
+//! | | c0+48 | write of `colour_setup(...)` |
+//! | zero area (`det == 0`) | c0+6 ..= c0+13 | A = B = 0 and the C sequence, which gives constant planes at vertex 0's values |
+//! | | c0+14 | write (the algorithmic model has no such case: the RC never flags a zero-area triangle visible) |
 //!
 //! `cmd_ready` is high when the block is idle and in its write cycle, so back-to-back shaded commands
-//! take [`SHADED_CYCLES`] = 45 cycles each and flat ones 1 cycle each. `busy` is high from c0+1 up to
+//! take [`SHADED_CYCLES`] = 48 cycles each and flat ones 1 cycle each. `busy` is high from c0+1 up to
 //! and including the write cycle.
 
 use crate::format::{Plane, WinVertex};
@@ -33,11 +33,11 @@ use crate::render::SetupCommand;
 use crate::shade::{colour_setup, flat_setup, TdbsEntry};
 
 /// Cycles from taking a shaded command to its TdbS write (and between back-to-back shaded commands).
-pub const SHADED_CYCLES: u64 = 45;
+pub const SHADED_CYCLES: u64 = 48;
 /// Cycles from taking a flat command to its write.
 pub const FLAT_CYCLES: u64 = 1;
 /// Cycles from taking a zero-area command to its write.
-pub const ZERO_AREA_CYCLES: u64 = 12;
+pub const ZERO_AREA_CYCLES: u64 = 14;
 /// Width of the triangle index (TdbS address) on the block's ports.
 pub const SETUP_INDEX_BITS: u32 = 16;
 
@@ -286,12 +286,12 @@ mod tests {
     }
 
     #[test]
-    fn back_to_back_shaded_commands_take_forty_two_cycles_each() {
+    fn back_to_back_shaded_commands_take_shaded_cycles_each() {
         let mut cmd = SetupCmd { index: 3, x: [0, 160, 0], y: [0, 0, 160], ..Default::default() };
         cmd.values = [[255, 0, 0], [0, 255, 0], [0, 0, 255]];
         let cmds = vec![cmd; 10];
         let (_, cycles) = run_model(&cmds, 0);
-        // The last write happens in cycle 10*45; plus the cycle in which the model is seen idle.
+        // The last write happens in cycle 10*SHADED_CYCLES; plus the cycle in which the model is seen idle.
         assert_eq!(cycles, 10 * SHADED_CYCLES + 1);
         let flat = vec![SetupCmd { flat: true, index: 1, ..Default::default() }; 10];
         let (_, cycles) = run_model(&flat, 0);

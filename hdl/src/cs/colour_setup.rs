@@ -17,18 +17,22 @@
 //! ```
 //!
 //! Timing (c0 = the cycle a command is taken; `golden::cycle::colour_setup` is the reference):
-//! Det0 c0+1, Det1 c0+2, Det2 c0+3 (det = dx10*dy20 - dx20*dy10), Norm c0+4 (swap vertices 1, 2 if
-//! det < 0, |det| to the reciprocal), Div c0+5..=c0+30 (reciprocal; the 12 numerator products run
-//! meanwhile), PlaneAB c0+31..=c0+37, PlaneC c0+38..=c0+44, Write c0+45. Flat: Write at c0+1. Zero
-//! area: A = B = 0, then PlaneC c0+5..=c0+11, Write c0+12. `cmd.ready` is high in Idle and Write:
-//! back-to-back shaded triangles take 45 cycles each, flat ones 1. All payload outputs are 0 while
+//! Det0 c0+1, Det1 c0+2 (the two products' operands), Det2 c0+3 (first product), Det3 c0+4 (det =
+//! dx10*dy20 - dx20*dy10), Norm c0+5 (swap vertices 1, 2 if det < 0, |det| to the reciprocal), Div
+//! c0+6..=c0+31 (reciprocal; the 12 numerator products run meanwhile), PlaneAB c0+32..=c0+39, PlaneC
+//! c0+40..=c0+47, Write c0+48. Flat: Write at c0+1. Zero area: A = B = 0, then PlaneC c0+6..=c0+13,
+//! Write c0+14. `cmd.ready` is high in Idle and Write: back-to-back shaded triangles take 48 cycles
+//! each, flat ones 1. All payload outputs are 0 while
 //! their enable is low.
 //!
-//! Pipelining: the multiplier's product is registered (`prod`), and whoever uses it does so in the
-//! cycle after the operands were presented, told by a tag (`tag_v`, channel, phase, k) which product
-//! it holds. Without that register the operand mux, the 40x26 product, the 64-bit rounding shift and
-//! the saturation were one path of 42.6 ns on an ECP5 (23.5 MHz, the whole chipset's limit); the
-//! register costs 3 cycles per triangle (Det2, and one drain cycle each for A/B and C).
+//! Pipelining: the multiplier's operands and its product are registered (`opa_r`/`opb_r`, `prod`),
+//! and whoever uses a product does so two cycles after its operands were chosen, told by a tag
+//! (`tag_v`, channel, phase, k; `tag1_*` is the same tag one stage earlier) which product it holds.
+//! Without the product register the operand mux, the 40x26 product, the 64-bit rounding shift and the
+//! saturation were one path of 42.6 ns on an ECP5 (23.5 MHz, the whole chipset's limit); without the
+//! operand register the channel mux, the vertex difference and the product were 29.2 ns in the chipset
+//! with the Phong CS (34.3 MHz). Each register costs 3 cycles per triangle (a det cycle, and one drain
+//! cycle each for A/B and C): 48 instead of 42.
 //!
 //! Widths: coordinates and values are 16-bit, so every intermediate is bounded for ANY port input:
 //! |det| < 2^33, |numerator| < 2^33 (35-bit register), |n*mant| < 2^58, |A*(8-x0)| < 2^56 — the
@@ -45,6 +49,7 @@ pub enum SetupState {
     Det0,
     Det1,
     Det2,
+    Det3,
     Norm,
     Div,
     PlaneAB,
@@ -93,6 +98,15 @@ pub struct ColourSetup {
     /// presented in the cycle before (a pipeline stage between the multiplier and the shift,
     /// saturation and sums behind it, which were one 42 ns path).
     prod: DFF<Signed<64>>,
+    /// The multiplier's operands, registered: the operand multiplexers and the product are two
+    /// clock periods (a product is in `prod` two cycles after its operands were chosen).
+    opa_r: DFF<Signed<40>>,
+    opb_r: DFF<Signed<26>>,
+    /// The tag of the operands in `opa_r`/`opb_r` (it moves to `tag_*` with their product).
+    tag1_v: DFF<Bit>,
+    tag1_ch: DFF<Bits<2>>,
+    tag1_ph: DFF<Bits<2>>,
+    tag1_k: DFF<Bits<3>>,
     /// `prod` holds a product of the numerator, A/B or C sequence, and which one: (channel, phase) or k.
     tag_v: DFF<Bit>,
     tag_ch: DFF<Bits<2>>,
@@ -177,6 +191,7 @@ pub struct ColourSetup {
     k4_3: Constant<Bits<3>>,
     k5_3: Constant<Bits<3>>,
     k6_3: Constant<Bits<3>>,
+    k7_3: Constant<Bits<3>>,
     k3_7: Constant<Bits<7>>,
     k4_7: Constant<Bits<7>>,
     k16_7: Constant<Bits<7>>,
@@ -223,6 +238,12 @@ impl Default for ColourSetup {
             v2g: Default::default(),
             v2b: Default::default(),
             prod: Default::default(),
+            opa_r: Default::default(),
+            opb_r: Default::default(),
+            tag1_v: Default::default(),
+            tag1_ch: Default::default(),
+            tag1_ph: Default::default(),
+            tag1_k: Default::default(),
             tag_v: Default::default(),
             tag_ch: Default::default(),
             tag_ph: Default::default(),
@@ -301,6 +322,7 @@ impl Default for ColourSetup {
             k4_3: Constant::new(4.into()),
             k5_3: Constant::new(5.into()),
             k6_3: Constant::new(6.into()),
+            k7_3: Constant::new(7.into()),
             k3_7: Constant::new(3.into()),
             k4_7: Constant::new(4.into()),
             k16_7: Constant::new(16.into()),
@@ -324,7 +346,7 @@ impl Logic for ColourSetup {
     fn update(&mut self) {
         dff_setup!(
             self, clock, state, index, material, x0, y0, x1, y1, x2, y2, v0r, v0g, v0b, v1r, v1g, v1b, v2r, v2g, v2b,
-            prod, tag_v, tag_ch, tag_ph, tag_k, issued, acc, det, ch, ph, k, n_done, na_r, nb_r, na_g, nb_g, na_b, nb_b, mant, shift, plane_r_a, plane_r_b,
+            prod, opa_r, opb_r, tag1_v, tag1_ch, tag1_ph, tag1_k, tag_v, tag_ch, tag_ph, tag_k, issued, acc, det, ch, ph, k, n_done, na_r, nb_r, na_g, nb_g, na_b, nb_b, mant, shift, plane_r_a, plane_r_b,
             plane_r_c, plane_g_a, plane_g_b, plane_g_c, plane_b_a, plane_b_b, plane_b_c
         );
         clock!(self, clock, recip);
@@ -367,7 +389,11 @@ impl Logic for ColourSetup {
         self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dx10.val());
         self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy20.val());
         self.prod.d.next = self.mul.p.val();
-        self.tag_v.d.next = false;
+        self.tag1_v.d.next = false;
+        self.tag_v.d.next = self.tag1_v.q.val();
+        self.tag_ch.d.next = self.tag1_ch.q.val();
+        self.tag_ph.d.next = self.tag1_ph.q.val();
+        self.tag_k.d.next = self.tag1_k.q.val();
         self.diff.next = self.acc.q.val() - self.prod.q.val();
 
         // A or B = sat40(round(n * mant / 2^(s+4))): add half, arithmetic shift (on Bits, through the
@@ -467,10 +493,13 @@ impl Logic for ColourSetup {
             SetupState::Det1 => {
                 self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dx20.val());
                 self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy10.val());
-                self.acc.d.next = self.prod.q.val();
                 self.state.d.next = SetupState::Det2;
             }
             SetupState::Det2 => {
+                self.acc.d.next = self.prod.q.val();
+                self.state.d.next = SetupState::Det3;
+            }
+            SetupState::Det3 => {
                 self.det.d.next = signed_bit_cast_safe::<36, 64>(self.diff.val());
                 self.state.d.next = SetupState::Norm;
             }
@@ -512,9 +541,9 @@ impl Logic for ColourSetup {
                 // The six numerators, four products per channel, issued one per cycle and consumed from
                 // `prod` in the next: na = dv10*dy20 - dv20*dy10, nb = dv20*dx10 - dv10*dx20.
                 if !self.issued.q.val() {
-                    self.tag_v.d.next = true;
-                    self.tag_ch.d.next = self.ch.q.val();
-                    self.tag_ph.d.next = self.ph.q.val();
+                    self.tag1_v.d.next = true;
+                    self.tag1_ch.d.next = self.ch.q.val();
+                    self.tag1_ph.d.next = self.ph.q.val();
                     if self.ph.q.val() == self.k0_2.val() {
                         self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dv10.val());
                         self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy20.val());
@@ -574,13 +603,13 @@ impl Logic for ColourSetup {
                 }
             }
             SetupState::PlaneAB => {
-                // k = 0..5 issues n_k * mant; the cycle after, its rounded, shifted, saturated value is
-                // written (k = 6 only writes the last one).
-                if self.k.q.val() != self.k6_3.val() {
+                // k = 0..5 issues n_k * mant; two cycles after, its rounded, shifted, saturated value is
+                // written (k = 6 and 7 only drain the last two).
+                if self.k.q.val() < self.k6_3.val() {
                     self.op_a.next = signed_bit_cast_safe::<40, 35>(self.n_sel.val());
                     self.op_b.next = self.mant26.val();
-                    self.tag_v.d.next = true;
-                    self.tag_k.d.next = self.k.q.val();
+                    self.tag1_v.d.next = true;
+                    self.tag1_k.d.next = self.k.q.val();
                 }
                 if self.tag_v.q.val() {
                     if self.tag_k.q.val() == self.k0_3.val() {
@@ -602,7 +631,7 @@ impl Logic for ColourSetup {
                         self.plane_b_b.d.next = self.ab40.val();
                     }
                 }
-                if self.k.q.val() == self.k6_3.val() {
+                if self.k.q.val() == self.k7_3.val() {
                     self.ch.d.next = self.k0_2.val();
                     self.ph.d.next = self.k0_2.val();
                     self.issued.d.next = false;
@@ -613,9 +642,9 @@ impl Logic for ColourSetup {
             SetupState::PlaneC => {
                 // Per channel: A*(8-x0), then B*(8-y0); C is formed the cycle after the second product.
                 if !self.issued.q.val() {
-                    self.tag_v.d.next = true;
-                    self.tag_ch.d.next = self.ch.q.val();
-                    self.tag_ph.d.next = self.ph.q.val();
+                    self.tag1_v.d.next = true;
+                    self.tag1_ch.d.next = self.ch.q.val();
+                    self.tag1_ph.d.next = self.ph.q.val();
                     if self.ph.q.val() == self.k0_2.val() {
                         self.op_a.next = signed_cast(self.ca.val());
                         self.op_b.next = signed_bit_cast_safe::<26, 17>(self.ox.val());
@@ -671,8 +700,10 @@ impl Logic for ColourSetup {
         // Each multiplier and reciprocal input is driven exactly once per evaluation of this block: with a default
         // followed by an override, an event-driven simulator (Icarus) re-evaluates the product on the
         // intermediate value, re-runs this block, and never settles.
-        self.mul.a.next = self.op_a.val();
-        self.mul.b.next = self.op_b.val();
+        self.opa_r.d.next = self.op_a.val();
+        self.opb_r.d.next = self.op_b.val();
+        self.mul.a.next = self.opa_r.q.val();
+        self.mul.b.next = self.opb_r.q.val();
         self.recip.request.valid.next = self.req_valid.val();
         self.recip.result.ready.next = self.res_ready.val();
 
