@@ -14,9 +14,11 @@
 //!
 //! Schedule of a triangle accepted in cycle t (one state per cycle unless said otherwise):
 //! * t+1 `Det`: det = dx10*dy20 - dx20*dy10 (two 17x17 products on the dot-difference unit).
+//! * t+1 `Det` also finds the clamped bounding box `[(min+7)>>4, (max-8)>>4]` (it does not depend on
+//!   the vertex order) and registers it.
 //! * t+2 `Order`: zero area / cull decision from det's sign, the cull mode and the front face; swap
-//!   vertices 1 and 2 if det < 0 (canonical order); the clamped bounding box
-//!   `[(min+7)>>4, (max-8)>>4]`; start the reciprocal of |det|. Culled or empty box: go to `Out`.
+//!   vertices 1 and 2 if det < 0 (canonical order); start the reciprocal of |det|. Culled or empty
+//!   box: go to `Out`.
 //! * t+3..t+7 `Edges` 0..4 (during the division): edge k's value at the box's first pixel
 //!   `E = dx*(16*Y0+8-a.y) - dy*(16*X0+8-a.x) - bias` and its steps (-16*dy, 16*dx); then the depth
 //!   numerators na = dz10*dy20 - dz20*dy10 and nb = dz20*dx10 - dz10*dx20; the start address
@@ -107,6 +109,12 @@ pub struct Setup {
     state: DFF<SetupState>,
     phase: DFF<Bits<3>>,
     kind: DFF<Bits<2>>,
+    /// The clamped bounding box and whether it is empty, found in `Det` (order-independent).
+    nbx0: DFF<Bits<10>>,
+    nbx1: DFF<Bits<10>>,
+    nby0: DFF<Bits<10>>,
+    nby1: DFF<Bits<10>>,
+    nbox_empty: DFF<Bit>,
     clear: DFF<Bit>,
     index: DFF<Bits<16>>,
     cull: DFF<Bits<2>>,
@@ -298,6 +306,11 @@ impl Setup {
             state: Default::default(),
             phase: Default::default(),
             kind: Default::default(),
+            nbx0: Default::default(),
+            nbx1: Default::default(),
+            nby0: Default::default(),
+            nby1: Default::default(),
+            nbox_empty: Default::default(),
             clear: Default::default(),
             index: Default::default(),
             cull: Default::default(),
@@ -452,7 +465,7 @@ impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, phase, kind, clear, index, cull, front_cw, vx0, vy0, vz0, vx1, vy1, vz1, vx2, vy2, vz2, det,
+            self, clock, state, phase, kind, nbx0, nbx1, nby0, nby1, nbox_empty, clear, index, cull, front_cw, vx0, vy0, vz0, vx1, vy1, vz1, vx2, vy2, vz2, det,
             culled, zero_area, bx0, bx1, by0, by1, addr, e0, e1, e2, sx0, sx1, sx2, sy0, sy1, sy2, na, nb, mant, shamt,
             prod, grad_a, grad_b, acc, raw
         );
@@ -559,7 +572,9 @@ impl Logic for Setup {
         self.box_y0.next = self.k0_13.val();
         self.box_y1.next = self.k0_13.val();
         self.box_empty.next = false;
-        if self.state.q.val() == SetupState::Order {
+        // The bounding box does not depend on the vertex order: it is found in `Det`, beside det, and
+        // registered, so that `Order`'s reciprocal request does not wait for min/max, round and clamp.
+        if self.state.q.val() == SetupState::Det {
             // Signed compares are slow in simulation: only evaluated where needed.
             if self.vx1.q.val() < self.vx0.q.val() {
                 self.xmin.next = self.vx1.q.val();
@@ -597,7 +612,7 @@ impl Logic for Setup {
         self.hi_y_u.next = unsigned_cast(self.hi_y.val());
         self.box_x1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_x_u.val().get_bits::<13>(4)));
         self.box_y1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_y_u.val().get_bits::<13>(4)));
-        if self.state.q.val() == SetupState::Order {
+        if self.state.q.val() == SetupState::Det {
             // >> 4 (arithmetic), then clamp to the screen.
             self.box_x0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_x_u.val().get_bits::<13>(4)));
             self.box_x1.next = self.box_x1_raw.val();
@@ -697,7 +712,7 @@ impl Logic for Setup {
         self.recip.request.data.next = self.det_abs.val();
         self.recip.result.ready.next = self.state.q.val() == SetupState::WaitRecip;
         // Started in Order exactly when the triangle is drawn (not culled, box not empty).
-        self.recip.request.valid.next = (self.state.q.val() == SetupState::Order) & !self.culled_now.val() & !self.box_empty.val();
+        self.recip.request.valid.next = (self.state.q.val() == SetupState::Order) & !self.culled_now.val() & !self.nbox_empty.q.val();
 
         // Ports.
         self.cmd.ready.next = self.state.q.val() == SetupState::Idle;
@@ -759,6 +774,11 @@ impl Logic for Setup {
             }
             SetupState::Det => {
                 self.det.d.next = signed_bit_cast_safe::<36, 44>(self.dot.val());
+                self.nbx0.d.next = self.box_x0_u.val().get_bits::<10>(0);
+                self.nbx1.d.next = self.box_x1_u.val().get_bits::<10>(0);
+                self.nby0.d.next = self.box_y0_u.val().get_bits::<10>(0);
+                self.nby1.d.next = self.box_y1_u.val().get_bits::<10>(0);
+                self.nbox_empty.d.next = self.box_empty.val();
                 self.state.d.next = SetupState::Order;
             }
             SetupState::Order => {
@@ -775,11 +795,11 @@ impl Logic for Setup {
                         self.vy2.d.next = self.vy1.q.val();
                         self.vz2.d.next = self.vz1.q.val();
                     }
-                    self.bx0.d.next = self.box_x0_u.val().get_bits::<10>(0);
-                    self.bx1.d.next = self.box_x1_u.val().get_bits::<10>(0);
-                    self.by0.d.next = self.box_y0_u.val().get_bits::<10>(0);
-                    self.by1.d.next = self.box_y1_u.val().get_bits::<10>(0);
-                    if !self.box_empty.val() {
+                    self.bx0.d.next = self.nbx0.q.val();
+                    self.bx1.d.next = self.nbx1.q.val();
+                    self.by0.d.next = self.nby0.q.val();
+                    self.by1.d.next = self.nby1.q.val();
+                    if !self.nbox_empty.q.val() {
                         self.kind.d.next = self.rec_walk.val();
                         self.state.d.next = SetupState::Edges;
                     }
