@@ -1,5 +1,5 @@
 //! Measures the chipset's figures for the README: `cargo run --release -p tb --bin chipset_figures`.
-//! Every built-in scene at 320x200, Gouraud, through the RustHDL simulation of the `chipset` top (each
+//! Every built-in scene at 320x200, Gouraud and Phong, through the RustHDL simulation of the `chipset` top (each
 //! frame checked against the golden model): cycles per phase for the first frame after reset (which
 //! clears the buffers) and for a second frame of the same scene (buffers cleared behind the first
 //! scan-out), CS pixels per clock, RC fragments per clock, colour-setup cycles per triangle; and the
@@ -22,14 +22,14 @@ fn main() {
 fn run() -> Result<(), String> {
     let screen = Screen::new(320, 200)?;
     let mut cycles = String::from(
-        "| scene | frame | clear | geometry transfer | rasterization | colour setup | scan-out | total | fragments/clk in rasterization | setup cycles/visible triangle | CS px/clk | sim s | cycles/s |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| scene | shading | frame | clear | geometry transfer | rasterization | colour setup | scan-out | total | fragments/clk in rasterization | setup cycles/visible triangle | CS px/clk | sim s | cycles/s |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let mut host = String::from(
-        "| scene | (a) in | (b) after culling | flagged visible | (c) in image | vertex lightings deferred / Type I / Type II | host cost, deferred | Type I | Type II | saved vs Type I | saved vs Type II |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| scene | shading | (a) in | (b) after culling | flagged visible | (c) in image | vertex lightings deferred / Type I / Type II | host cost, deferred | Type I | Type II | saved vs Type I | saved vs Type II |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
-    for name in builtin::SCENES {
+    for (shading, name) in [Shading::Gouraud, Shading::Phong].into_iter().flat_map(|s| builtin::SCENES.iter().map(move |n| (s, *n))) {
         let mesh = builtin::scene(name)?;
-        let opts = RenderOptions::for_scene(&mesh, screen, Shading::Gouraud);
+        let opts = RenderOptions::for_scene(&mesh, screen, shading);
         let golden = render(&mesh, &opts)?;
         let mut chip = RtlChipset::new(screen, None)?;
         for frame in [1, 2] {
@@ -41,7 +41,7 @@ fn run() -> Result<(), String> {
             let p = chip.phases.clone();
             let s = &rtl.stats;
             cycles += &format!(
-                "| {name} | {frame} | {} | {} | {} | {} | {} | {} | {:.3} | {:.1} | {:.4} | {:.1} | {:.0} |\n",
+                "| {name} | {shading:?} | {frame} | {} | {} | {} | {} | {} | {} | {:.3} | {:.1} | {:.4} | {:.1} | {:.0} |\n",
                 p.clear,
                 p.geometry_transfer,
                 p.rasterization,
@@ -54,12 +54,12 @@ fn run() -> Result<(), String> {
                 secs,
                 p.total as f64 / secs
             );
-            eprintln!("{name} frame {frame}: {p:?} ({secs:.1} s)");
+            eprintln!("{name} {shading:?} frame {frame}: {p:?} ({secs:.1} s)");
         }
         let s = &golden.stats;
         let (d, t1, t2) = (s.host_ops.cost(), s.host_type_i.ops().cost(), s.host_type_ii.ops().cost());
         host += &format!(
-            "| {name} | {} | {} | {} | {} | {} / {} / {} | {d} | {t1} | {t2} | {:.1}% | {:.1}% |\n",
+            "| {name} | {shading:?} | {} | {} | {} | {} | {} / {} / {} | {d} | {t1} | {t2} | {:.1}% | {:.1}% |\n",
             s.triangles_in,
             s.after_culling,
             s.flagged_visible,
