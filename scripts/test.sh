@@ -16,6 +16,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}"
 fi
 
+# A missing tool fails its test here: never the opt-out of scripts/test-allow-missing.sh.
+unset IDXRENDER_ALLOW_MISSING_TOOLS
+
 # rust-hdl's yosys helpers and our tool runs write scratch files under TMPDIR.
 mkdir -p target/tmp
 export TMPDIR="$PWD/target/tmp"

@@ -21,11 +21,7 @@ fn temp_dir(name: &str) -> PathBuf {
 }
 
 fn verilator_missing(test: &str) -> bool {
-    let ok = Command::new("sh").arg("-c").arg("command -v verilator").output().map(|o| o.status.success()).unwrap_or(false);
-    if !ok {
-        eprintln!("SKIPPED {test}: verilator is not installed (scripts/test.sh installs it)");
-    }
-    !ok
+    !tb::common::require_tools(test, &["verilator"])
 }
 
 fn write(path: &Path, text: &str) -> String {

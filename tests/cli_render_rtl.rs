@@ -138,8 +138,7 @@ fn degenerate_and_off_screen_triangles_go_through_the_rtl_like_the_golden_model(
 /// the generated Verilog's files equal the golden backend's byte for byte.
 #[test]
 fn verilator_backend_writes_the_golden_files_byte_for_byte_at_640x480() {
-    if Command::new("verilator").arg("--version").output().is_err() {
-        eprintln!("SKIPPED: verilator is not installed (scripts/test.sh installs it)");
+    if !tb::common::require_tools("verilator_backend_writes_the_golden_files_byte_for_byte_at_640x480", &["verilator"]) {
         return;
     }
     let d = temp_dir("verilator");

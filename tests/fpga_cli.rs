@@ -3,10 +3,7 @@
 
 use std::path::PathBuf;
 use std::process::Command;
-
-fn have(tool: &str) -> bool {
-    Command::new("sh").arg("-c").arg(format!("command -v {tool}")).output().map(|o| o.status.success()).unwrap_or(false)
-}
+use tb::common::require_tools;
 
 fn scratch(name: &str) -> PathBuf {
     let d = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target").join("test-cli").join(name);
@@ -22,8 +19,7 @@ fn smallest_top() -> &'static str {
 
 #[test]
 fn fpga_report_on_the_smallest_top_gives_cell_counts_and_an_fmax_or_a_reason() {
-    if !have("yosys") || !have("nextpnr-ice40") {
-        eprintln!("SKIPPED: yosys or nextpnr-ice40 is not installed (scripts/test.sh installs them)");
+    if !require_tools("fpga_report_on_the_smallest_top_gives_cell_counts_and_an_fmax_or_a_reason", &["yosys", "nextpnr-ice40"]) {
         return;
     }
     let top = smallest_top();

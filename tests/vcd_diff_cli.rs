@@ -7,14 +7,11 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use tb::common::require_tools;
 use std::sync::OnceLock;
 use tb::rc::bench::{run_rtl, Drive};
 use tb::rc::replay::{replay_dumping, Simulator, VectorWriter};
 use tb::rc::stimulus::{hand_made, hand_made_screen};
-
-fn have(tool: &str) -> bool {
-    Command::new("sh").arg("-c").arg(format!("command -v {tool}")).output().map(|o| o.status.success()).unwrap_or(false)
-}
 
 fn dir() -> PathBuf {
     let d = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target").join("test-cli").join("vcd_diff");
@@ -59,8 +56,7 @@ const RC_PORTS: &[&str] = &[
 
 #[test]
 fn rusthdl_and_icarus_traces_of_rc_compare_equal_on_every_port() {
-    if !have("iverilog") {
-        eprintln!("SKIPPED: iverilog is not installed (scripts/test.sh installs it)");
+    if !require_tools("rusthdl_and_icarus_traces_of_rc_compare_equal_on_every_port", &["iverilog"]) {
         return;
     }
     let (rusthdl, icarus, cycles) = traces();
@@ -112,8 +108,7 @@ fn code_of(text: &str, name: &str) -> String {
 
 #[test]
 fn a_trace_with_one_value_changed_is_reported_at_that_cycle_and_signal() {
-    if !have("iverilog") {
-        eprintln!("SKIPPED: iverilog is not installed (scripts/test.sh installs it)");
+    if !require_tools("a_trace_with_one_value_changed_is_reported_at_that_cycle_and_signal", &["iverilog"]) {
         return;
     }
     let (rusthdl, icarus, _) = traces();

@@ -4,6 +4,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use tb::common::require_tools;
 
 fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_idxrender"))
@@ -14,10 +15,6 @@ fn scratch(name: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
-}
-
-fn have(tool: &str) -> bool {
-    Command::new("sh").arg("-c").arg(format!("command -v {tool}")).output().map(|o| o.status.success()).unwrap_or(false)
 }
 
 /// Verilator warnings waived, each for a reason in rust-hdl 0.46's code generator (the same list as
@@ -105,8 +102,7 @@ fn verilog_readme_documents_every_port_of_every_top() {
 
 #[test]
 fn verilog_of_every_top_passes_verilator_lint_all_with_named_waivers() {
-    if !have("verilator") {
-        eprintln!("SKIPPED: verilator is not installed (scripts/test.sh installs it)");
+    if !require_tools("verilog_of_every_top_passes_verilator_lint_all_with_named_waivers", &["verilator"]) {
         return;
     }
     let dir = scratch("verilog_lint");

@@ -114,3 +114,68 @@ impl Rng {
 pub fn have_tool(name: &str) -> bool {
     std::process::Command::new("sh").arg("-c").arg(format!("command -v {name}")).output().map(|o| o.status.success()).unwrap_or(false)
 }
+
+/// The environment variable that turns a missing tool from a test failure into a recorded skip
+/// (`IDXRENDER_ALLOW_MISSING_TOOLS=1`; `scripts/test-allow-missing.sh` sets it and lists the skips at the
+/// end; `scripts/test.sh` and `.ci/run` clear it). See docs/verification.md.
+pub const ALLOW_MISSING_TOOLS: &str = "IDXRENDER_ALLOW_MISSING_TOOLS";
+
+/// Where skipped tests are recorded, one line each: `target/skipped-tests.txt`.
+pub fn skipped_tests_file() -> PathBuf {
+    workspace_target().join("skipped-tests.txt")
+}
+
+/// The one rule for tests that need external tools: true when every tool in `tools` is on PATH. A
+/// missing tool fails the test (a panic naming the tool and how to install it) unless
+/// [`ALLOW_MISSING_TOOLS`] is `1`; then the test is recorded in [`skipped_tests_file`] and this returns
+/// false, and the caller returns at once.
+pub fn require_tools(test: &str, tools: &[&str]) -> bool {
+    let allow = std::env::var(ALLOW_MISSING_TOOLS).as_deref() == Ok("1");
+    require_tools_with(test, tools, allow, &skipped_tests_file())
+}
+
+/// [`require_tools`] with the opt-out and the record file given (what its tests drive).
+pub fn require_tools_with(test: &str, tools: &[&str], allow_missing: bool, record: &std::path::Path) -> bool {
+    let missing: Vec<&str> = tools.iter().copied().filter(|t| !have_tool(t)).collect();
+    if missing.is_empty() {
+        return true;
+    }
+    let install = format!("apt-get install {} (or run `bash scripts/test.sh`, which installs them)", missing.join(" "));
+    if !allow_missing {
+        panic!("{test}: {} not on PATH: {install}; {ALLOW_MISSING_TOOLS}=1 turns this into a recorded skip", missing.join(", "));
+    }
+    let line = format!("{test}: missing {}\n", missing.join(", "));
+    let _ = std::fs::create_dir_all(record.parent().unwrap_or(std::path::Path::new(".")));
+    use std::io::Write;
+    if let Ok(mut f) = std::fs::OpenOptions::new().create(true).append(true).open(record) {
+        let _ = f.write_all(line.as_bytes());
+    }
+    eprintln!("SKIPPED {line}");
+    false
+}
+
+#[cfg(test)]
+mod tool_tests {
+    use super::*;
+
+    const NO_SUCH_TOOL: &str = "idxrender-no-such-tool";
+
+    #[test]
+    fn a_missing_tool_fails_the_test_naming_the_tool_and_how_to_install_it() {
+        let record = workspace_target().join("tmp").join("skips-fail.txt");
+        let e = std::panic::catch_unwind(|| require_tools_with("t", &["sh", NO_SUCH_TOOL], false, &record)).unwrap_err();
+        let msg = e.downcast_ref::<String>().cloned().unwrap_or_default();
+        assert!(msg.contains(NO_SUCH_TOOL) && msg.contains("apt-get install") && msg.contains(ALLOW_MISSING_TOOLS), "{msg}");
+        assert!(!record.exists() || !std::fs::read_to_string(&record).unwrap().contains("t: missing"));
+    }
+
+    #[test]
+    fn with_the_opt_out_a_missing_tool_is_a_recorded_skip_and_present_tools_run() {
+        let record = workspace_target().join("tmp").join("skips-allow.txt");
+        let _ = std::fs::remove_file(&record);
+        assert!(!require_tools_with("skipped_test", &[NO_SUCH_TOOL], true, &record));
+        assert!(require_tools_with("running_test", &["sh"], true, &record));
+        let text = std::fs::read_to_string(&record).unwrap();
+        assert_eq!(text, format!("skipped_test: missing {NO_SUCH_TOOL}\n"));
+    }
+}

@@ -6,7 +6,7 @@
 
 use golden::format::Screen;
 use std::process::Command;
-use tb::common::{have_tool, scratch_dir};
+use tb::common::{require_tools, scratch_dir};
 use tb::rc::bench::{run_model, Drive};
 use tb::rc::replay::{replay, write_rc_verilog, Simulator, VectorWriter};
 use tb::rc::stimulus::{frame, hand_made, hand_made_screen, scene_triangles};
@@ -21,15 +21,6 @@ const LINT_WAIVERS: &[(&str, &str)] = &[
     ("-Wno-UNOPTFLAT", "rust-hdl emits a block's combinational logic as one always @(*), so driving a child multiplier's inputs and reading its product in the same block looks circular to Verilator; there is no real loop (check_all finds none, and the simulations settle)"),
 ];
 
-fn tools(names: &[&str]) -> bool {
-    let missing: Vec<&&str> = names.iter().filter(|n| !have_tool(n)).collect();
-    if !missing.is_empty() {
-        // scripts/test.sh installs them; a bare `cargo test` without them says so instead of failing.
-        eprintln!("SKIPPED: {missing:?} not installed (scripts/test.sh installs them)");
-        return false;
-    }
-    true
-}
 
 #[test]
 fn rc_verilog_has_the_top_module_rc() {
@@ -41,7 +32,7 @@ fn rc_verilog_has_the_top_module_rc() {
 
 #[test]
 fn rc_verilog_passes_verilator_lint_all_with_named_waivers() {
-    if !tools(&["verilator"]) {
+    if !require_tools("rc_verilog_passes_verilator_lint_all_with_named_waivers", &["verilator"]) {
         return;
     }
     let dir = scratch_dir("rc_lint");
@@ -58,7 +49,7 @@ fn rc_verilog_passes_verilator_lint_all_with_named_waivers() {
 
 #[test]
 fn rc_synthesizes_for_ice40_with_dsp_and_no_latches() {
-    if !tools(&["yosys"]) {
+    if !require_tools("rc_synthesizes_for_ice40_with_dsp_and_no_latches", &["yosys"]) {
         return;
     }
     let dir = scratch_dir("rc_synth");
@@ -93,7 +84,7 @@ fn rc_synthesizes_for_ice40_with_dsp_and_no_latches() {
 
 #[test]
 fn generated_verilog_replays_the_hand_made_cases_under_icarus() {
-    if !tools(&["iverilog", "vvp"]) {
+    if !require_tools("generated_verilog_replays_the_hand_made_cases_under_icarus", &["iverilog", "vvp"]) {
         return;
     }
     // All hand-made frames in one stream (each starts with a clearing frame start).
@@ -109,7 +100,7 @@ fn generated_verilog_replays_the_hand_made_cases_under_icarus() {
 
 #[test]
 fn generated_verilog_replays_a_polyhedron_frame_under_verilator() {
-    if !tools(&["verilator"]) {
+    if !require_tools("generated_verilog_replays_a_polyhedron_frame_under_verilator", &["verilator"]) {
         return;
     }
     let screen = Screen::new(320, 200).unwrap();
@@ -132,7 +123,7 @@ fn generated_verilog_replays_a_polyhedron_frame_under_verilator() {
 /// scene stays below 256-pixel edges, which is why the other replays never showed it.
 #[test]
 fn generated_verilog_draws_triangles_with_the_longest_edges_the_formats_allow_under_icarus() {
-    if !tools(&["iverilog", "vvp"]) {
+    if !require_tools("generated_verilog_draws_triangles_with_the_longest_edges_the_formats_allow_under_icarus", &["iverilog", "vvp"]) {
         return;
     }
     use golden::cycle::rc::RcCmd;

@@ -9,15 +9,11 @@ use golden::render::{render, render_with, Chipset, Frame, RenderOptions};
 use golden::scene::builtin;
 use golden::shade::{PhongLights, Shading};
 use tb::chipset::RtlChipset;
-use tb::common::{have_tool, vcd_path};
+use tb::common::{require_tools, vcd_path};
 use tb::verilator::VerilatorChipset;
 
 fn verilator_missing(test: &str) -> bool {
-    if have_tool("verilator") {
-        return false;
-    }
-    eprintln!("SKIPPED {test}: `verilator` is not on PATH (apt-get install verilator)");
-    true
+    !require_tools(test, &["verilator"])
 }
 
 /// The first difference between two frames, named by buffer and pixel.

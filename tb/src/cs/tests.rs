@@ -5,7 +5,7 @@ use super::color_shader_bench::{self as csb, CsDrive, FrameSpec};
 use super::colour_setup_bench::{self as setb, SetupDrive};
 use super::frames::record;
 use super::replay::{lint, replay_iverilog, synth_ice40};
-use crate::common::{have_tool, scratch_dir, Rng};
+use crate::common::{require_tools, scratch_dir, Rng};
 use golden::cycle::color_shader::{phong_config, CsConfigWrite, CsMemories, CS_PIPELINE_CYCLES};
 use golden::cycle::colour_setup::{SetupCmd, FLAT_CYCLES, SHADED_CYCLES};
 use golden::format::{Plane, DEPTH_MAX};
@@ -322,8 +322,8 @@ fn cs_matches_its_cycle_model_every_cycle_in_phong_with_random_constants_records
 
 #[test]
 fn colour_setup_verilog_replays_the_recorded_vectors() {
-    if !have_tool("iverilog") {
-        panic!("iverilog is not installed (the test script installs it)");
+    if !require_tools("colour_setup_verilog_replays_the_recorded_vectors", &["iverilog"]) {
+        return;
     }
     let seed = seed_for("colour_setup_replay", 0xC0105E7);
     let mut rng = Rng::new(seed);
@@ -337,8 +337,8 @@ fn colour_setup_verilog_replays_the_recorded_vectors() {
 
 #[test]
 fn cs_verilog_replays_the_recorded_vectors() {
-    if !have_tool("iverilog") {
-        panic!("iverilog is not installed (the test script installs it)");
+    if !require_tools("cs_verilog_replays_the_recorded_vectors", &["iverilog"]) {
+        return;
     }
     let seed = seed_for("cs_replay", 0xC5);
     let mut rng = Rng::new(seed);
@@ -362,8 +362,8 @@ fn cs_verilog_replays_the_recorded_vectors() {
 
 #[test]
 fn the_verilog_replay_catches_a_changed_constant() {
-    if !have_tool("iverilog") {
-        panic!("iverilog is not installed (the test script installs it)");
+    if !require_tools("the_verilog_replay_catches_a_changed_constant", &["iverilog"]) {
+        return;
     }
     let mut rng = Rng::new(3);
     let mut mem = random_memories(&mut rng, 8, 4, 10);
@@ -379,8 +379,8 @@ fn the_verilog_replay_catches_a_changed_constant() {
 
 #[test]
 fn the_verilog_replay_catches_a_changed_phong_rounding_constant() {
-    if !have_tool("iverilog") {
-        panic!("iverilog is not installed (the test script installs it)");
+    if !require_tools("the_verilog_replay_catches_a_changed_phong_rounding_constant", &["iverilog"]) {
+        return;
     }
     let f = record("polyhedron", Shading::Phong, 24, 16).unwrap();
     let mut mem = f.memories();
@@ -399,8 +399,8 @@ fn the_verilog_replay_catches_a_changed_phong_rounding_constant() {
 
 #[test]
 fn colour_setup_and_cs_pass_verilator_lint() {
-    if !have_tool("verilator") {
-        panic!("verilator is not installed (the test script installs it)");
+    if !require_tools("colour_setup_and_cs_pass_verilator_lint", &["verilator"]) {
+        return;
     }
     for top in ["colour_setup", "cs"] {
         let v = hdl::verilog_top(top).unwrap();
@@ -410,8 +410,8 @@ fn colour_setup_and_cs_pass_verilator_lint() {
 
 #[test]
 fn colour_setup_and_cs_synthesize_for_ice40_without_latches() {
-    if !have_tool("yosys") {
-        panic!("yosys is not installed (the test script installs it)");
+    if !require_tools("colour_setup_and_cs_synthesize_for_ice40_without_latches", &["yosys"]) {
+        return;
     }
     for top in ["colour_setup", "cs"] {
         let v = hdl::verilog_top(top).unwrap();

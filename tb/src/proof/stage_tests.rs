@@ -1,7 +1,7 @@
 //! Tests of PROOF's shading and filter stages (run with `cargo test --release -p tb proof`).
 
 use super::shade_bench::{run_shade, StageGaps};
-use crate::common::{have_tool, scratch_dir, vcd_path, vcd_wanted, Rng};
+use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted, Rng};
 use golden::proof::cycle_shade::{shade_config, slots_of_lists, ShadedSlot};
 use golden::proof::format::{Entry, Slot};
 use golden::proof::render::object_lists;
@@ -109,8 +109,8 @@ fn two_light_shading_stage_with_every_gloss_matches_its_cycle_model_and_the_gold
 #[test]
 fn shading_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_without_latches() {
     use std::process::Command;
-    for t in ["iverilog", "verilator", "yosys"] {
-        assert!(have_tool(t), "{t} is not installed (scripts/test.sh installs it)");
+    if !require_tools("shading_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_without_latches", &["iverilog", "verilator", "yosys"]) {
+        return;
     }
     let sc = scene("teapot", 2, 24, 16);
     let lists = object_lists(sc.screen, &sc.objects);
