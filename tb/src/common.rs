@@ -150,7 +150,7 @@ pub fn require_tools_with(test: &str, tools: &[&str], allow_missing: bool, recor
     if let Ok(mut f) = std::fs::OpenOptions::new().create(true).append(true).open(record) {
         let _ = f.write_all(line.as_bytes());
     }
-    eprintln!("SKIPPED {line}");
+    eprintln!("skipped (opt-out {ALLOW_MISSING_TOOLS}=1) {line}");
     false
 }
 
