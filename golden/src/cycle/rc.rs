@@ -27,7 +27,7 @@
 //! * Triangle accepted in cycle t: t+1 determinant, t+2 culling / canonical order / bounding box and
 //!   divider start. A culled triangle or one with an empty clamped bounding box is handed over from
 //!   t+3. Otherwise t+3..t+7 edge start values and the depth numerators, the 25-step reciprocal runs
-//!   t+3..t+27 and is taken in t+28, t+29..t+34 the depth plane, handed over from t+35.
+//!   t+3..t+27 and is taken in t+28, t+29..t+35 the depth plane, handed over from t+36.
 //! * A record waits in the hand-over register until the traversal takes it; the setup unit is `Idle`
 //!   (accepting) the cycle after.
 //!
@@ -52,7 +52,7 @@ use crate::format::{Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND};
 use crate::raster::{setup, Culled, CullMode, FrontFace, Setup};
 
 /// Cycles from accepting a triangle to its record being ready, when it is drawn (see module doc).
-pub const SETUP_CYCLES_DRAWN: u64 = 35;
+pub const SETUP_CYCLES_DRAWN: u64 = 36;
 /// Cycles from accepting a triangle to its record being ready, when it is culled or has an empty box.
 pub const SETUP_CYCLES_SHORT: u64 = 3;
 /// Steps of the restoring divider (RECIP_BITS + 1).
@@ -483,9 +483,10 @@ mod tests {
         let t = RcCmd::triangle(7, [v(0, 0, 10), v(64, 0, 10), v(0, 64, 10)], CullMode::None, FrontFace::Ccw).unwrap();
         let (mut z, mut i) = (vec![DEPTH_MAX; 256], vec![0; 256]);
         let (res, _) = run(&mut m, &[t], &mut z, &mut i);
-        // Accepted in cycle 0, record ready in cycle 35 and taken there, 16 candidates in 36..=51,
-        // the last one's z-test in 52, result visible in the register in 53.
-        assert_eq!(res[0], (53, RcResult { index: 7, visible: true, ..Default::default() }));
+        // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN (36) and taken there, 16
+        // candidates in the 16 cycles after, the last one's z-test one cycle later, the result visible
+        // in the register the cycle after that.
+        assert_eq!(res[0], (SETUP_CYCLES_DRAWN + 18, RcResult { index: 7, visible: true, ..Default::default() }));
         // Pixels whose centres are inside: X + Y < 4 with the diagonal excluded (not top-left) -> 6.
         assert_eq!(i.iter().filter(|&&x| x == 7).count(), 6);
     }

@@ -129,7 +129,6 @@ pub struct ColourSetup {
     na_b: DFF<Signed<35>>,
     nb_b: DFF<Signed<35>>,
     mant: DFF<Bits<25>>,
-    shift: DFF<Bits<6>>,
     plane_r_a: DFF<Bits<40>>,
     plane_r_b: DFF<Bits<40>>,
     plane_r_c: DFF<Bits<56>>,
@@ -160,6 +159,8 @@ pub struct ColourSetup {
     det_abs: Signal<Local, Signed<36>>,
     n_sel: Signal<Local, Signed<35>>,
     mant26: Signal<Local, Signed<26>>,
+    sh_r: DFF<Bits<7>>,
+    half_r: DFF<Bits<64>>,
     sh_m1: Signal<Local, Bits<7>>,
     sh: Signal<Local, Bits<7>>,
     rs_half: Signal<Local, Bits<64>>,
@@ -262,7 +263,6 @@ impl Default for ColourSetup {
             na_b: Default::default(),
             nb_b: Default::default(),
             mant: Default::default(),
-            shift: Default::default(),
             plane_r_a: Default::default(),
             plane_r_b: Default::default(),
             plane_r_c: Default::default(),
@@ -291,6 +291,8 @@ impl Default for ColourSetup {
             det_abs: Default::default(),
             n_sel: Default::default(),
             mant26: Default::default(),
+            sh_r: Default::default(),
+            half_r: Default::default(),
             sh_m1: Default::default(),
             sh: Default::default(),
             rs_half: Default::default(),
@@ -346,7 +348,7 @@ impl Logic for ColourSetup {
     fn update(&mut self) {
         dff_setup!(
             self, clock, state, index, material, x0, y0, x1, y1, x2, y2, v0r, v0g, v0b, v1r, v1g, v1b, v2r, v2g, v2b,
-            prod, opa_r, opb_r, tag1_v, tag1_ch, tag1_ph, tag1_k, tag_v, tag_ch, tag_ph, tag_k, issued, acc, det, ch, ph, k, n_done, na_r, nb_r, na_g, nb_g, na_b, nb_b, mant, shift, plane_r_a, plane_r_b,
+            prod, sh_r, half_r, opa_r, opb_r, tag1_v, tag1_ch, tag1_ph, tag1_k, tag_v, tag_ch, tag_ph, tag_k, issued, acc, det, ch, ph, k, n_done, na_r, nb_r, na_g, nb_g, na_b, nb_b, mant, plane_r_a, plane_r_b,
             plane_r_c, plane_g_a, plane_g_b, plane_g_c, plane_b_a, plane_b_b, plane_b_c
         );
         clock!(self, clock, recip);
@@ -415,14 +417,16 @@ impl Logic for ColourSetup {
             self.n_sel.next = self.nb_b.q.val();
         }
         self.mant26.next = signed_cast(bit_cast::<26, 25>(self.mant.q.val()));
-        self.sh_m1.next = bit_cast::<7, 6>(self.shift.q.val()) + self.k3_7.val();
-        self.sh.next = bit_cast::<7, 6>(self.shift.q.val()) + self.k4_7.val();
+        // The shift and the rounding half depend only on the reciprocal's shift: formed from its result
+        // and registered with it (`sh_r`, `half_r`), so the plane path starts at a register.
+        self.sh_m1.next = bit_cast::<7, 6>(self.recip.result.data.val().shift) + self.k3_7.val();
+        self.sh.next = bit_cast::<7, 6>(self.recip.result.data.val().shift) + self.k4_7.val();
         self.rs_half.next = self.k1_64.val() << self.sh_m1.val();
-        self.rs_y.next = self.prod.q.val() + signed_cast(self.rs_half.val());
+        self.rs_y.next = self.prod.q.val() + signed_cast(self.half_r.q.val());
         self.rs_yb.next = unsigned_cast(self.rs_y.val());
-        self.rs_sh.next = self.rs_yb.val() >> self.sh.val();
+        self.rs_sh.next = self.rs_yb.val() >> self.sh_r.q.val();
         if self.rs_yb.val().get_bit(63) {
-            self.rs_sh.next = !((!self.rs_yb.val()) >> self.sh.val());
+            self.rs_sh.next = !((!self.rs_yb.val()) >> self.sh_r.q.val());
         }
         self.rs_top.next = self.rs_sh.val().get_bits::<25>(39);
         self.ab40.next = self.rs_sh.val().get_bits::<40>(0);
@@ -597,7 +601,8 @@ impl Logic for ColourSetup {
                 if self.recip.result.valid.val() & self.n_done.q.val() {
                     self.res_ready.next = true;
                     self.mant.d.next = self.recip.result.data.val().mant;
-                    self.shift.d.next = self.recip.result.data.val().shift;
+                    self.sh_r.d.next = self.sh.val();
+                    self.half_r.d.next = self.rs_half.val();
                     self.k.d.next = self.k0_3.val();
                     self.state.d.next = SetupState::PlaneAB;
                 }

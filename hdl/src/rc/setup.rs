@@ -19,15 +19,17 @@
 //! * t+2 `Order`: zero area / cull decision from det's sign, the cull mode and the front face; swap
 //!   vertices 1 and 2 if det < 0 (canonical order); start the reciprocal of |det|. Culled or empty
 //!   box: go to `Out`.
-//! * t+3..t+7 `Edges` 0..4 (during the division): edge k's value at the box's first pixel
+//! * t+3..t+8 `Edges` 0..5 (during the division; edge k's operands are found in phase k and multiplied
+//!   in phase k + 1): edge k's value at the box's first pixel
 //!   `E = dx*(16*Y0+8-a.y) - dy*(16*X0+8-a.x) - bias` and its steps (-16*dy, 16*dx); then the depth
 //!   numerators na = dz10*dy20 - dz20*dy10 and nb = dz20*dx10 - dz10*dx20; the start address
 //!   Y0*W + X0.
 //! * `WaitRecip` until the reciprocal is ready (t+28 for a request accepted in t+2).
-//! * t+29..t+34 `Plane` 0..5 on one 44x26 multiplier: `A = sat40(round(na*mant >> (shift+4)))`, B
-//!   likewise, `C = (z0 << 16) + round(A*(8-x0) + B*(8-y0) >> 4)`, raw = C + A*X0 + B*Y0 (the depth
-//!   plane's raw value at the box's first pixel).
-//! * t+35 `Out`: the record is offered until `rec_ready`; `Idle` (and `cmd.ready`) the cycle after.
+//! * t+29..t+35 `Plane` 0..6 on one 44x26 multiplier whose product is registered (each product is
+//!   used in the phase after its operands): `A = sat40(round(na*mant >> (shift+4)))`, B likewise,
+//!   `C = (z0 << 16) + round(A*(8-x0) + B*(8-y0) >> 4)`, raw = C + A*X0 + B*Y0 (the depth plane's raw
+//!   value at the box's first pixel).
+//! * t+36 `Out`: the record is offered until `rec_ready`; `Idle` (and `cmd.ready`) the cycle after.
 //!
 //! Widths: inputs are any 16-bit S11.4 values, so |dx|, |dy| < 2^16; E stays below 2^34 in magnitude
 //! on the screen (36-bit registers). na, nb < 2^42; na*mant < 2^67 (70-bit product). C never
@@ -140,6 +142,16 @@ pub struct Setup {
     e1: DFF<Signed<36>>,
     e2: DFF<Signed<36>>,
     sx0: DFF<Signed<22>>,
+    /// An edge's multiplier operands, fill-rule flag and steps, found in the `Edges` phase of its
+    /// number and used in the next: the vertex mux and differences and the products are never one
+    /// clock period.
+    r_la: DFF<Signed<25>>,
+    r_lb: DFF<Signed<18>>,
+    r_ra: DFF<Signed<25>>,
+    r_rb: DFF<Signed<18>>,
+    r_tl: DFF<Bit>,
+    r_sx: DFF<Signed<22>>,
+    r_sy: DFF<Signed<22>>,
     sx1: DFF<Signed<22>>,
     sx2: DFF<Signed<22>>,
     sy0: DFF<Signed<22>>,
@@ -249,6 +261,7 @@ pub struct Setup {
     k2_3: Constant<Bits<3>>,
     k3_3: Constant<Bits<3>>,
     k5_3: Constant<Bits<3>>,
+    k6_3: Constant<Bits<3>>,
     k4_3: Constant<Bits<3>>,
     k0_31: Constant<Bits<31>>,
     k0_70: Constant<Bits<70>>,
@@ -336,6 +349,13 @@ impl Setup {
             e1: Default::default(),
             e2: Default::default(),
             sx0: Default::default(),
+            r_la: Default::default(),
+            r_lb: Default::default(),
+            r_ra: Default::default(),
+            r_rb: Default::default(),
+            r_tl: Default::default(),
+            r_sx: Default::default(),
+            r_sy: Default::default(),
             sx1: Default::default(),
             sx2: Default::default(),
             sy0: Default::default(),
@@ -439,6 +459,7 @@ impl Setup {
             k2_3: Constant::new(2.into()),
             k3_3: Constant::new(3.into()),
             k5_3: Constant::new(5.into()),
+            k6_3: Constant::new(6.into()),
             k4_3: Constant::new(4.into()),
             k0_31: Constant::new(0.into()),
             k0_70: Constant::new(0.into()),
@@ -465,7 +486,7 @@ impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, phase, kind, nbx0, nbx1, nby0, nby1, nbox_empty, clear, index, cull, front_cw, vx0, vy0, vz0, vx1, vy1, vz1, vx2, vy2, vz2, det,
+            self, clock, state, phase, kind, r_la, r_lb, r_ra, r_rb, r_tl, r_sx, r_sy, nbx0, nbx1, nby0, nby1, nbox_empty, clear, index, cull, front_cw, vx0, vy0, vz0, vx1, vy1, vz1, vx2, vy2, vz2, det,
             culled, zero_area, bx0, bx1, by0, by1, addr, e0, e1, e2, sx0, sx1, sx2, sy0, sy1, sy2, na, nb, mant, shamt,
             prod, grad_a, grad_b, acc, raw
         );
@@ -522,20 +543,28 @@ impl Logic for Setup {
         self.op_lb.next = signed_bit_cast_safe::<18, 17>(self.dy20.val());
         self.op_ra.next = signed_bit_cast_safe::<25, 17>(self.dx20.val());
         self.op_rb.next = signed_bit_cast_safe::<18, 17>(self.dy10.val());
+        // Edge `phase` (0, 1, 2): its operands, fill-rule flag and steps into the r_ registers.
+        self.r_la.d.next = signed_bit_cast_safe::<25, 17>(self.edx.val());
+        self.r_lb.d.next = self.py.val();
+        self.r_ra.d.next = signed_bit_cast_safe::<25, 17>(self.edy.val());
+        self.r_rb.d.next = self.px.val();
+        self.r_tl.d.next = self.top_left.val();
+        self.r_sx.d.next = self.step_x.val();
+        self.r_sy.d.next = self.step_y.val();
         if self.state.q.val() == SetupState::Edges {
-            if self.phase.q.val() < self.k3_3.val() {
-                self.op_la.next = signed_bit_cast_safe::<25, 17>(self.edx.val());
-                self.op_lb.next = self.py.val();
-                self.op_ra.next = signed_bit_cast_safe::<25, 17>(self.edy.val());
-                self.op_rb.next = self.px.val();
+            if (self.phase.q.val() != self.k0_3.val()) & (self.phase.q.val() < self.k4_3.val()) {
+                self.op_la.next = self.r_la.q.val();
+                self.op_lb.next = self.r_lb.q.val();
+                self.op_ra.next = self.r_ra.q.val();
+                self.op_rb.next = self.r_rb.q.val();
             }
-            if self.phase.q.val() == self.k3_3.val() {
+            if self.phase.q.val() == self.k4_3.val() {
                 self.op_la.next = self.dz10.val();
                 self.op_lb.next = signed_bit_cast_safe::<18, 17>(self.dy20.val());
                 self.op_ra.next = self.dz20.val();
                 self.op_rb.next = signed_bit_cast_safe::<18, 17>(self.dy10.val());
             }
-            if self.phase.q.val() == self.k4_3.val() {
+            if self.phase.q.val() == self.k5_3.val() {
                 self.op_la.next = self.dz20.val();
                 self.op_lb.next = signed_bit_cast_safe::<18, 17>(self.dx10.val());
                 self.op_ra.next = self.dz10.val();
@@ -544,7 +573,7 @@ impl Logic for Setup {
         }
         self.dot.next = signed_bit_cast_safe::<44, 43>(self.mul_l.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_r.p.val());
         self.e_val.next = signed_bit_cast_safe::<36, 44>(self.dot.val()) - self.k1_36.val();
-        if self.top_left.val() {
+        if self.r_tl.q.val() {
             self.e_val.next = signed_bit_cast_safe::<36, 44>(self.dot.val());
         }
         self.addr_prod.next = bit_cast::<16, 10>(self.by0.q.val()) * self.width.val();
@@ -636,7 +665,7 @@ impl Logic for Setup {
         self.box_x1_u.next = unsigned_cast(self.box_x1.val());
         self.box_y0_u.next = unsigned_cast(self.box_y0.val());
         self.box_y1_u.next = unsigned_cast(self.box_y1.val());
-        self.prod_u.next = unsigned_cast(self.mul_w.p.val());
+        self.prod_u.next = self.prod.q.val();
 
         // Plane gradient from the product register: sat40((prod + 2^(sh-1)) >> sh), sh = shift + 4.
         self.round_half.next = self.k8_70.val() << self.shamt.q.val();
@@ -806,27 +835,31 @@ impl Logic for Setup {
                 }
             }
             SetupState::Edges => {
+                // Phase p < 3 finds edge p's operands; phase p + 1 multiplies them: edges in 1..=3,
+                // the depth numerators in 4 and 5 (all while the reciprocal runs).
                 self.phase.d.next = self.phase.q.val() + self.k1_3.val();
                 if self.phase.q.val() == self.k0_3.val() {
-                    self.e0.d.next = self.e_val.val();
-                    self.sx0.d.next = self.step_x.val();
-                    self.sy0.d.next = self.step_y.val();
                     self.addr.d.next = self.addr_prod.val().get_bits::<20>(0) + bit_cast::<20, 10>(self.bx0.q.val());
                 }
                 if self.phase.q.val() == self.k1_3.val() {
-                    self.e1.d.next = self.e_val.val();
-                    self.sx1.d.next = self.step_x.val();
-                    self.sy1.d.next = self.step_y.val();
+                    self.e0.d.next = self.e_val.val();
+                    self.sx0.d.next = self.r_sx.q.val();
+                    self.sy0.d.next = self.r_sy.q.val();
                 }
                 if self.phase.q.val() == self.k2_3.val() {
-                    self.e2.d.next = self.e_val.val();
-                    self.sx2.d.next = self.step_x.val();
-                    self.sy2.d.next = self.step_y.val();
+                    self.e1.d.next = self.e_val.val();
+                    self.sx1.d.next = self.r_sx.q.val();
+                    self.sy1.d.next = self.r_sy.q.val();
                 }
                 if self.phase.q.val() == self.k3_3.val() {
-                    self.na.d.next = self.dot.val();
+                    self.e2.d.next = self.e_val.val();
+                    self.sx2.d.next = self.r_sx.q.val();
+                    self.sy2.d.next = self.r_sy.q.val();
                 }
                 if self.phase.q.val() == self.k4_3.val() {
+                    self.na.d.next = self.dot.val();
+                }
+                if self.phase.q.val() == self.k5_3.val() {
                     self.nb.d.next = self.dot.val();
                     self.state.d.next = SetupState::WaitRecip;
                 }
@@ -840,25 +873,27 @@ impl Logic for Setup {
                 }
             }
             SetupState::Plane => {
+                // One product per phase into `prod`, each used in the next phase (the product and the
+                // sum behind it are never one clock period): A and B in phases 1, 2; C's two terms
+                // in 3, 4; raw's two terms in 5, 6.
                 self.phase.d.next = self.phase.q.val() + self.k1_3.val();
-                if self.phase.q.val() == self.k0_3.val() {
-                    self.prod.d.next = unsigned_cast(self.mul_w.p.val());
-                }
+                self.prod.d.next = unsigned_cast(self.mul_w.p.val());
                 if self.phase.q.val() == self.k1_3.val() {
                     self.grad_a.d.next = self.grad.val();
-                    self.prod.d.next = unsigned_cast(self.mul_w.p.val());
                 }
                 if self.phase.q.val() == self.k2_3.val() {
                     self.grad_b.d.next = self.grad.val();
-                    self.acc.d.next = signed_cast(self.prod_u.val().get_bits::<58>(0));
                 }
                 if self.phase.q.val() == self.k3_3.val() {
-                    self.acc.d.next = self.acc.q.val() + signed_cast(self.prod_u.val().get_bits::<58>(0));
+                    self.acc.d.next = signed_cast(self.prod_u.val().get_bits::<58>(0));
                 }
                 if self.phase.q.val() == self.k4_3.val() {
-                    self.raw.d.next = self.c_plane.val() + self.prod56.val();
+                    self.acc.d.next = self.acc.q.val() + signed_cast(self.prod_u.val().get_bits::<58>(0));
                 }
                 if self.phase.q.val() == self.k5_3.val() {
+                    self.raw.d.next = self.c_plane.val() + self.prod56.val();
+                }
+                if self.phase.q.val() == self.k6_3.val() {
                     self.raw.d.next = self.raw.q.val() + self.prod56.val();
                     self.state.d.next = SetupState::Out;
                 }
