@@ -78,6 +78,12 @@ fn q8(v: f64) -> i64 {
     (v * 255.0 * 256.0).round().clamp(0.0, 65535.0) as i64
 }
 
+/// RGB888 of a light sum (14 + 8 fraction bits per channel): rounded by 22 bits and saturated, as the
+/// CS and PROOF's shading stage end.
+pub fn rgb_of_intensity(acc: [i64; 3]) -> [u8; 3] {
+    acc.map(|a| round_shift(a as i128, NORMAL_FRAC + 8).clamp(0, 255) as u8)
+}
+
 /// Q1.14 one.
 pub const ONE_Q14: i64 = 1 << NORMAL_FRAC;
 
@@ -159,8 +165,7 @@ impl PhongLights {
     /// and shortened normals (`phong_in_fixed_point_is_close_to_the_float_model`): the normaliser's
     /// error is below 1 LSB of Q1.14 and the Q1.14 dot products and squarings add the rest.
     pub fn shade(&self, n: [i64; 3], material: u16) -> [u8; 3] {
-        let u = normalize_q14(n);
-        self.intensity(u, material).map(|a| round_shift(a as i128, NORMAL_FRAC + 8).clamp(0, 255) as u8)
+        rgb_of_intensity(self.intensity(normalize_q14(n), material))
     }
 
     /// Whether the CS's RTL can hold these lights and materials; the error names the limit.

@@ -11,10 +11,9 @@
 //! with 8 fraction bits; dot products rounded to Q1.14 and clamped to [0, 1]; the specular term only
 //! where N . L > 0; the sum rounded by 22 bits and clamped to 0..=255.
 
-use crate::format::{round_shift, NORMAL_FRAC};
 use crate::shade::PhongLights;
 
-pub use crate::shade::{dot_q14, power_q14, ONE_Q14};
+pub use crate::shade::{dot_q14, power_q14, rgb_of_intensity, ONE_Q14};
 
 /// The unrounded intensity sum of the light-source pipeline for one entry, per channel, with
 /// 14 + 8 fraction bits: the project's one light sum ([`PhongLights::intensity`]) on the OP's normal.
@@ -24,7 +23,7 @@ pub fn intensity(lights: &PhongLights, n: [i16; 3], material: u16) -> [i64; 3] {
 
 /// The colour of one list entry.
 pub fn shade_entry(lights: &PhongLights, n: [i16; 3], material: u16) -> [u8; 3] {
-    intensity(lights, n, material).map(|a| round_shift(a as i128, NORMAL_FRAC + 8).clamp(0, 255) as u8)
+    rgb_of_intensity(intensity(lights, n, material))
 }
 
 #[cfg(test)]

@@ -108,8 +108,8 @@ fn pack6(f: [u64; 6]) -> u128 {
 }
 
 /// The config write of a cycle as the ports carry it: (light enable, address, data), (material
-/// enable, address, slot, data).
-fn config_ports(c: Option<CsConfigWrite>) -> ((bool, u64, u128), (bool, u64, u64, u128)) {
+/// enable, address, slot, data); the data are the six 16-bit fields packed as the `LogicStruct`.
+pub fn config_ports(c: Option<CsConfigWrite>) -> ((bool, u64, u128), (bool, u64, u64, u128)) {
     let q = |v: i64| v as u16 as u64;
     match c {
         Some(CsConfigWrite::Light { address, l, h }) => {

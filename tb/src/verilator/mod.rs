@@ -39,7 +39,8 @@ use golden::cycle::rc::RcCmd;
 use golden::format::Screen;
 use golden::raster::{Culled, CullMode, FrontFace, TriResult};
 use golden::render::{Chipset, RcCommand, ScanOut, SetupCommand};
-use golden::cycle::color_shader::{phong_config, CsConfigWrite};
+use crate::cs::color_shader_bench::config_ports;
+use golden::cycle::color_shader::phong_config;
 use golden::shade::{PhongLights, Shading};
 use hdl::rc::RcResult;
 use rust_hdl::prelude::*;
@@ -476,12 +477,10 @@ impl Chipset for VerilatorChipset {
         let config = if phong { phong_config(lights)? } else { Vec::new() };
         let mut words = Vec::with_capacity(6 * config.len());
         for c in &config {
-            let q = |v: i64| v as u16 as u32;
-            let (kind, address, slot, f) = match *c {
-                CsConfigWrite::Light { address, l, h } => (0, address, 0, [q(l[0]), q(l[1]), q(l[2]), q(h[0]), q(h[1]), q(h[2])]),
-                CsConfigWrite::Material { address, slot, words } => (1, address, slot, words.map(|w| w as u32)),
-            };
-            words.extend_from_slice(&[kind, address, slot, f[0] | f[1] << 16, f[2] | f[3] << 16, f[4] | f[5] << 16]);
+            // The same packing as the RustHDL backend's ports (`config_ports`), as 32-bit words.
+            let ((le, la, ld), (_, ma, ms, md)) = config_ports(Some(*c));
+            let (kind, address, slot, data) = if le { (0, la, 0, ld) } else { (1, ma, ms, md) };
+            words.extend_from_slice(&[kind, address as u32, slot as u32, data as u32, (data >> 32) as u32, (data >> 64) as u32]);
         }
         let pixels = self.screen.pixels();
         let start = self.cycle;
