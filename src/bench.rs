@@ -543,11 +543,29 @@ fn stimulus(kind: Stim, n: usize) -> (Vec<golden::render::RcCommand>, golden::ra
     ((0..n).map(|i| golden::render::RcCommand { index: i as u32 + 1, v: tri }).collect(), cull, front)
 }
 
+/// A host that answers every visible triangle with a flat white colour-setup command.
+struct FlatHost(Vec<golden::render::RcCommand>);
+
+impl golden::render::LowerPipeline for FlatHost {
+    fn visible(&mut self, _frame: usize, position: usize) -> Result<golden::render::SetupCommand, String> {
+        let t = self.0.get(position).ok_or("RC setup bench: a result for a triangle never sent")?;
+        Ok(golden::render::SetupCommand { index: t.index, v: t.v, values: [[0; 3]; 3], material: 0, flat: Some([255; 3]) })
+    }
+}
+
 /// Rasterization cycles per triangle, back to back, through a chipset's RC.
 fn per_triangle(chip: &mut dyn CycleChipset, kind: Stim) -> Result<f64, String> {
     let mut cycles = |n: usize| -> Result<u64, String> {
         let (cmds, cull, front) = stimulus(kind, n);
-        let results = chip.rasterize(&cmds, cull, front)?;
+        let job = golden::render::FrameJob {
+            tris: cmds.clone(),
+            cull,
+            front,
+            shading: golden::shade::Shading::Flat,
+            lights: golden::shade::PhongLights { l: vec![], h: vec![], materials: vec![] },
+            background: [0; 3],
+        };
+        let results = chip.run(&[job], &mut FlatHost(cmds))?.remove(0).results;
         // The stimulus must be what it claims, or the figure means something else.
         if results.len() != n || results.iter().any(|r| r.culled.is_some() != (kind == Stim::Culled)) {
             return Err(format!("RC setup bench: the {} stimulus was not {} by the chipset", if kind == Stim::Culled { "culled" } else { "drawn" }, if kind == Stim::Culled { "culled" } else { "drawn" }));

@@ -287,7 +287,7 @@ pub fn verilog_facts(v: &str) -> VerilogFacts {
 /// The memory ports of each known top (outside the core, synchronous): what a user must attach.
 fn memory_interface(top: &str) -> &'static str {
     match top {
-        "rc" => "Z-buffer (W*H words x 24 bits, address `y*W + x`): read port `z_re`/`z_rd_addr` -> `z_rd_data`, write port `z_we`/`z_wr_addr`/`z_wr_data`. I-buffer (W*H x 16): write port `i_we`/`i_wr_addr`/`i_wr_data`.",
+        "rc" => "Z-buffer (W*H words x 24 bits, address `y*W + x`): read port `z_re`/`z_rd_addr` -> `z_rd_data`, write port `z_we`/`z_wr_addr`/`z_wr_data`. I-buffer (W*H x 16): write port `i_we`/`i_wr_addr`/`i_wr_data`, and `i_rd_data`, the index read with `z_re`/`z_rd_addr` (a background index makes the depth read with it count as far: no Z clear pass).",
         "cs" => "I-buffer (W*H x 16): read port `ibuf_read_enable`/`ibuf_read_address` -> `ibuf_read_data`, clear-behind write port `ibuf_write_*`. TdbS (2^16 x 424): read port `tdbs_read_enable`/`tdbs_read_address` -> `tdbs_read_data`. Z-buffer (W*H x 24): clear-behind write port `zbuf_write_*`.",
         "colour_setup" => "TdbS (2^16 words x 424 bits, address = triangle index): write port `tdbs_write_enable`/`tdbs_write_address`/`tdbs_write_data`.",
         "chipset" => "Z-buffer (W*H x 24): `z_re`/`z_rd_addr` -> `z_rd_data`, `z_we`/`z_wr_addr`/`z_wr_data`. I-buffer (W*H x 16): `i_re`/`i_rd_addr` -> `i_rd_data`, `i_we`/`i_wr_addr`/`i_wr_data`. TdbS (2^16 x 424): `t_re`/`t_rd_addr` -> `t_rd_data`, `t_we`/`t_wr_addr`/`t_wr_data`. The Z and I write ports are shared by the RC and the CS's clear-behind.",

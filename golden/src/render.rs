@@ -9,7 +9,7 @@
 //! 5. CS: scan the I-buffer out, evaluate, produce RGB888.
 
 use crate::format::{max_index, Screen, WinVertex, INDEX_BACKGROUND};
-use crate::host::{eye_normals, normalize, to_rgb8, upper_pipeline, Camera, ClipStats, HostOps, Lighting, Ops};
+use crate::host::{eye_normals, normalize, to_rgb8, upper_pipeline, Camera, ClipStats, Geometry, HostOps, Lighting, Ops};
 use crate::raster::{Culled, CullMode, FrontFace, RcCounts, Rasterizer, TriResult};
 use crate::scene::Mesh;
 use crate::shade::{colour_setup, flat_setup, normal_q14, PhongLights, Shading, TdbsEntry};
@@ -40,51 +40,70 @@ pub struct ScanOut {
     pub zbuf: Vec<u32>,
 }
 
-/// The chipset as the host sees it. Implemented by [`GoldenChipset`] (the algorithmic model) and, in
-/// `tb/`, by the RTL simulation.
-pub trait Chipset {
-    /// Frame start (clear), then every triangle in order; returns one result per triangle in order.
-    fn rasterize(&mut self, tris: &[RcCommand], cull: CullMode, front: FrontFace) -> Result<Vec<TriResult>, String>;
-    /// Write TdbS for the visible triangles.
-    fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String>;
-    /// Scan the frame out.
-    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String>;
-    /// The RC's fragment counters of the last frame, if the chipset keeps them.
-    fn rc_counts(&self) -> Option<RcCounts> {
-        None
-    }
+/// One frame as the host hands it to the chipset: the RC's commands and what its scan-out needs.
+#[derive(Clone, Debug)]
+pub struct FrameJob {
+    pub tris: Vec<RcCommand>,
+    pub cull: CullMode,
+    pub front: FrontFace,
+    pub shading: Shading,
+    pub lights: PhongLights,
+    pub background: [u8; 3],
 }
 
-/// The algorithmic model of the chipset.
+/// The host's lower pipeline (enhanced deferred lighting) as the chipset sees it: asked for a
+/// triangle's colour-setup command as soon as the RC reports the triangle visible.
+pub trait LowerPipeline {
+    /// Triangle `position` (0-based, in command order) of frame `frame` was reported visible: light it
+    /// (if its source triangle is not lit yet) and return its colour-setup command.
+    fn visible(&mut self, frame: usize, position: usize) -> Result<SetupCommand, String>;
+}
+
+/// What the chipset returns for one frame.
+#[derive(Clone, Debug)]
+pub struct FrameOut {
+    /// One result per triangle, in command order.
+    pub results: Vec<TriResult>,
+    pub scan: ScanOut,
+    /// The RC's fragment counters, if the chipset keeps them.
+    pub rc_counts: Option<RcCounts>,
+}
+
+/// The chipset as the host sees it. Implemented by [`GoldenChipset`] (the algorithmic model) and, in
+/// `tb/`, by the RTL simulations, which overlap the frames as the hardware does (seed 001's two
+/// pipelines in parallel, and the scan-out of one frame beside the drawing of the next).
+pub trait Chipset {
+    /// Draw and scan out `frames` in order. Every triangle the RC reports visible is handed to
+    /// `host.visible` at once and its colour-setup command sent to colour setup.
+    fn run(&mut self, frames: &[FrameJob], host: &mut dyn LowerPipeline) -> Result<Vec<FrameOut>, String>;
+}
+
+/// The algorithmic model of the chipset: one frame after the other, colour setup of a triangle right
+/// after its visibility result.
 pub struct GoldenChipset {
     pub rc: Rasterizer,
     pub tdbs: Vec<TdbsEntry>,
+    /// The colour-setup commands of the last run, in the order they were sent.
+    pub setups: Vec<SetupCommand>,
 }
 
 impl GoldenChipset {
     pub fn new(screen: Screen) -> GoldenChipset {
-        GoldenChipset { rc: Rasterizer::new(screen), tdbs: Vec::new() }
+        GoldenChipset { rc: Rasterizer::new(screen), tdbs: Vec::new(), setups: Vec::new() }
     }
-}
 
-impl Chipset for GoldenChipset {
-    fn rasterize(&mut self, tris: &[RcCommand], cull: CullMode, front: FrontFace) -> Result<Vec<TriResult>, String> {
-        self.rc.clear();
-        Ok(tris.iter().map(|t| self.rc.draw(t.index, &t.v, cull, front)).collect())
-    }
-    fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String> {
-        for c in cmds {
-            if self.tdbs.len() <= c.index as usize {
-                self.tdbs.resize(c.index as usize + 1, TdbsEntry::default());
-            }
-            self.tdbs[c.index as usize] = match c.flat {
-                Some(rgb) => flat_setup(rgb),
-                None => colour_setup(&c.v, c.values, c.material),
-            };
+    fn colour_setup(&mut self, c: &SetupCommand) {
+        if self.tdbs.len() <= c.index as usize {
+            self.tdbs.resize(c.index as usize + 1, TdbsEntry::default());
         }
-        Ok(())
+        self.tdbs[c.index as usize] = match c.flat {
+            Some(rgb) => flat_setup(rgb),
+            None => colour_setup(&c.v, c.values, c.material),
+        };
+        self.setups.push(*c);
     }
-    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String> {
+
+    fn scanout(&self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> ScanOut {
         let s = self.rc.screen;
         let mut rgb = Vec::with_capacity(s.pixels() * 3);
         for y in 0..s.height {
@@ -102,10 +121,29 @@ impl Chipset for GoldenChipset {
                 rgb.extend_from_slice(&px);
             }
         }
-        Ok(ScanOut { rgb, ibuf: self.rc.ibuf.clone(), zbuf: self.rc.zbuf.clone() })
+        ScanOut { rgb, ibuf: self.rc.ibuf.clone(), zbuf: self.rc.zbuf.clone() }
     }
-    fn rc_counts(&self) -> Option<RcCounts> {
-        Some(self.rc.counts)
+}
+
+impl Chipset for GoldenChipset {
+    fn run(&mut self, frames: &[FrameJob], host: &mut dyn LowerPipeline) -> Result<Vec<FrameOut>, String> {
+        self.setups.clear();
+        let mut out = Vec::with_capacity(frames.len());
+        for (f, job) in frames.iter().enumerate() {
+            self.rc.clear();
+            let mut results = Vec::with_capacity(job.tris.len());
+            for (p, t) in job.tris.iter().enumerate() {
+                let r = self.rc.draw(t.index, &t.v, job.cull, job.front);
+                if r.visible {
+                    let c = host.visible(f, p)?;
+                    self.colour_setup(&c);
+                }
+                results.push(r);
+            }
+            let scan = self.scanout(job.shading, &job.lights, job.background);
+            out.push(FrameOut { results, scan, rc_counts: Some(self.rc.counts) });
+        }
+        Ok(out)
     }
 }
 
@@ -202,162 +240,224 @@ pub struct Frame {
     pub stats: FrameStats,
 }
 
-/// Render one frame of `mesh` through `chip`.
-pub fn render_with(mesh: &Mesh, opts: &RenderOptions, chip: &mut dyn Chipset) -> Result<Frame, String> {
-    mesh.validate()?;
-    opts.camera.validate()?;
-    if !(1..=31).contains(&opts.index_bits) {
-        return Err(format!("index width {} bits is not supported (1..=31)", opts.index_bits));
-    }
-    let geo = upper_pipeline(mesh, &opts.camera, opts.screen);
-    let limit = max_index(opts.index_bits) as usize;
-    if geo.hw.len() > limit {
-        return Err(format!(
-            "{} triangles to draw after clipping, but a {}-bit triangle index allows only {} (0 is background): \
-             use a wider --index-bits or a smaller scene",
-            geo.hw.len(),
-            opts.index_bits,
-            limit
-        ));
-    }
-    let cmds: Vec<RcCommand> = geo.hw.iter().enumerate().map(|(i, t)| RcCommand { index: i as u32 + 1, v: t.v }).collect();
-    let results = chip.rasterize(&cmds, opts.cull, opts.front)?;
-    if results.len() != cmds.len() {
-        return Err(format!("chipset returned {} results for {} triangles", results.len(), cmds.len()));
+/// The host program's state for one frame: geometry done by the upper pipeline, lighting deferred
+/// until the chipset reports a triangle visible.
+struct HostFrame<'a> {
+    mesh: &'a Mesh,
+    opts: &'a RenderOptions,
+    geo: Geometry,
+    cmds: Vec<RcCommand>,
+    host: HostOps,
+    lit: Vec<Option<[[i64; 3]; 3]>>,
+    flat_rgb: Vec<Option<[u8; 3]>>,
+    /// Colour-setup commands handed out.
+    setups: u64,
+}
+
+impl<'a> HostFrame<'a> {
+    fn new(mesh: &'a Mesh, opts: &'a RenderOptions) -> Result<HostFrame<'a>, String> {
+        mesh.validate()?;
+        opts.camera.validate()?;
+        if !(1..=31).contains(&opts.index_bits) {
+            return Err(format!("index width {} bits is not supported (1..=31)", opts.index_bits));
+        }
+        let geo = upper_pipeline(mesh, &opts.camera, opts.screen);
+        let limit = max_index(opts.index_bits) as usize;
+        if geo.hw.len() > limit {
+            return Err(format!(
+                "{} triangles to draw after clipping, but a {}-bit triangle index allows only {} (0 is background): \
+                 use a wider --index-bits or a smaller scene",
+                geo.hw.len(),
+                opts.index_bits,
+                limit
+            ));
+        }
+        let cmds: Vec<RcCommand> = geo.hw.iter().enumerate().map(|(i, t)| RcCommand { index: i as u32 + 1, v: t.v }).collect();
+        let n = mesh.triangles.len();
+        let host = geo.ops;
+        Ok(HostFrame { mesh, opts, geo, cmds, host, lit: vec![None; n], flat_rgb: vec![None; n], setups: 0 })
     }
 
-    // Source-level bookkeeping.
-    let n = mesh.triangles.len();
-    let mut any_sent = vec![false; n];
-    let mut passed_cull = vec![false; n];
-    let mut all_zero = vec![true; n];
-    let mut flagged = vec![false; n];
-    for (t, r) in geo.hw.iter().zip(&results) {
-        let s = t.source as usize;
-        any_sent[s] = true;
-        if r.culled != Some(Culled::ZeroArea) {
-            all_zero[s] = false;
+    fn job(&self) -> FrameJob {
+        FrameJob {
+            tris: self.cmds.clone(),
+            cull: self.opts.cull,
+            front: self.opts.front,
+            shading: self.opts.shading,
+            lights: PhongLights::new(&self.opts.lighting, &self.mesh.materials),
+            background: self.opts.background,
         }
-        if r.culled.is_none() {
-            passed_cull[s] = true;
-        }
-        flagged[s] |= r.visible;
     }
 
-    // Lower pipeline: lighting deferred to flagged-visible source triangles.
-    let mut host = geo.ops;
-    let nlights = opts.lighting.lights.len() as u64;
-    let mut lit: Vec<Option<[[i64; 3]; 3]>> = vec![None; n];
-    let mut flat_rgb: Vec<Option<[u8; 3]>> = vec![None; n];
-    for s in 0..n {
-        if !flagged[s] {
-            continue;
-        }
-        let t = &mesh.triangles[s];
-        let m = &mesh.materials[t.material as usize];
-        host.view_normals += 3;
-        let en = eye_normals(mesh, &opts.camera, t);
-        match opts.shading {
-            Shading::Flat => {
-                host.lighting += nlights;
-                let fn_ = normalize([0, 1, 2].map(|k| en[0][k] + en[1][k] + en[2][k]));
-                flat_rgb[s] = Some(to_rgb8(opts.lighting.shade(m, fn_)));
-            }
-            Shading::Gouraud => {
-                host.lighting += 3 * nlights;
-                lit[s] = Some(en.map(|nv| to_rgb8(opts.lighting.shade(m, nv)).map(|c| c as i64)));
-            }
-            Shading::Phong => lit[s] = Some(en.map(normal_q14)),
-        }
-    }
-    let mut setups = Vec::new();
-    for (i, (t, r)) in geo.hw.iter().zip(&results).enumerate() {
-        if !r.visible {
-            continue;
-        }
+    /// Lower pipeline for the piece at `position`: light its source triangle once (Phong: normals
+    /// only), then the piece's colour-setup command.
+    fn visible(&mut self, position: usize) -> Result<SetupCommand, String> {
+        let t = self.geo.hw.get(position).ok_or_else(|| format!("the chipset reported triangle {position} visible, but only {} were sent", self.geo.hw.len()))?;
         let s = t.source as usize;
-        let material = mesh.triangles[s].material as u16;
-        let (values, flat) = match (lit[s], flat_rgb[s]) {
+        let (mesh, opts) = (self.mesh, self.opts);
+        let tri = &mesh.triangles[s];
+        let m = &mesh.materials[tri.material as usize];
+        if self.lit[s].is_none() && self.flat_rgb[s].is_none() {
+            let nlights = opts.lighting.lights.len() as u64;
+            self.host.view_normals += 3;
+            let en = eye_normals(mesh, &opts.camera, tri);
+            match opts.shading {
+                Shading::Flat => {
+                    self.host.lighting += nlights;
+                    let fn_ = normalize([0, 1, 2].map(|k| en[0][k] + en[1][k] + en[2][k]));
+                    self.flat_rgb[s] = Some(to_rgb8(opts.lighting.shade(m, fn_)));
+                }
+                Shading::Gouraud => {
+                    self.host.lighting += 3 * nlights;
+                    self.lit[s] = Some(en.map(|nv| to_rgb8(opts.lighting.shade(m, nv)).map(|c| c as i64)));
+                }
+                Shading::Phong => self.lit[s] = Some(en.map(normal_q14)),
+            }
+        }
+        let (values, flat) = match (self.lit[s], self.flat_rgb[s]) {
             (_, Some(rgb)) => ([[0; 3]; 3], Some(rgb)),
             (Some(vals), None) => {
                 // A clipped piece's vertex values are its barycentric mix of the source vertices'.
                 let mix = |b: [f64; 3]| [0, 1, 2].map(|c| (b[0] * vals[0][c] as f64 + b[1] * vals[1][c] as f64 + b[2] * vals[2][c] as f64).round() as i64);
                 (t.bary.map(mix), None)
             }
-            (None, None) => unreachable!("a visible piece's source triangle is flagged"),
+            (None, None) => unreachable!("lit above"),
         };
-        setups.push(SetupCommand { index: i as u32 + 1, v: t.v, values, material, flat });
+        self.setups += 1;
+        Ok(SetupCommand { index: position as u32 + 1, v: t.v, values, material: tri.material as u16, flat })
     }
-    chip.colour_setup(&setups)?;
-    let lights = PhongLights::new(&opts.lighting, &mesh.materials);
-    let out = chip.scanout(opts.shading, &lights, opts.background)?;
 
-    // Final-image statistics.
-    // A chipset is checked, not trusted: an index it never received is an error, not a panic.
-    if out.ibuf.len() != opts.screen.pixels() || out.rgb.len() != 3 * opts.screen.pixels() {
-        return Err(format!("the chipset returned {} I-buffer words and {} colour bytes for {} pixels", out.ibuf.len(), out.rgb.len(), opts.screen.pixels()));
-    }
-    if let Some(p) = out.ibuf.iter().position(|&h| h as usize > geo.hw.len()) {
-        let w = opts.screen.width as usize;
-        return Err(format!(
-            "the chipset's I-buffer holds index {} at pixel ({}, {}), but only {} triangles were sent",
-            out.ibuf[p], p % w, p / w, geo.hw.len()
-        ));
-    }
-    let index: Vec<u32> = out.ibuf.iter().map(|&h| if h == INDEX_BACKGROUND { 0 } else { geo.hw[h as usize - 1].source + 1 }).collect();
-    let mut in_final = vec![false; n];
-    let mut covered = 0u64;
-    for &i in &index {
-        if i != 0 {
-            in_final[i as usize - 1] = true;
-            covered += 1;
+    /// The frame and its statistics from what the chipset returned.
+    fn finish(self, out: FrameOut) -> Result<Frame, String> {
+        let (mesh, opts, geo) = (self.mesh, self.opts, &self.geo);
+        let FrameOut { results, scan: out, rc_counts } = out;
+        if results.len() != self.cmds.len() {
+            return Err(format!("chipset returned {} results for {} triangles", results.len(), self.cmds.len()));
         }
-    }
-    let count = |v: &[bool]| v.iter().filter(|&&b| b).count() as u64;
-    let a = n as u64;
-    let b = count(&passed_cull);
-    let zero_area = (0..n).filter(|&s| any_sent[s] && all_zero[s]).count() as u64;
-    // Fragment counters: from the chipset if it keeps them, else from the algorithmic RC (the same
-    // numbers for any chipset that produced the same I-buffer, which is checked).
-    let rc = match chip.rc_counts() {
-        Some(c) => c,
-        None => {
-            let mut model = Rasterizer::new(opts.screen);
-            for c in &cmds {
-                model.draw(c.index, &c.v, opts.cull, opts.front);
-            }
-            if model.ibuf != out.ibuf {
-                return Err("the chipset's I-buffer differs from the algorithmic model's".into());
-            }
-            model.counts
+        let visible = results.iter().filter(|r| r.visible).count() as u64;
+        if visible != self.setups {
+            return Err(format!("the chipset reported {visible} triangles visible but asked the host for {} colour-setup commands", self.setups));
         }
-    };
-    let per = |x: u64| if covered == 0 { 0.0 } else { x as f64 / covered as f64 };
-    let geometry = HostOps { view_vertices: 3 * a, perspective: 3 * a, ..Default::default() };
-    let lights_per_tri = if opts.shading == Shading::Flat { nlights } else { 3 * nlights };
-    let (lit_b, lit_a) = if opts.shading == Shading::Phong { (0, 0) } else { (b * lights_per_tri, a * lights_per_tri) };
-    let stats = FrameStats {
-        triangles_in: a,
-        clipped_away: geo.clip.clipped_away,
-        split_by_clipping: geo.clip.split,
-        sent_to_rc: geo.clip.sent,
-        zero_area,
-        after_culling: b,
-        flagged_visible: count(&flagged),
-        visible_final: count(&in_final),
-        rc,
-        covered_pixels: covered,
-        depth_complexity: per(rc.fragments),
-        overdraw: per(rc.z_passes),
-        tdbs_writes: setups.len() as u64,
-        cs_lightings: if opts.shading == Shading::Phong { covered * nlights } else { 0 },
-        host,
-        host_ops: host.ops(),
-        host_type_i: HostOps { view_normals: 3 * a, lighting: lit_b, ..geometry },
-        host_type_ii: HostOps { view_normals: 3 * a, lighting: lit_a, ..geometry },
-        clip: geo.clip,
-    };
-    Ok(Frame { screen: opts.screen, rgb: out.rgb, index, hw_index: out.ibuf, zbuf: out.zbuf, results, stats })
+        // Source-level bookkeeping.
+        let n = mesh.triangles.len();
+        let mut any_sent = vec![false; n];
+        let mut passed_cull = vec![false; n];
+        let mut all_zero = vec![true; n];
+        let mut flagged = vec![false; n];
+        for (t, r) in geo.hw.iter().zip(&results) {
+            let s = t.source as usize;
+            any_sent[s] = true;
+            if r.culled != Some(Culled::ZeroArea) {
+                all_zero[s] = false;
+            }
+            if r.culled.is_none() {
+                passed_cull[s] = true;
+            }
+            flagged[s] |= r.visible;
+        }
+        let nlights = opts.lighting.lights.len() as u64;
+
+        // Final-image statistics.
+        // A chipset is checked, not trusted: an index it never received is an error, not a panic.
+        if out.ibuf.len() != opts.screen.pixels() || out.rgb.len() != 3 * opts.screen.pixels() {
+            return Err(format!("the chipset returned {} I-buffer words and {} colour bytes for {} pixels", out.ibuf.len(), out.rgb.len(), opts.screen.pixels()));
+        }
+        if let Some(p) = out.ibuf.iter().position(|&h| h as usize > geo.hw.len()) {
+            let w = opts.screen.width as usize;
+            return Err(format!(
+                "the chipset's I-buffer holds index {} at pixel ({}, {}), but only {} triangles were sent",
+                out.ibuf[p], p % w, p / w, geo.hw.len()
+            ));
+        }
+        let index: Vec<u32> = out.ibuf.iter().map(|&h| if h == INDEX_BACKGROUND { 0 } else { geo.hw[h as usize - 1].source + 1 }).collect();
+        let mut in_final = vec![false; n];
+        let mut covered = 0u64;
+        for &i in &index {
+            if i != 0 {
+                in_final[i as usize - 1] = true;
+                covered += 1;
+            }
+        }
+        let count = |v: &[bool]| v.iter().filter(|&&b| b).count() as u64;
+        let a = n as u64;
+        let b = count(&passed_cull);
+        let zero_area = (0..n).filter(|&s| any_sent[s] && all_zero[s]).count() as u64;
+        // Fragment counters: from the chipset if it keeps them, else from the algorithmic RC (the same
+        // numbers for any chipset that produced the same I-buffer, which is checked).
+        let rc = match rc_counts {
+            Some(c) => c,
+            None => {
+                let mut model = Rasterizer::new(opts.screen);
+                for c in &self.cmds {
+                    model.draw(c.index, &c.v, opts.cull, opts.front);
+                }
+                if model.ibuf != out.ibuf {
+                    return Err("the chipset's I-buffer differs from the algorithmic model's".into());
+                }
+                model.counts
+            }
+        };
+        let per = |x: u64| if covered == 0 { 0.0 } else { x as f64 / covered as f64 };
+        let geometry = HostOps { view_vertices: 3 * a, perspective: 3 * a, ..Default::default() };
+        let lights_per_tri = if opts.shading == Shading::Flat { nlights } else { 3 * nlights };
+        let (lit_b, lit_a) = if opts.shading == Shading::Phong { (0, 0) } else { (b * lights_per_tri, a * lights_per_tri) };
+        let host = self.host;
+        let stats = FrameStats {
+            triangles_in: a,
+            clipped_away: geo.clip.clipped_away,
+            split_by_clipping: geo.clip.split,
+            sent_to_rc: geo.clip.sent,
+            zero_area,
+            after_culling: b,
+            flagged_visible: count(&flagged),
+            visible_final: count(&in_final),
+            rc,
+            covered_pixels: covered,
+            depth_complexity: per(rc.fragments),
+            overdraw: per(rc.z_passes),
+            tdbs_writes: self.setups,
+            cs_lightings: if opts.shading == Shading::Phong { covered * nlights } else { 0 },
+            host,
+            host_ops: host.ops(),
+            host_type_i: HostOps { view_normals: 3 * a, lighting: lit_b, ..geometry },
+            host_type_ii: HostOps { view_normals: 3 * a, lighting: lit_a, ..geometry },
+            clip: geo.clip,
+        };
+        Ok(Frame { screen: opts.screen, rgb: out.rgb, index, hw_index: out.ibuf, zbuf: out.zbuf, results, stats })
+    }
+}
+
+/// The host program of several frames, answering the chipset's visibility reports frame by frame.
+struct Host<'a> {
+    frames: Vec<HostFrame<'a>>,
+}
+
+impl LowerPipeline for Host<'_> {
+    fn visible(&mut self, frame: usize, position: usize) -> Result<SetupCommand, String> {
+        let n = self.frames.len();
+        self.frames.get_mut(frame).ok_or_else(|| format!("the chipset reported a triangle of frame {frame}, but {n} frames were sent"))?.visible(position)
+    }
+}
+
+/// Render `frames` (mesh and options each) through `chip` in one run: back to back where the chipset
+/// overlaps frames. Every frame must have the chipset's screen size.
+pub fn render_frames_with(frames: &[(&Mesh, &RenderOptions)], chip: &mut dyn Chipset) -> Result<Vec<Frame>, String> {
+    if frames.is_empty() {
+        return Err("no frames to render".into());
+    }
+    let host_frames = frames.iter().map(|(m, o)| HostFrame::new(m, o)).collect::<Result<Vec<_>, _>>()?;
+    let jobs: Vec<FrameJob> = host_frames.iter().map(|h| h.job()).collect();
+    let mut host = Host { frames: host_frames };
+    let outs = chip.run(&jobs, &mut host)?;
+    if outs.len() != jobs.len() {
+        return Err(format!("the chipset returned {} frames for {}", outs.len(), jobs.len()));
+    }
+    host.frames.into_iter().zip(outs).map(|(h, o)| h.finish(o)).collect()
+}
+
+/// Render one frame of `mesh` through `chip`.
+pub fn render_with(mesh: &Mesh, opts: &RenderOptions, chip: &mut dyn Chipset) -> Result<Frame, String> {
+    Ok(render_frames_with(&[(mesh, opts)], chip)?.remove(0))
 }
 
 /// Render one frame through the algorithmic model.

@@ -75,37 +75,61 @@ pub struct Chipset {
     pub video_tuser: Signal<Out, Bit>,
     /// End of line.
     pub video_tlast: Signal<Out, Bit>,
-    // Z-buffer (W*H words of 24 bits; address y*W + x)
+    // Z-buffer (W*H words of 24 bits; address y*W + x): the RC's alone, one bank, never cleared
+    // between frames (a depth under a background index counts as far, see `rc::z_test`).
     /// Read enable and address (the RC's Z-test); `z_rd_data` holds the word one cycle later.
     pub z_re: Signal<Out, Bit>,
     pub z_rd_addr: Signal<Out, Bits<20>>,
     pub z_rd_data: Signal<In, Bits<24>>,
-    /// Write port (the RC's Z-test passes and clear, the CS's clear-behind).
+    /// Write port (the RC's passes and clear).
     pub z_we: Signal<Out, Bit>,
     pub z_wr_addr: Signal<Out, Bits<20>>,
     pub z_wr_data: Signal<Out, Bits<24>>,
-    // I-buffer (W*H words of 16 bits)
-    /// Read port (the CS's scan-out).
-    pub i_re: Signal<Out, Bit>,
-    pub i_rd_addr: Signal<Out, Bits<20>>,
-    pub i_rd_data: Signal<In, Bits<16>>,
-    /// Write port (the RC's passes and clear, the CS's clear-behind).
-    pub i_we: Signal<Out, Bit>,
-    pub i_wr_addr: Signal<Out, Bits<20>>,
-    pub i_wr_data: Signal<Out, Bits<16>>,
-    // TdbS (2^16 records of 424 bits, address = triangle index)
-    /// Read port (the CS).
+    // I-buffer: two banks of W*H words of 16 bits; address bit 20 is the bank, bits 19:0 y*W + x.
+    /// Draw side (the RC, in the draw bank): the index read with the depth (same address as `z_rd_addr`).
+    pub id_re: Signal<Out, Bit>,
+    pub id_rd_addr: Signal<Out, Bits<21>>,
+    pub id_rd_data: Signal<In, Bits<16>>,
+    /// Draw side: the RC's passes and clear.
+    pub id_we: Signal<Out, Bit>,
+    pub id_wr_addr: Signal<Out, Bits<21>>,
+    pub id_wr_data: Signal<Out, Bits<16>>,
+    /// Scan side (the CS, in the scan bank): the scan-out's reads.
+    pub is_re: Signal<Out, Bit>,
+    pub is_rd_addr: Signal<Out, Bits<21>>,
+    pub is_rd_data: Signal<In, Bits<16>>,
+    /// Scan side: the CS's clear-behind.
+    pub is_we: Signal<Out, Bit>,
+    pub is_wr_addr: Signal<Out, Bits<21>>,
+    pub is_wr_data: Signal<Out, Bits<16>>,
+    // TdbS: two banks of 2^16 records of 424 bits; address bit 16 is the bank, bits 15:0 the index.
+    /// Read port (the CS, in the scan bank).
     pub t_re: Signal<Out, Bit>,
-    pub t_rd_addr: Signal<Out, Bits<16>>,
+    pub t_rd_addr: Signal<Out, Bits<17>>,
     pub t_rd_data: Signal<In, TdbsRecord>,
-    /// Write port (colour setup).
+    /// Write port (colour setup, in the draw bank).
     pub t_we: Signal<Out, Bit>,
-    pub t_wr_addr: Signal<Out, Bits<16>>,
+    pub t_wr_addr: Signal<Out, Bits<17>>,
     pub t_wr_data: Signal<Out, TdbsRecord>,
+    /// The bank the RC and colour setup draw into (the address bit above, for a memory wrapper or a
+    /// waveform reader); the CS scans the other one once a scan has started.
+    pub draw_bank: Signal<Out, Bit>,
 
     rc: Rc,
     colour_setup: ColourSetup,
     cs: ColorShader,
+    /// Bank of the frame being drawn, and of the frame being scanned out: swapped when a scan starts.
+    draw_bank_r: DFF<Bit>,
+    scan_bank_r: DFF<Bit>,
+    scan_taken: Signal<Local, Bit>,
+    ia_draw_rd: Signal<Local, Bits<21>>,
+    ia_draw_wr: Signal<Local, Bits<21>>,
+    ia_scan_rd: Signal<Local, Bits<21>>,
+    ia_scan_wr: Signal<Local, Bits<21>>,
+    ta_rd: Signal<Local, Bits<17>>,
+    ta_wr: Signal<Local, Bits<17>>,
+    bank_i: Constant<Bits<21>>,
+    bank_t: Constant<Bits<17>>,
     width: Constant<Bits<11>>,
     height: Constant<Bits<11>>,
 }
@@ -142,21 +166,39 @@ impl Chipset {
             z_we: Default::default(),
             z_wr_addr: Default::default(),
             z_wr_data: Default::default(),
-            i_re: Default::default(),
-            i_rd_addr: Default::default(),
-            i_rd_data: Default::default(),
-            i_we: Default::default(),
-            i_wr_addr: Default::default(),
-            i_wr_data: Default::default(),
+            id_re: Default::default(),
+            id_rd_addr: Default::default(),
+            id_rd_data: Default::default(),
+            id_we: Default::default(),
+            id_wr_addr: Default::default(),
+            id_wr_data: Default::default(),
+            is_re: Default::default(),
+            is_rd_addr: Default::default(),
+            is_rd_data: Default::default(),
+            is_we: Default::default(),
+            is_wr_addr: Default::default(),
+            is_wr_data: Default::default(),
             t_re: Default::default(),
             t_rd_addr: Default::default(),
             t_rd_data: Default::default(),
             t_we: Default::default(),
             t_wr_addr: Default::default(),
             t_wr_data: Default::default(),
+            draw_bank: Default::default(),
             rc: Rc::new(width, height)?,
             colour_setup: ColourSetup::default(),
             cs: ColorShader::default(),
+            draw_bank_r: Default::default(),
+            scan_bank_r: Default::default(),
+            scan_taken: Default::default(),
+            ia_draw_rd: Default::default(),
+            ia_draw_wr: Default::default(),
+            ia_scan_rd: Default::default(),
+            ia_scan_wr: Default::default(),
+            ta_rd: Default::default(),
+            ta_wr: Default::default(),
+            bank_i: Constant::new((1u64 << 20).into()),
+            bank_t: Constant::new((1u64 << 16).into()),
             width: Constant::new((width as u64).into()),
             height: Constant::new((height as u64).into()),
         })
@@ -169,22 +211,53 @@ impl Logic for Chipset {
         self.rc.clock.next = self.clock.val();
         self.colour_setup.clock.next = self.clock.val();
         self.cs.clock.next = self.clock.val();
+        dff_setup!(self, clock, draw_bank_r, scan_bank_r);
 
-        // Geometry: the RC.
+        // Banks: a scan start the CS takes scans the bank just drawn, and drawing goes on in the other.
+        self.scan_taken.next = self.scan_start.val() & !self.cs.busy.val();
+        if self.scan_taken.val() {
+            self.scan_bank_r.d.next = self.draw_bank_r.q.val();
+            self.draw_bank_r.d.next = !self.draw_bank_r.q.val();
+        }
+        self.draw_bank.next = self.draw_bank_r.q.val();
+
+        // Geometry: the RC, on the Z-buffer and the draw bank of the I-buffer.
         StreamIn::<RcCommand>::link(&mut self.rc_cmd, &mut self.rc.cmd);
         StreamOut::<RcResult>::link(&mut self.rc_result, &mut self.rc.result);
         self.z_re.next = self.rc.z_re.val();
         self.z_rd_addr.next = self.rc.z_rd_addr.val();
         self.rc.z_rd_data.next = self.z_rd_data.val();
+        self.z_we.next = self.rc.z_we.val();
+        self.z_wr_addr.next = self.rc.z_wr_addr.val();
+        self.z_wr_data.next = self.rc.z_wr_data.val();
+        self.ia_draw_rd.next = bit_cast::<21, 20>(self.rc.z_rd_addr.val());
+        self.id_re.next = self.rc.z_re.val();
+        self.id_rd_addr.next = self.ia_draw_rd.val();
+        if self.rc.z_re.val() & self.draw_bank_r.q.val() {
+            self.id_rd_addr.next = self.ia_draw_rd.val() | self.bank_i.val();
+        }
+        self.rc.i_rd_data.next = self.id_rd_data.val();
+        self.ia_draw_wr.next = bit_cast::<21, 20>(self.rc.i_wr_addr.val());
+        self.id_we.next = self.rc.i_we.val();
+        self.id_wr_addr.next = self.ia_draw_wr.val();
+        if self.rc.i_we.val() & self.draw_bank_r.q.val() {
+            self.id_wr_addr.next = self.ia_draw_wr.val() | self.bank_i.val();
+        }
+        self.id_wr_data.next = self.rc.i_wr_data.val();
 
-        // Shading: colour setup writes TdbS.
+        // Shading: colour setup writes the draw bank of TdbS.
         StreamIn::<SetupCommand>::link(&mut self.setup_cmd, &mut self.colour_setup.cmd);
         self.setup_busy.next = self.colour_setup.busy.val();
+        self.ta_wr.next = bit_cast::<17, 16>(self.colour_setup.tdbs_write_address.val());
         self.t_we.next = self.colour_setup.tdbs_write_enable.val();
-        self.t_wr_addr.next = self.colour_setup.tdbs_write_address.val();
+        self.t_wr_addr.next = self.ta_wr.val();
+        if self.colour_setup.tdbs_write_enable.val() & self.draw_bank_r.q.val() {
+            self.t_wr_addr.next = self.ta_wr.val() | self.bank_t.val();
+        }
         self.t_wr_data.next = self.colour_setup.tdbs_write_data.val();
 
-        // Scan-out: the CS reads the I-buffer and TdbS.
+        // Scan-out: the CS reads the scan bank of the I-buffer and TdbS and clears the I-buffer behind
+        // (its Z-buffer clear-behind is not connected: the RC owns the Z-buffer, and needs no clear).
         self.cs.start.next = self.scan_start.val();
         self.cs.width.next = self.width.val();
         self.cs.height.next = self.height.val();
@@ -199,35 +272,32 @@ impl Logic for Chipset {
         self.cs.material_write_slot.next = self.material_write_slot.val();
         self.cs.material_write_data.next = self.material_write_data.val();
         self.scan_busy.next = self.cs.busy.val();
-        self.i_re.next = self.cs.ibuf_read_enable.val();
-        self.i_rd_addr.next = self.cs.ibuf_read_address.val();
-        self.cs.ibuf_read_data.next = self.i_rd_data.val();
+        self.ia_scan_rd.next = bit_cast::<21, 20>(self.cs.ibuf_read_address.val());
+        self.is_re.next = self.cs.ibuf_read_enable.val();
+        self.is_rd_addr.next = self.ia_scan_rd.val();
+        if self.cs.ibuf_read_enable.val() & self.scan_bank_r.q.val() {
+            self.is_rd_addr.next = self.ia_scan_rd.val() | self.bank_i.val();
+        }
+        self.cs.ibuf_read_data.next = self.is_rd_data.val();
+        self.ia_scan_wr.next = bit_cast::<21, 20>(self.cs.ibuf_write_address.val());
+        self.is_we.next = self.cs.ibuf_write_enable.val();
+        self.is_wr_addr.next = self.ia_scan_wr.val();
+        if self.cs.ibuf_write_enable.val() & self.scan_bank_r.q.val() {
+            self.is_wr_addr.next = self.ia_scan_wr.val() | self.bank_i.val();
+        }
+        self.is_wr_data.next = self.cs.ibuf_write_data.val();
+        self.ta_rd.next = bit_cast::<17, 16>(self.cs.tdbs_read_address.val());
         self.t_re.next = self.cs.tdbs_read_enable.val();
-        self.t_rd_addr.next = self.cs.tdbs_read_address.val();
+        self.t_rd_addr.next = self.ta_rd.val();
+        if self.cs.tdbs_read_enable.val() & self.scan_bank_r.q.val() {
+            self.t_rd_addr.next = self.ta_rd.val() | self.bank_t.val();
+        }
         self.cs.tdbs_read_data.next = self.t_rd_data.val();
         self.video_tdata.next = self.cs.video_tdata.val();
         self.video_tvalid.next = self.cs.video_tvalid.val();
         self.cs.video_tready.next = self.video_tready.val();
         self.video_tuser.next = self.cs.video_tuser.val();
         self.video_tlast.next = self.cs.video_tlast.val();
-
-        // Shared write ports: the CS's clear-behind, else the RC.
-        self.z_we.next = self.rc.z_we.val();
-        self.z_wr_addr.next = self.rc.z_wr_addr.val();
-        self.z_wr_data.next = self.rc.z_wr_data.val();
-        if self.cs.zbuf_write_enable.val() {
-            self.z_we.next = true;
-            self.z_wr_addr.next = self.cs.zbuf_write_address.val();
-            self.z_wr_data.next = self.cs.zbuf_write_data.val();
-        }
-        self.i_we.next = self.rc.i_we.val();
-        self.i_wr_addr.next = self.rc.i_wr_addr.val();
-        self.i_wr_data.next = self.rc.i_wr_data.val();
-        if self.cs.ibuf_write_enable.val() {
-            self.i_we.next = true;
-            self.i_wr_addr.next = self.cs.ibuf_write_address.val();
-            self.i_wr_data.next = self.cs.ibuf_write_data.val();
-        }
     }
 }
 

@@ -6,10 +6,9 @@
 
 use crate::chipset::{PhaseCycles, RtlChipset};
 use crate::verilator::VerilatorChipset;
-use golden::raster::{CullMode, FrontFace, RcCounts, TriResult};
-use golden::render::{render_with, Chipset, Frame, RcCommand, RenderOptions, ScanOut, SetupCommand};
+use golden::raster::TriResult;
+use golden::render::{render_frames_with, Chipset, Frame, FrameJob, FrameOut, LowerPipeline, RenderOptions, ScanOut};
 use golden::scene::Mesh;
-use golden::shade::{PhongLights, Shading};
 
 /// A chipset simulation that counts cycles per phase and may write a VCD.
 pub trait CycleChipset: Chipset {
@@ -57,38 +56,37 @@ pub struct TimedFrame {
 
 /// Render one frame of `mesh` through `chip` (see [`TimedFrame`]).
 pub fn render_timed(mesh: &Mesh, opts: &RenderOptions, chip: &mut dyn CycleChipset) -> TimedFrame {
-    let mut rec = Recorder { chip, results: Vec::new(), setup_commands: 0, scanout: None };
-    let t0 = std::time::Instant::now();
-    let frame = render_with(mesh, opts, &mut rec);
-    let secs = t0.elapsed().as_secs_f64();
-    let phases = rec.scanout.is_some().then(|| rec.chip.phases());
-    TimedFrame { frame, secs, phases, results: rec.results, setup_commands: rec.setup_commands, scanout: rec.scanout }
+    render_timed_frames(mesh, opts, 1, chip)
 }
 
-/// Passes every call through to the chipset and keeps what went in and came out.
+/// Render `mesh` `frames` times back to back through `chip`; the [`TimedFrame`] of the last frame
+/// (whose `phases` include the frame interval when `frames` > 1).
+pub fn render_timed_frames(mesh: &Mesh, opts: &RenderOptions, frames: usize, chip: &mut dyn CycleChipset) -> TimedFrame {
+    let mut rec = Recorder { chip, last: None };
+    let t0 = std::time::Instant::now();
+    let jobs: Vec<(&Mesh, &RenderOptions)> = (0..frames).map(|_| (mesh, opts)).collect();
+    let frame = render_frames_with(&jobs, &mut rec).map(|mut v| v.pop().expect("one frame at least"));
+    let secs = t0.elapsed().as_secs_f64();
+    let last = rec.last.take();
+    let phases = last.as_ref().map(|_| rec.chip.phases());
+    let (results, scanout) = match last {
+        Some(o) => (o.results, Some(o.scan)),
+        None => (Vec::new(), None),
+    };
+    let setup_commands = results.iter().filter(|r| r.visible).count() as u64;
+    TimedFrame { frame, secs, phases, results, setup_commands, scanout }
+}
+
+/// Passes the run through to the chipset and keeps what came out for the last frame.
 struct Recorder<'a> {
     chip: &'a mut dyn CycleChipset,
-    results: Vec<TriResult>,
-    setup_commands: u64,
-    scanout: Option<ScanOut>,
+    last: Option<FrameOut>,
 }
 
 impl Chipset for Recorder<'_> {
-    fn rasterize(&mut self, tris: &[RcCommand], cull: CullMode, front: FrontFace) -> Result<Vec<TriResult>, String> {
-        let r = self.chip.rasterize(tris, cull, front)?;
-        self.results = r.clone();
-        Ok(r)
-    }
-    fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String> {
-        self.setup_commands = cmds.len() as u64;
-        self.chip.colour_setup(cmds)
-    }
-    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String> {
-        let s = self.chip.scanout(shading, lights, background)?;
-        self.scanout = Some(s.clone());
-        Ok(s)
-    }
-    fn rc_counts(&self) -> Option<RcCounts> {
-        self.chip.rc_counts()
+    fn run(&mut self, frames: &[FrameJob], host: &mut dyn LowerPipeline) -> Result<Vec<FrameOut>, String> {
+        let out = self.chip.run(frames, host)?;
+        self.last = out.last().cloned();
+        Ok(out)
     }
 }

@@ -1,34 +1,48 @@
 //! The RTL backend: the `hdl::chipset::Chipset` top simulated in RustHDL (direct drive, GUIDE §5)
 //! behind `golden::render::Chipset`, so that the host program of the golden model drives the RTL
-//! through seed 001's dual pipeline unchanged. The memories behind the top's ports (Z-buffer, I-buffer,
-//! TdbS) are modelled here: synchronous, latency 1, read-before-write.
+//! through seed 001's two pipelines in parallel, frames back to back. The memories behind the top's
+//! ports (Z-buffer, two I-buffer banks, two TdbS banks) are modelled here: synchronous, latency 1,
+//! read-before-write.
 //!
-//! Phases, as the host sequences them, and the cycles each takes (`cycles.json`):
-//! * `clear`: cycles in which the RC writes the clear values (counted on the I-buffer port; W x H on
-//!   the first frame after reset, 0 on later frames, which the CS cleared behind the previous scan-out);
-//! * `geometry_transfer`: from the first triangle command offered to the last command taken: the time
-//!   the host spends sending geometry (it overlaps rasterization);
-//! * `rasterization`: from the frame command to the end-of-frame result (includes `clear`);
-//! * `colour_setup`: from the first setup command offered until colour setup is idle after the last;
-//! * `scan_out`: from the scan start to the last pixel taken (the consumer is always ready);
-//! * `total`: from the frame command to the end of scan-out (rasterization + colour setup + scan-out).
+//! # The host loop (the Verilator harness `tb/verilator/chipset/harness.cpp` runs the same one)
 //!
-//! Beside the cycles, one count of work seen at the ports: `z_reads`, the cycles in rasterization with
-//! a Z-buffer read (`z_re`). The RC reads Z once for every covered candidate (fragment) it Z-tests, so
-//! this is the RC's fragment count as the hardware did it, for fragments per clock against the limit of
-//! one read per clock on the Z port.
+//! One clock loop drives every port at once:
+//! * *Upper pipeline*: frame f's RC commands (frame start, triangles, end of frame) are offered one
+//!   after the other once frame f-1's scan-out has been started (the start swaps the banks); frame 0
+//!   and 1 after reset carry `clear` (each bank once), later frames do not.
+//! * *Lower pipeline*: when a result reports a triangle visible, the host lights it at once
+//!   (`LowerPipeline::visible`) and queues its colour-setup command; the queue is offered to
+//!   `setup_cmd` from the next cycle, while the RC goes on with later triangles.
+//! * Frame f is *drawn* when its end-of-frame result has come, its queue is empty and colour setup is
+//!   idle. Its scan-out begins once it is drawn and frame f-1's scan-out has ended: Phong constants
+//!   (one write per cycle), then `scan_start` until the CS takes it, then the pixels (the display is
+//!   always ready).
+//!
+//! Per frame (`cycles.json`, [`PhaseCycles`]):
+//! * `clear`: the RC's clear writes (background index on the draw side of the I-buffer);
+//! * `geometry_transfer`: from the first triangle command taken to the last command taken;
+//! * `rasterization`: from the frame command first offered to the end-of-frame result;
+//! * `colour_setup`: from the first setup command offered until colour setup is idle after the last
+//!   (it overlaps rasterization);
+//! * `scan_out`: from the first Phong-constant write or scan start offered to the last pixel;
+//! * `total`: from the frame command to the end of its scan-out;
+//! * `frame_interval`: from the previous frame's scan start (taken) to this frame's: the time per
+//!   frame of a long run, measured at the ports (none for the first frame of a run);
+//! * `z_reads`: cycles in rasterization with a Z-buffer read, the fragments the RC Z-tested.
 
 use crate::cs::pack::{command_of, record_of, rgb_of, tdata_of};
 use crate::rc::bench::command_word;
 use golden::cycle::colour_setup::SetupCmd;
 use golden::cycle::rc::RcCmd;
-use golden::format::{Screen, DEPTH_MAX};
-use golden::raster::{Culled, CullMode, FrontFace, TriResult};
-use golden::render::{Chipset, RcCommand, ScanOut, SetupCommand};
-use golden::cycle::color_shader::phong_config;
-use golden::shade::{PhongLights, Shading, TdbsEntry};
+use golden::format::{Screen, DEPTH_MAX, INDEX_BACKGROUND};
+use golden::raster::{Culled, TriResult};
+use golden::render::{Chipset, FrameJob, FrameOut, LowerPipeline, ScanOut};
+use golden::cycle::color_shader::{phong_config, CsConfigWrite};
+use golden::shade::{Shading, TdbsEntry};
 use hdl::chipset::Chipset as ChipsetRtl;
 use hdl::cs::TdbsRecord;
+use hdl::rc::RcCommand;
+use std::collections::VecDeque;
 use rust_hdl::core::vcd_probe::VCDProbe;
 use rust_hdl::prelude::*;
 use std::fs::File;
@@ -44,6 +58,8 @@ pub struct PhaseCycles {
     pub colour_setup: u64,
     pub scan_out: u64,
     pub total: u64,
+    /// From the previous frame's scan start to this one's (none for a run's first frame).
+    pub frame_interval: Option<u64>,
     /// Cycles in rasterization with a Z-buffer read: the fragments the RC Z-tested.
     pub z_reads: u64,
 }
@@ -51,8 +67,15 @@ pub struct PhaseCycles {
 impl PhaseCycles {
     pub fn to_json(&self) -> String {
         format!(
-            "{{\n  \"clear\": {},\n  \"geometry_transfer\": {},\n  \"rasterization\": {},\n  \"colour_setup\": {},\n  \"scan_out\": {},\n  \"total\": {},\n  \"z_reads\": {}\n}}\n",
-            self.clear, self.geometry_transfer, self.rasterization, self.colour_setup, self.scan_out, self.total, self.z_reads
+            "{{\n  \"clear\": {},\n  \"geometry_transfer\": {},\n  \"rasterization\": {},\n  \"colour_setup\": {},\n  \"scan_out\": {},\n  \"total\": {},\n  \"frame_interval\": {},\n  \"z_reads\": {}\n}}\n",
+            self.clear,
+            self.geometry_transfer,
+            self.rasterization,
+            self.colour_setup,
+            self.scan_out,
+            self.total,
+            self.frame_interval.map_or("null".to_string(), |v| v.to_string()),
+            self.z_reads
         )
     }
 }
@@ -65,19 +88,21 @@ pub struct RtlChipset {
     pub screen: Screen,
     uut: Box<ChipsetRtl>,
     zbuf: Vec<u32>,
+    /// Two banks of W*H words: bank b at b*W*H.
     ibuf: Vec<u32>,
+    /// Two banks of 2^16 records: bank b at b*2^16.
     tdbs: Vec<TdbsRecord>,
     z_rd: u32,
-    i_rd: u32,
+    id_rd: u32,
+    is_rd: u32,
     t_rd: TdbsRecord,
     pub cycle: u64,
+    /// Cycles per phase of the last frame.
     pub phases: PhaseCycles,
-    /// I-buffer writes of the background index (the RC's clear) since the last frame command.
-    clear_writes: u64,
-    /// The cycle of this frame's frame command.
-    frame_start: u64,
-    /// The buffers hold the previous frame's clear-behind (false after reset: memory contents unknown).
-    cleared: bool,
+    /// Cycles per phase of every frame of the last run.
+    pub frame_phases: Vec<PhaseCycles>,
+    /// Frames started since reset: frames 0 and 1 clear their bank, later ones find it cleared.
+    frames_started: u64,
     ibuf_after_raster: Vec<u32>,
     zbuf_after_raster: Vec<u32>,
     vcd: Option<VCDProbe<BufWriter<File>>>,
@@ -139,18 +164,25 @@ impl Block for Ports<'_> {
         u.z_we.accept("z_we", probe);
         u.z_wr_addr.accept("z_wr_addr", probe);
         u.z_wr_data.accept("z_wr_data", probe);
-        u.i_re.accept("i_re", probe);
-        u.i_rd_addr.accept("i_rd_addr", probe);
-        u.i_rd_data.accept("i_rd_data", probe);
-        u.i_we.accept("i_we", probe);
-        u.i_wr_addr.accept("i_wr_addr", probe);
-        u.i_wr_data.accept("i_wr_data", probe);
+        u.id_re.accept("id_re", probe);
+        u.id_rd_addr.accept("id_rd_addr", probe);
+        u.id_rd_data.accept("id_rd_data", probe);
+        u.id_we.accept("id_we", probe);
+        u.id_wr_addr.accept("id_wr_addr", probe);
+        u.id_wr_data.accept("id_wr_data", probe);
+        u.is_re.accept("is_re", probe);
+        u.is_rd_addr.accept("is_rd_addr", probe);
+        u.is_rd_data.accept("is_rd_data", probe);
+        u.is_we.accept("is_we", probe);
+        u.is_wr_addr.accept("is_wr_addr", probe);
+        u.is_wr_data.accept("is_wr_data", probe);
         u.t_re.accept("t_re", probe);
         u.t_rd_addr.accept("t_rd_addr", probe);
         u.t_rd_data.accept("t_rd_data", probe);
         u.t_we.accept("t_we", probe);
         u.t_wr_addr.accept("t_wr_addr", probe);
         u.t_wr_data.accept("t_wr_data", probe);
+        u.draw_bank.accept("draw_bank", probe);
         probe.visit_end_scope(name, self);
     }
 }
@@ -183,16 +215,16 @@ impl RtlChipset {
             screen,
             uut,
             zbuf: (0..n).map(|i| (i as u32).wrapping_mul(2654435761) & DEPTH_MAX).collect(),
-            ibuf: (0..n).map(|i| (i as u32).wrapping_mul(40503) & 0xffff).collect(),
-            tdbs: vec![TdbsRecord::default(); 1 << 16],
+            ibuf: (0..2 * n).map(|i| (i as u32).wrapping_mul(40503) & 0xffff).collect(),
+            tdbs: vec![TdbsRecord::default(); 2 << 16],
             z_rd: 0,
-            i_rd: 0,
+            id_rd: 0,
+            is_rd: 0,
             t_rd: TdbsRecord::default(),
             cycle: 0,
             phases: PhaseCycles::default(),
-            clear_writes: 0,
-            frame_start: 0,
-            cleared: false,
+            frame_phases: Vec::new(),
+            frames_started: 0,
             ibuf_after_raster: Vec::new(),
             zbuf_after_raster: Vec::new(),
             vcd,
@@ -239,7 +271,8 @@ impl RtlChipset {
     fn low(&mut self) -> Result<(), String> {
         let u = &mut self.uut;
         u.z_rd_data.next = (self.z_rd as u64).into();
-        u.i_rd_data.next = (self.i_rd as u64).into();
+        u.id_rd_data.next = (self.id_rd as u64).into();
+        u.is_rd_data.next = (self.is_rd as u64).into();
         u.t_rd_data.next = self.t_rd;
         u.clock.next = false.into();
         self.settle()
@@ -247,16 +280,21 @@ impl RtlChipset {
 
     fn high(&mut self) -> Result<(), String> {
         let n = self.zbuf.len();
-        let bad = |what: &str, a: usize| format!("chipset: {what} address {a} outside the {n}-word buffer in cycle {}", self.cycle);
+        let cycle = self.cycle;
+        let bad = |what: &str, a: usize| format!("chipset: {what} address {a:#x} outside the buffer (W*H = {n} words per bank) in cycle {cycle}");
+        // I-buffer address: bit 20 the bank, bits 19:0 the pixel.
+        let ia = |what: &str, a: usize| if a & 0xfffff < n { Ok((a >> 20) * n + (a & 0xfffff)) } else { Err(bad(what, a)) };
         let u = &self.uut;
         // Reads see the contents before this edge's writes.
         if u.z_re.val() {
             let a = u.z_rd_addr.val().index();
             self.z_rd = *self.zbuf.get(a).ok_or_else(|| bad("Z read", a))?;
         }
-        if u.i_re.val() {
-            let a = u.i_rd_addr.val().index();
-            self.i_rd = *self.ibuf.get(a).ok_or_else(|| bad("I read", a))?;
+        if u.id_re.val() {
+            self.id_rd = self.ibuf[ia("I read (draw side)", u.id_rd_addr.val().index())?];
+        }
+        if u.is_re.val() {
+            self.is_rd = self.ibuf[ia("I read (scan side)", u.is_rd_addr.val().index())?];
         }
         if u.t_re.val() {
             self.t_rd = self.tdbs[u.t_rd_addr.val().index()];
@@ -265,13 +303,16 @@ impl RtlChipset {
             let a = u.z_wr_addr.val().index();
             *self.zbuf.get_mut(a).ok_or_else(|| bad("Z write", a))? = u.z_wr_data.val().to_u64() as u32;
         }
-        if u.i_we.val() {
-            let a = u.i_wr_addr.val().index();
-            let d = u.i_wr_data.val().to_u64() as u32;
-            *self.ibuf.get_mut(a).ok_or_else(|| bad("I write", a))? = d;
-            if d == 0 {
-                self.clear_writes += 1;
-            }
+        let (dw, sw) = (u.id_we.val(), u.is_we.val());
+        let (da, sa) = (u.id_wr_addr.val().index(), u.is_wr_addr.val().index());
+        if dw && sw && da == sa {
+            return Err(format!("chipset: both I-buffer write ports write address {da:#x} in cycle {cycle}"));
+        }
+        if dw {
+            self.ibuf[ia("I write (draw side)", da)?] = u.id_wr_data.val().to_u64() as u32;
+        }
+        if sw {
+            self.ibuf[ia("I write (scan side)", sa)?] = u.is_wr_data.val().to_u64() as u32;
         }
         if u.t_we.val() {
             let a = u.t_wr_addr.val().index();
@@ -294,7 +335,8 @@ impl RtlChipset {
         crate::cs::color_shader_bench::drive_config(&mut **u, None);
     }
 
-    /// The buffers as the RC left them at the end of the last rasterization.
+    /// The buffers as the RC left them at the end of the last rasterization (the Z-buffer as the RC
+    /// sees it: 2^24-1 where the I-buffer holds the background index).
     pub fn buffers_after_raster(&self) -> (&[u32], &[u32]) {
         (&self.ibuf_after_raster, &self.zbuf_after_raster)
     }
@@ -303,136 +345,180 @@ impl RtlChipset {
     fn budget(&self, work: u64) -> u64 {
         1_000_000 + 64 * work
     }
+
+    /// I-buffer bank `b` and the Z-buffer as the RC sees it (a stale depth under the background index
+    /// counts as 2^24-1).
+    fn snapshot(&self, b: usize) -> (Vec<u32>, Vec<u32>) {
+        let n = self.zbuf.len();
+        let ib = self.ibuf[b * n..(b + 1) * n].to_vec();
+        let zb = ib.iter().zip(&self.zbuf).map(|(&i, &z)| if i == INDEX_BACKGROUND { DEPTH_MAX } else { z }).collect();
+        (ib, zb)
+    }
+}
+
+/// One frame's work in the host loop, with the cycles at which things happened.
+pub(crate) struct FrameRun {
+    pub words: Vec<RcCommand>,
+    pub tris: Vec<u32>,
+    pub config: Vec<CsConfigWrite>,
+    pub phong: bool,
+    pub background: u32,
+    pub results: Vec<TriResult>,
+    pub start: Option<u64>,
+    pub first_tri_taken: Option<u64>,
+    pub last_cmd_taken: u64,
+    pub eof: Option<u64>,
+    pub clear_writes: u64,
+    pub z_reads: u64,
+    pub setup_first: Option<u64>,
+    pub drawn: Option<u64>,
+    pub scan_begin: Option<u64>,
+    pub scan_taken: Option<u64>,
+    pub scan_done: Option<u64>,
+}
+
+impl FrameRun {
+    /// The RC words and scan parameters of `job`; `clear`: the frame clears its bank itself.
+    pub(crate) fn new(job: &FrameJob, clear: bool) -> Result<FrameRun, String> {
+        let mut cmds = vec![RcCmd::frame(clear)];
+        for t in &job.tris {
+            cmds.push(RcCmd::triangle(t.index, t.v, job.cull, job.front)?);
+        }
+        cmds.push(RcCmd::end_of_frame());
+        let phong = job.shading == Shading::Phong;
+        Ok(FrameRun {
+            words: cmds.iter().map(command_word).collect(),
+            tris: job.tris.iter().map(|t| t.index).collect(),
+            config: if phong { phong_config(&job.lights)? } else { Vec::new() },
+            phong,
+            background: tdata_of(job.background),
+            results: Vec::with_capacity(job.tris.len()),
+            start: None,
+            first_tri_taken: None,
+            last_cmd_taken: 0,
+            eof: None,
+            clear_writes: 0,
+            z_reads: 0,
+            setup_first: None,
+            drawn: None,
+            scan_begin: None,
+            scan_taken: None,
+            scan_done: None,
+        })
+    }
+
+    /// A result for this frame: the next triangle's. Returns whether the host must light it.
+    pub(crate) fn result(&mut self, r: TriResult) -> Result<bool, String> {
+        let k = self.results.len();
+        match self.tris.get(k) {
+            Some(&i) if i == r.index => {}
+            Some(&i) => return Err(format!("chipset: result for triangle index {} where {i} was next", r.index)),
+            None => return Err(format!("chipset: more results than the {} triangles sent", self.tris.len())),
+        }
+        self.results.push(r);
+        Ok(r.visible)
+    }
+
+    pub(crate) fn phases(&self, prev_scan_taken: Option<u64>) -> PhaseCycles {
+        let start = self.start.unwrap_or(0);
+        let eof = self.eof.unwrap_or(start);
+        let done = self.scan_done.unwrap_or(eof);
+        PhaseCycles {
+            clear: self.clear_writes,
+            geometry_transfer: self.last_cmd_taken - self.first_tri_taken.unwrap_or(self.last_cmd_taken),
+            rasterization: eof - start,
+            colour_setup: self.setup_first.map_or(0, |f| self.drawn.unwrap_or(f) - f),
+            scan_out: done - self.scan_begin.unwrap_or(done),
+            total: done - start,
+            frame_interval: prev_scan_taken.zip(self.scan_taken).map(|(a, b)| b - a),
+            z_reads: self.z_reads,
+        }
+    }
+}
+
+/// An RC result word as the host reads it.
+pub fn tri_result(r: &hdl::rc::RcResult) -> TriResult {
+    let culled = if r.zero_area {
+        Some(Culled::ZeroArea)
+    } else if r.culled {
+        Some(Culled::Facing)
+    } else {
+        None
+    };
+    TriResult { index: r.index.to_u64() as u32, culled, visible: r.visible }
+}
+
+/// Where the scan-out of the next frame stands.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub(crate) enum ScanState {
+    /// Waiting for the frame to be drawn and the previous scan-out to end.
+    Wait,
+    /// Writing Phong constant k.
+    Config(usize),
+    /// Offering `scan_start`.
+    Start,
+    /// Taking pixels.
+    Running,
 }
 
 impl Chipset for RtlChipset {
-    fn rasterize(&mut self, tris: &[RcCommand], cull: CullMode, front: FrontFace) -> Result<Vec<TriResult>, String> {
-        let mut cmds = vec![RcCmd::frame(!self.cleared)];
-        for t in tris {
-            cmds.push(RcCmd::triangle(t.index, t.v, cull, front)?);
+    fn run(&mut self, jobs: &[FrameJob], host: &mut dyn LowerPipeline) -> Result<Vec<FrameOut>, String> {
+        let mut frames = Vec::with_capacity(jobs.len());
+        for job in jobs {
+            frames.push(FrameRun::new(job, self.frames_started < 2)?);
+            self.frames_started += 1;
         }
-        cmds.push(RcCmd::end_of_frame());
-        let words: Vec<_> = cmds.iter().map(command_word).collect();
-        let mut results = Vec::with_capacity(tris.len());
-        let (mut next, start) = (0usize, self.cycle);
-        self.clear_writes = 0;
-        self.frame_start = start;
-        let (mut first_tri_taken, mut last_cmd_taken) = (None, start);
-        let mut z_reads = 0u64;
-        let limit = self.cycle + self.budget(self.screen.pixels() as u64 + 64 * tris.len() as u64);
-        loop {
-            self.idle_inputs();
-            if next < words.len() {
-                self.uut.rc_cmd.valid.next = true;
-                self.uut.rc_cmd.data.next = words[next];
-            }
-            self.low()?;
-            let u = &self.uut;
-            let taken = next < words.len() && u.rc_cmd.ready.val();
-            z_reads += u.z_re.val() as u64;
-            let mut eof = false;
-            if u.rc_result.valid.val() {
-                let r = u.rc_result.data.val();
-                if r.eof {
-                    eof = true;
-                } else {
-                    let culled = if r.zero_area {
-                        Some(Culled::ZeroArea)
-                    } else if r.culled {
-                        Some(Culled::Facing)
-                    } else {
-                        None
-                    };
-                    results.push(TriResult { index: r.index.to_u64() as u32, culled, visible: r.visible });
-                }
-            }
-            self.high()?;
-            if taken {
-                if next == 1 {
-                    first_tri_taken = Some(self.cycle - 1);
-                }
-                next += 1;
-                last_cmd_taken = self.cycle;
-            }
-            if self.cycle % 4096 == 0 {
-                let phase = if first_tri_taken.is_none() { "clear" } else { "rasterization" };
-                self.report(phase, results.len() as u64, tris.len() as u64);
-            }
-            if eof {
-                break;
-            }
-            if self.cycle > limit {
-                return Err(format!("chipset: no end-of-frame result after {} cycles", self.cycle - start));
-            }
-        }
-        if results.len() != tris.len() {
-            return Err(format!("chipset: {} results for {} triangles", results.len(), tris.len()));
-        }
-        let t0 = first_tri_taken.unwrap_or(last_cmd_taken);
-        self.phases.clear = self.clear_writes;
-        self.phases.geometry_transfer = last_cmd_taken - t0;
-        self.phases.rasterization = self.cycle - start;
-        self.phases.z_reads = z_reads;
-        self.ibuf_after_raster = self.ibuf.clone();
-        self.zbuf_after_raster = self.zbuf.clone();
-        Ok(results)
-    }
-
-    fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String> {
-        let words = cmds.iter().map(|c| SetupCmd::from_command(c).map(|s| command_of(&s))).collect::<Result<Vec<_>, _>>()?;
-        let (start, limit) = (self.cycle, self.cycle + self.budget(64 * cmds.len() as u64));
-        let mut next = 0;
-        loop {
-            self.idle_inputs();
-            if next < words.len() {
-                self.uut.setup_cmd.valid.next = true;
-                self.uut.setup_cmd.data.next = words[next];
-            }
-            self.low()?;
-            let taken = next < words.len() && self.uut.setup_cmd.ready.val();
-            let busy = self.uut.setup_busy.val() || self.uut.t_we.val();
-            self.high()?;
-            if taken {
-                next += 1;
-                if next % 256 == 0 {
-                    self.report("colour setup", next as u64, words.len() as u64);
-                }
-            }
-            if next == words.len() && !taken && !busy {
-                break;
-            }
-            if self.cycle > limit {
-                return Err(format!("chipset: colour setup did not finish in {} cycles", self.cycle - start));
-            }
-        }
-        self.phases.colour_setup = self.cycle - start;
-        Ok(())
-    }
-
-    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String> {
-        let phong = shading == Shading::Phong;
-        let config = if phong { phong_config(lights)? } else { Vec::new() };
+        let nf = frames.len();
         let (w, h) = (self.screen.width as usize, self.screen.height as usize);
-        let mut rgb = Vec::with_capacity(w * h * 3);
-        let (start, limit) = (self.cycle, self.cycle + self.budget(w as u64 * h as u64));
-        // Phong: the constants first, one write per cycle, while the CS is idle.
-        for c in &config {
-            self.idle_inputs();
-            crate::cs::color_shader_bench::drive_config(&mut *self.uut, Some(*c));
-            self.low()?;
-            self.high()?;
-        }
-        let mut started = false;
+        let mut outs: Vec<Option<FrameOut>> = vec![None; nf];
+        let mut rgb: Vec<u8> = Vec::with_capacity(w * h * 3);
+        let (mut rc_f, mut rc_next, mut res_f, mut draw_f, mut scan_f) = (0usize, 0usize, 0usize, 0usize, 0usize);
+        let mut queue: VecDeque<(usize, hdl::cs::SetupCommand)> = VecDeque::new();
+        let mut scan = ScanState::Wait;
         let mut pixels = 0usize;
-        loop {
+        let work: u64 = jobs.iter().map(|j| self.screen.pixels() as u64 + 128 * j.tris.len() as u64).sum();
+        let (start, limit) = (self.cycle, self.cycle + self.budget(work));
+        while scan_f < nf {
             self.idle_inputs();
-            self.uut.scan_background.next = (tdata_of(background) as u64).into();
+            // Upper pipeline: frame rc_f's commands, once the previous frame's scan-out has started.
+            let rc_offer = rc_f < nf && rc_next < frames[rc_f].words.len() && (rc_f == 0 || frames[rc_f - 1].scan_taken.is_some());
+            if rc_offer {
+                self.uut.rc_cmd.valid.next = true;
+                self.uut.rc_cmd.data.next = frames[rc_f].words[rc_next];
+                frames[rc_f].start.get_or_insert(self.cycle);
+            }
+            // Lower pipeline: the queued colour-setup commands.
+            if let Some((f, c)) = queue.front() {
+                self.uut.setup_cmd.valid.next = true;
+                self.uut.setup_cmd.data.next = *c;
+                frames[*f].setup_first.get_or_insert(self.cycle);
+            }
+            // Scan-out of frame scan_f.
+            if scan == ScanState::Wait && frames[scan_f].drawn.is_some() && (scan_f == 0 || frames[scan_f - 1].scan_done.is_some()) {
+                frames[scan_f].scan_begin = Some(self.cycle);
+                scan = if frames[scan_f].config.is_empty() { ScanState::Start } else { ScanState::Config(0) };
+            }
+            let sf = &frames[scan_f];
+            self.uut.scan_background.next = (sf.background as u64).into();
             self.uut.scan_clear_behind.next = true;
-            self.uut.scan_phong.next = phong;
-            self.uut.scan_start.next = !started;
+            self.uut.scan_phong.next = sf.phong;
+            match scan {
+                ScanState::Config(k) => crate::cs::color_shader_bench::drive_config(&mut *self.uut, Some(sf.config[k])),
+                ScanState::Start => self.uut.scan_start.next = true,
+                _ => {}
+            }
             self.low()?;
             let u = &self.uut;
-            let start_taken = !started && !u.scan_busy.val();
+            let rc_taken = rc_offer && u.rc_cmd.ready.val();
+            let setup_taken = !queue.is_empty() && u.setup_cmd.ready.val();
+            let setup_busy = u.setup_busy.val() || u.t_we.val();
+            let start_taken = scan == ScanState::Start && !u.scan_busy.val();
+            let scan_busy = u.scan_busy.val();
+            if res_f < nf {
+                frames[res_f].z_reads += u.z_re.val() as u64;
+                frames[res_f].clear_writes += (u.id_we.val() && u.id_wr_data.val().to_u64() == 0) as u64;
+            }
+            let result = u.rc_result.valid.val().then(|| u.rc_result.data.val());
             let beat = if u.video_tvalid.val() {
                 let (x, y) = (pixels % w, pixels / w);
                 if u.video_tuser.val() != (pixels == 0) {
@@ -445,12 +531,68 @@ impl Chipset for RtlChipset {
             } else {
                 None
             };
-            let busy = u.scan_busy.val();
+            let draw_bank = u.draw_bank.val() as usize;
+            // The host answers a visible result at once (its command is offered from the next cycle).
+            let mut eof = false;
+            if let Some(r) = result {
+                if res_f >= nf {
+                    return Err(format!("chipset: a result after the last frame's end of frame in cycle {}", self.cycle));
+                }
+                if r.eof {
+                    eof = true;
+                } else if frames[res_f].result(tri_result(&r))? {
+                    let position = frames[res_f].results.len() - 1;
+                    let c = host.visible(res_f, position)?;
+                    queue.push_back((res_f, command_of(&SetupCmd::from_command(&c)?)));
+                }
+            }
             self.high()?;
-            started |= start_taken;
+            let now = self.cycle;
+            if rc_taken {
+                let fr = &mut frames[rc_f];
+                if rc_next == 1 {
+                    fr.first_tri_taken = Some(now - 1);
+                }
+                fr.last_cmd_taken = now;
+                rc_next += 1;
+                if rc_next == fr.words.len() {
+                    (rc_f, rc_next) = (rc_f + 1, 0);
+                }
+            }
+            if setup_taken {
+                queue.pop_front();
+            }
+            if eof {
+                let fr = &mut frames[res_f];
+                if fr.results.len() != fr.tris.len() {
+                    return Err(format!("chipset: {} results for {} triangles", fr.results.len(), fr.tris.len()));
+                }
+                fr.eof = Some(now);
+                let (ib, zb) = self.snapshot(draw_bank);
+                self.ibuf_after_raster = ib;
+                self.zbuf_after_raster = zb;
+                outs[res_f] = Some(FrameOut {
+                    results: std::mem::take(&mut fr.results),
+                    scan: ScanOut { rgb: Vec::new(), ibuf: self.ibuf_after_raster.clone(), zbuf: self.zbuf_after_raster.clone() },
+                    rc_counts: None,
+                });
+                res_f += 1;
+            }
+            if draw_f < nf && frames[draw_f].eof.is_some() && queue.is_empty() && !setup_taken && !setup_busy {
+                frames[draw_f].drawn = Some(now);
+                draw_f += 1;
+            }
+            match scan {
+                ScanState::Config(k) => scan = if k + 1 == frames[scan_f].config.len() { ScanState::Start } else { ScanState::Config(k + 1) },
+                ScanState::Start if start_taken => {
+                    frames[scan_f].scan_taken = Some(now - 1);
+                    scan = ScanState::Running;
+                }
+                _ => {}
+            }
             if let Some(p) = beat {
-                if pixels == w * h {
-                    return Err("chipset: more pixels than the screen has".into());
+                if scan != ScanState::Running || pixels == w * h {
+                    return Err(format!("chipset: a pixel no scan-out asked for in cycle {}", now - 1));
                 }
                 rgb.extend_from_slice(&p);
                 pixels += 1;
@@ -458,23 +600,33 @@ impl Chipset for RtlChipset {
                     self.report("scan-out", pixels as u64, (w * h) as u64);
                 }
             }
-            if started && pixels == w * h && !busy {
-                break;
+            if scan == ScanState::Running && pixels == w * h && !scan_busy {
+                frames[scan_f].scan_done = Some(now);
+                let out = outs[scan_f].as_mut().ok_or("chipset: a frame scanned out before its end of frame")?;
+                out.scan.rgb = std::mem::replace(&mut rgb, Vec::with_capacity(w * h * 3));
+                (scan, pixels) = (ScanState::Wait, 0);
+                scan_f += 1;
             }
-            if self.cycle > limit {
-                return Err(format!("chipset: scan-out produced {pixels} of {} pixels in {} cycles", w * h, self.cycle - start));
+            if now % 4096 == 0 && res_f < nf {
+                let phase = if frames[res_f].first_tri_taken.is_none() { "clear" } else { "rasterization" };
+                self.report(phase, frames[res_f].results.len() as u64, frames[res_f].tris.len() as u64);
+            }
+            if now > limit {
+                return Err(format!(
+                    "chipset: {nf} frames not done after {} cycles ({res_f} drawn by the RC, {scan_f} scanned out)",
+                    now - start
+                ));
             }
         }
-        self.phases.scan_out = self.cycle - start;
-        self.phases.total = self.cycle - self.frame_start;
-        self.cleared = true;
-        Ok(ScanOut { rgb, ibuf: self.ibuf_after_raster.clone(), zbuf: self.zbuf_after_raster.clone() })
+        self.frame_phases = (0..nf).map(|f| frames[f].phases(if f > 0 { frames[f - 1].scan_taken } else { None })).collect();
+        self.phases = self.frame_phases.last().cloned().unwrap_or_default();
+        outs.into_iter().map(|o| o.ok_or_else(|| "chipset: a frame without output".to_string())).collect()
     }
 }
 
-/// TdbS as the RTL left it, in the golden model's terms (for checks).
-pub fn tdbs_entries(c: &RtlChipset, indices: &[u32]) -> Vec<TdbsEntry> {
-    indices.iter().map(|&i| crate::cs::pack::entry_of(&c.tdbs[i as usize])).collect()
+/// TdbS bank `bank` as the RTL left it, in the golden model's terms (for checks).
+pub fn tdbs_entries(c: &RtlChipset, bank: usize, indices: &[u32]) -> Vec<TdbsEntry> {
+    indices.iter().map(|&i| crate::cs::pack::entry_of(&c.tdbs[(bank << 16) + i as usize])).collect()
 }
 
 /// Whether a golden TdbS entry and the RTL's record agree.

@@ -5,9 +5,9 @@
 //! installed (the test script installs it).
 
 use golden::format::Screen;
-use golden::render::{render, render_with, Chipset, Frame, RenderOptions};
+use golden::render::{render, render_with, Frame, RenderOptions};
 use golden::scene::builtin;
-use golden::shade::{PhongLights, Shading};
+use golden::shade::Shading;
 use tb::chipset::RtlChipset;
 use tb::common::{require_tools, vcd_path};
 use tb::verilator::VerilatorChipset;
@@ -156,8 +156,10 @@ fn lights_beyond_the_cs_and_an_unwritable_vcd_path_are_clear_errors_through_veri
     }
     let screen = Screen::new(64, 48).unwrap();
     let mut vl = VerilatorChipset::new(screen, None).unwrap();
-    let three = PhongLights { l: vec![[0, 0, 16384]; 3], h: vec![[0, 0, 16384]; 3], materials: vec![] };
-    let e = vl.scanout(Shading::Phong, &three, [0, 0, 0]).err().expect("three lights must be refused");
+    let teapot = builtin::teapot(2);
+    let mut opts = RenderOptions::for_scene(&teapot, screen, Shading::Phong);
+    opts.lighting.lights = vec![opts.lighting.lights[0].clone(); 3];
+    let e = render_with(&teapot, &opts, &mut vl).err().expect("three lights must be refused");
     assert!(e.contains("3 lights") && e.contains("at most 2"), "{e}");
     // An unwritable VCD path is named.
     let e = VerilatorChipset::new(screen, Some("/nonexistent-dir/x.vcd".into())).err().expect("bad VCD path must fail");

@@ -199,30 +199,12 @@ mod tests {
     use super::*;
     use crate::format::Screen;
     use crate::host::Camera;
-    use crate::raster::{CullMode, FrontFace, TriResult};
-    use crate::render::{render_with, Chipset, GoldenChipset, RcCommand, RenderOptions, ScanOut};
+    use crate::raster::{CullMode, FrontFace};
+    use crate::render::{render_with, GoldenChipset, RenderOptions};
     use crate::scene::{builtin, Winding};
-    use crate::shade::{PhongLights, Shading};
+    use crate::shade::Shading;
 
-    /// A chipset that records the colour-setup commands the host sends and otherwise is the golden one.
-    struct Recorder {
-        inner: GoldenChipset,
-        cmds: Vec<SetupCommand>,
-    }
-    impl Chipset for Recorder {
-        fn rasterize(&mut self, t: &[RcCommand], c: CullMode, f: FrontFace) -> Result<Vec<TriResult>, String> {
-            self.inner.rasterize(t, c, f)
-        }
-        fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String> {
-            self.cmds.extend_from_slice(cmds);
-            self.inner.colour_setup(cmds)
-        }
-        fn scanout(&mut self, s: Shading, l: &PhongLights, bg: [u8; 3]) -> Result<ScanOut, String> {
-            self.inner.scanout(s, l, bg)
-        }
-    }
-
-    fn record_frame(name: &str, shading: Shading) -> Recorder {
+    fn record_frame(name: &str, shading: Shading) -> GoldenChipset {
         let mesh = if name == "teapot" { builtin::teapot(6) } else { builtin::scene(name).unwrap() };
         let screen = Screen::new(160, 100).unwrap();
         let opts = RenderOptions {
@@ -235,7 +217,7 @@ mod tests {
             index_bits: 16,
             background: [10, 20, 30],
         };
-        let mut rec = Recorder { inner: GoldenChipset::new(screen), cmds: Vec::new() };
+        let mut rec = GoldenChipset::new(screen);
         render_with(&mesh, &opts, &mut rec).unwrap();
         rec
     }
@@ -274,12 +256,12 @@ mod tests {
         for name in builtin::SCENES {
             for shading in [Shading::Gouraud, Shading::Flat, Shading::Phong] {
                 let rec = record_frame(name, shading);
-                assert!(!rec.cmds.is_empty(), "{name}: no visible triangle");
-                let cmds: Vec<SetupCmd> = rec.cmds.iter().map(|c| SetupCmd::from_command(c).unwrap()).collect();
+                assert!(!rec.setups.is_empty(), "{name}: no visible triangle");
+                let cmds: Vec<SetupCmd> = rec.setups.iter().map(|c| SetupCmd::from_command(c).unwrap()).collect();
                 let (tdbs, _) = run_model(&cmds, 0);
-                for c in &rec.cmds {
+                for c in &rec.setups {
                     let i = c.index as usize;
-                    assert_eq!(tdbs[i], rec.inner.tdbs[i], "{name} {shading:?}: TdbS record {i}");
+                    assert_eq!(tdbs[i], rec.tdbs[i], "{name} {shading:?}: TdbS record {i}");
                 }
             }
         }

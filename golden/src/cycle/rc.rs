@@ -15,6 +15,7 @@
 //! | `result` valid/ready/data | out | per triangle {index, culled, zero_area, visible}; `eof` marker |
 //! | `z_re`, `z_rd_addr` | out | Z-buffer read: data on `z_rd_data` in the next cycle |
 //! | `z_rd_data` | in | 24-bit depth read one cycle after `z_re` (contents before that edge's write) |
+//! | `i_rd_data` | in | the I-buffer word at the same address, read with the same `z_re`/`z_rd_addr` |
 //! | `z_we`, `z_wr_addr`, `z_wr_data` | out | Z-buffer write, performed at the rising edge |
 //! | `i_we`, `i_wr_addr`, `i_wr_data` | out | I-buffer write, performed at the rising edge |
 //!
@@ -42,9 +43,12 @@
 //!   is empty and the z-test stage holds no other result: otherwise the traversal waits (on its last
 //!   candidate, or in `Idle` before taking the record).
 //!
-//! *Z-test stage* (the cycle after a candidate was issued): `z_rd_data` arrives; if the previous cycle
-//! wrote the same address, that written value is used instead (forwarding, no stall); pass = inside and
-//! z < old. On a pass Z and I are written in this cycle. The triangle's visible flag is the OR of its
+//! *Z-test stage* (the cycle after a candidate was issued): `z_rd_data` and `i_rd_data` arrive; the old
+//! depth is 2^24-1 where the I-buffer holds the background index (a pixel no triangle of this frame has
+//! written: its Z word is stale, not cleared), else `z_rd_data`; if the previous cycle wrote the same
+//! address, that written depth is used instead (forwarding, no stall); pass = inside and z < old.
+//! So the Z-buffer never needs a clear of its own: clearing the I-buffer (the RC's `clear`, or the
+//! Color Shader's clear-behind) is enough. On a pass Z and I are written in this cycle. The triangle's visible flag is the OR of its
 //! passes; its result enters the result register at the end of the cycle of its last candidate's
 //! z-test. The end-of-frame result is pushed after every earlier write has been performed.
 
@@ -143,6 +147,8 @@ pub struct RcInputs {
     pub cmd: RcCmd,
     pub res_ready: bool,
     pub z_rd_data: u32,
+    /// The I-buffer word read with `z_re`/`z_rd_addr` (background: the Z word is stale).
+    pub i_rd_data: u32,
 }
 
 /// The outputs of one cycle.
@@ -318,12 +324,13 @@ impl RcModel {
     }
 
     /// The z-test stage's decision this cycle: (write, pass).
-    fn z_test(&self, z_rd_data: u32) -> (Option<(u32, u32, u32)>, bool) {
+    fn z_test(&self, z_rd_data: u32, i_rd_data: u32) -> (Option<(u32, u32, u32)>, bool) {
         match self.f1 {
             Token::Clear { addr } => (Some((addr, DEPTH_MAX, INDEX_BACKGROUND)), false),
             Token::Frag { inside: true, addr, z, index, .. } => {
                 let old = match self.fwd {
                     Some((a, d)) if a == addr => d,
+                    _ if i_rd_data == INDEX_BACKGROUND => DEPTH_MAX,
                     _ => z_rd_data,
                 };
                 if z < old {
@@ -339,7 +346,7 @@ impl RcModel {
     /// One clock cycle: the outputs during the cycle (before the rising edge), then the edge.
     pub fn step(&mut self, inp: &RcInputs) -> RcOutputs {
         let (tok, take) = self.traversal();
-        let (write, pass) = self.z_test(inp.z_rd_data);
+        let (write, pass) = self.z_test(inp.z_rd_data, inp.i_rd_data);
         let mut out = RcOutputs { cmd_ready: self.sstate == SetupState::Idle, ..RcOutputs::default() };
         if let Some(r) = self.res {
             out.res_valid = true;
@@ -448,10 +455,10 @@ mod tests {
     fn run(m: &mut RcModel, cmds: &[RcCmd], z: &mut [u32], i: &mut [u32]) -> (Vec<(u64, RcResult)>, u64) {
         let mut results = Vec::new();
         let mut next = 0;
-        let mut rd = 0u32;
+        let (mut rd, mut ird) = (0u32, 0u32);
         for _ in 0..1_000_000u64 {
             let valid = next < cmds.len();
-            let inp = RcInputs { cmd_valid: valid, cmd: if valid { cmds[next] } else { RcCmd::idle() }, res_ready: true, z_rd_data: rd };
+            let inp = RcInputs { cmd_valid: valid, cmd: if valid { cmds[next] } else { RcCmd::idle() }, res_ready: true, z_rd_data: rd, i_rd_data: ird };
             let o = m.step(&inp);
             if valid && o.cmd_ready {
                 next += 1;
@@ -461,6 +468,7 @@ mod tests {
             }
             if o.z_re {
                 rd = z[o.z_rd_addr as usize];
+                ird = i[o.z_rd_addr as usize];
             }
             if o.z_we {
                 z[o.z_wr_addr as usize] = o.z_wr_data;
@@ -489,6 +497,21 @@ mod tests {
         assert_eq!(res[0], (SETUP_CYCLES_DRAWN + 18, RcResult { index: 7, visible: true, ..Default::default() }));
         // Pixels whose centres are inside: X + Y < 4 with the diagonal excluded (not top-left) -> 6.
         assert_eq!(i.iter().filter(|&&x| x == 7).count(), 6);
+    }
+
+    #[test]
+    fn a_stale_depth_under_a_background_index_counts_as_far_so_z_needs_no_clear() {
+        let screen = Screen::new(16, 16).unwrap();
+        let t = RcCmd::triangle(7, [v(0, 0, 10), v(64, 0, 10), v(0, 64, 10)], CullMode::None, FrontFace::Ccw).unwrap();
+        // Z words nearer than the triangle everywhere (left by an earlier frame), I-buffer cleared.
+        let (mut z, mut i) = (vec![0; 256], vec![INDEX_BACKGROUND; 256]);
+        let (res, _) = run(&mut RcModel::new(screen), &[RcCmd::frame(false), t, RcCmd::end_of_frame()], &mut z, &mut i);
+        assert!(res[0].1.visible, "the stale depths hid the triangle");
+        assert_eq!(i.iter().filter(|&&x| x == 7).count(), 6);
+        // Where the I-buffer holds an index, its depth is valid and hides the triangle.
+        let (mut z, mut i) = (vec![0; 256], vec![3; 256]);
+        let (res, _) = run(&mut RcModel::new(screen), &[RcCmd::frame(false), t, RcCmd::end_of_frame()], &mut z, &mut i);
+        assert!(!res[0].1.visible && i.iter().all(|&x| x == 3));
     }
 
     #[test]

@@ -6,7 +6,7 @@
 //!  cmd --------->|  setup  |----------->| traversal |--------->| z_test |---> result (valid/ready)
 //!  (valid/ready) | (recip, |            | (clear,   |          |        |---> z_we/z_wr_addr/z_wr_data
 //!                |  MulS)  |            |  walk)    |--+       |        |---> i_we/i_wr_addr/i_wr_data
-//!                +---------+            +-----------+  |       +--------+<--- z_rd_data
+//!                +---------+            +-----------+  |       +--------+<--- z_rd_data, i_rd_data
 //!                                                      +------------------> z_re/z_rd_addr
 //! ```
 //!
@@ -17,7 +17,9 @@
 //!   after the last triangle's result, once every write of the frame has been performed.
 //! * Z-buffer: read port `z_re`/`z_rd_addr` with `z_rd_data` one cycle later (a read returns the contents
 //!   before a write at the same edge); write port `z_we`/`z_wr_addr`/`z_wr_data`. I-buffer: write port
-//!   `i_we`/`i_wr_addr`/`i_wr_data` (the RC never reads it). Address = y * width + x, 20 bits.
+//!   `i_we`/`i_wr_addr`/`i_wr_data`, and `i_rd_data`, the index read with the depth (`z_re`/
+//!   `z_rd_addr`): a background index marks the depth stale, so only the I-buffer needs clearing
+//!   between frames (no Z clear pass). Address = y * width + x, 20 bits.
 //!   Every data/address output is 0 while its enable/valid is low.
 //!
 //! Timing: see `docs/rc.md` and `golden::cycle::rc`, the cycle-accurate model it is checked against.
@@ -107,6 +109,10 @@ pub struct Rc {
     pub i_we: Signal<Out, Bit>,
     pub i_wr_addr: Signal<Out, Bits<20>>,
     pub i_wr_data: Signal<Out, Bits<16>>,
+    // From the I-buffer
+    /// The index at `z_rd_addr`, read with `z_re` (same address, same cycle, same latency as the
+    /// depth): where it is the background index (0) the depth read with it counts as 2^24-1.
+    pub i_rd_data: Signal<In, Bits<16>>,
 
     setup: Setup,
     traversal: Traversal,
@@ -134,6 +140,7 @@ impl Rc {
             i_we: Default::default(),
             i_wr_addr: Default::default(),
             i_wr_data: Default::default(),
+            i_rd_data: Default::default(),
             setup: Setup::new(width, height),
             traversal: Traversal::new(width, height),
             z_test: ZTest::default(),
@@ -195,6 +202,7 @@ impl Logic for Rc {
             self.z_rd_addr.next = self.traversal.tok_addr.val();
         }
         self.z_test.z_rd_data.next = self.z_rd_data.val();
+        self.z_test.i_rd_data.next = self.i_rd_data.val();
         self.z_we.next = self.z_test.z_we.val();
         self.z_wr_addr.next = self.z_test.z_wr_addr.val();
         self.z_wr_data.next = self.z_test.z_wr_data.val();

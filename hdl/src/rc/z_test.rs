@@ -5,7 +5,8 @@
 //!                 +-----------------------------------+
 //!  tok_* -------->| F1 token register                 |--> z_we, z_wr_addr, z_wr_data
 //!  z_rd_data ---->| old = forwarded ? last write      |--> i_we, i_wr_addr, i_wr_data
-//!                 |       : z_rd_data                 |--> result (valid/ready/data)
+//!  i_rd_data ---->|   : i_rd_data == 0 ? 2^24-1       |--> result (valid/ready/data)
+//!                 |   : z_rd_data                     |
 //!                 | pass = covered & z < old          |--> result_free
 //!  clock -------->| visible |= pass; result register  |
 //!                 +-----------------------------------+
@@ -16,7 +17,9 @@
 //! write a fragment can miss is the one performed at the end of cycle t, i.e. by the token in F1 during
 //! t. That write (address, data) is kept in a forwarding register and used instead of `z_rd_data` when
 //! the addresses match: a fragment of the next triangle on the same pixel sees the new depth without a
-//! stall. On a pass, Z and I are written in the same cycle (combinationally from `z_rd_data`). A clear
+//! stall. The I-buffer word read with the depth tells whether the depth is of this frame: where it is
+//! the background index (0) the depth counts as 2^24-1, so the Z-buffer needs no clear when the
+//! I-buffer was cleared (by the RC's clear or behind the Color Shader's scan-out). On a pass, Z and I are written in the same cycle (combinationally from `z_rd_data`). A clear
 //! token writes 2^24-1 and 0. Every output is 0 when its enable or valid is low.
 
 use super::RcResult;
@@ -43,6 +46,8 @@ pub struct ZTest {
     // From the Z-buffer
     /// Depth read one cycle earlier.
     pub z_rd_data: Signal<In, Bits<24>>,
+    /// The I-buffer word read with it: the background index marks the depth as stale (far).
+    pub i_rd_data: Signal<In, Bits<16>>,
     // To the Z-buffer and the I-buffer
     pub z_we: Signal<Out, Bit>,
     pub z_wr_addr: Signal<Out, Bits<20>>,
@@ -97,6 +102,7 @@ impl Default for ZTest {
             tok_zero_area: Default::default(),
             result_free: Default::default(),
             z_rd_data: Default::default(),
+            i_rd_data: Default::default(),
             z_we: Default::default(),
             z_wr_addr: Default::default(),
             z_wr_data: Default::default(),
@@ -151,8 +157,12 @@ impl Logic for ZTest {
         self.f1_culled.d.next = self.tok_culled.val();
         self.f1_zero_area.d.next = self.tok_zero_area.val();
 
-        // The Z-test with forwarding of last cycle's write.
+        // The Z-test with forwarding of last cycle's write. A pixel whose I-buffer word is the
+        // background index has no depth of this frame: its Z word is stale and counts as far.
         self.old_z.next = self.z_rd_data.val();
+        if self.i_rd_data.val() == self.k0_16.val() {
+            self.old_z.next = self.depth_max.val();
+        }
         if self.fwd_valid.q.val() & (self.fwd_addr.q.val() == self.f1_addr.q.val()) {
             self.old_z.next = self.fwd_z.q.val();
         }

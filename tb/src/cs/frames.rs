@@ -5,29 +5,13 @@
 use golden::cycle::color_shader::CsMemories;
 use golden::format::Screen;
 use golden::host::Camera;
-use golden::raster::{CullMode, FrontFace, TriResult};
-use golden::render::{render_with, Chipset, Frame, GoldenChipset, RcCommand, RenderOptions, ScanOut, SetupCommand};
+use golden::raster::{CullMode, FrontFace};
+use golden::render::{render_with, Frame, GoldenChipset, RenderOptions};
 use golden::scene::{builtin, Winding};
 use golden::shade::{PhongLights, Shading};
 
-/// The golden chipset, recording what colour setup was asked to do.
-pub struct Recorder {
-    pub inner: GoldenChipset,
-    pub setups: Vec<SetupCommand>,
-}
-
-impl Chipset for Recorder {
-    fn rasterize(&mut self, t: &[RcCommand], c: CullMode, f: FrontFace) -> Result<Vec<TriResult>, String> {
-        self.inner.rasterize(t, c, f)
-    }
-    fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String> {
-        self.setups.extend_from_slice(cmds);
-        self.inner.colour_setup(cmds)
-    }
-    fn scanout(&mut self, s: Shading, l: &PhongLights, bg: [u8; 3]) -> Result<ScanOut, String> {
-        self.inner.scanout(s, l, bg)
-    }
-}
+/// The golden chipset, which keeps the colour-setup commands it was sent (`setups`).
+pub type Recorder = GoldenChipset;
 
 /// A rendered frame and what the chipset saw.
 pub struct RecordedFrame {
@@ -43,7 +27,7 @@ impl RecordedFrame {
     /// Z-buffer, TdbS.
     pub fn memories(&self) -> CsMemories {
         let ibuf = self.frame.hw_index.iter().map(|&i| i as u16).collect();
-        CsMemories::new(ibuf, self.frame.zbuf.clone(), self.chip.inner.tdbs.clone())
+        CsMemories::new(ibuf, self.frame.zbuf.clone(), self.chip.tdbs.clone())
     }
 }
 
@@ -62,7 +46,7 @@ pub fn record(name: &str, shading: Shading, width: u32, height: u32) -> Result<R
         index_bits: 16,
         background,
     };
-    let mut chip = Recorder { inner: GoldenChipset::new(screen), setups: Vec::new() };
+    let mut chip = GoldenChipset::new(screen);
     let frame = render_with(&mesh, &opts, &mut chip)?;
     let lights = PhongLights::new(&opts.lighting, &mesh.materials);
     Ok(RecordedFrame { frame, chip, background, lights })

@@ -159,7 +159,7 @@ fn colour_setup_writes_the_golden_tdbs_of_every_builtin_scene() {
             let test = format!("colour_setup_{name}_{shading:?}").to_lowercase();
             let run = setb::run_rtl_vs_model(&test, &cmds, SetupDrive { gap_percent: 10, seed }, false).unwrap();
             for (idx, rec) in &run.writes {
-                assert_eq!(*rec, f.chip.inner.tdbs[*idx as usize], "{name} {shading:?}: record {idx}");
+                assert_eq!(*rec, f.chip.tdbs[*idx as usize], "{name} {shading:?}: record {idx}");
             }
             assert_eq!(run.writes.len(), cmds.len());
         }

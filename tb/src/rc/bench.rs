@@ -122,7 +122,7 @@ struct Driver {
 }
 
 impl Driver {
-    fn inputs(&mut self, cmds: &[RcCmd], z_rd_data: u32) -> RcInputs {
+    fn inputs(&mut self, cmds: &[RcCmd], z_rd_data: u32, i_rd_data: u32) -> RcInputs {
         if !self.presenting && self.next < cmds.len() && !self.rng.chance(self.drive.gap_percent) {
             self.presenting = true;
         }
@@ -132,6 +132,7 @@ impl Driver {
             cmd: if self.presenting { cmds[self.next] } else { RcCmd::idle() },
             res_ready,
             z_rd_data,
+            i_rd_data,
         }
     }
     fn edge(&mut self, inp: &RcInputs, out: &RcOutputs) {
@@ -177,6 +178,7 @@ impl RtlSim {
         self.uut.cmd.data.next = command_word(&inp.cmd);
         self.uut.result.ready.next = inp.res_ready;
         self.uut.z_rd_data.next = (inp.z_rd_data as u64).into();
+        self.uut.i_rd_data.next = (inp.i_rd_data as u64).into();
         self.uut.clock.next = false.into();
         self.settle(cycle * 10)?;
         Ok(rtl_outputs(&self.uut))
@@ -224,7 +226,7 @@ fn run_inner(
     let (mut results, mut z_reads, mut z_passes) = (Vec::new(), 0u64, 0u64);
     let start = std::time::Instant::now();
     for cycle in 0..max_cycles {
-        let inp = driver.inputs(cmds, zmem.read_data());
+        let inp = driver.inputs(cmds, zmem.read_data(), imem.read_data());
         let expected = model.step(&inp);
         if let Some(r) = rtl.as_mut() {
             let actual = r.cycle(cycle, &inp).map_err(Stop::Error)?;
@@ -243,7 +245,7 @@ fn run_inner(
         // A passing fragment writes a depth below the far value; a clear writes the far value.
         z_passes += (out.z_we && out.z_wr_data != DEPTH_MAX) as u64;
         zmem.edge(out.z_re.then_some(out.z_rd_addr), out.z_we.then_some((out.z_wr_addr, out.z_wr_data))).map_err(|e| Stop::Error(format!("cycle {cycle}: Z-buffer: {e}")))?;
-        imem.edge(None, out.i_we.then_some((out.i_wr_addr, out.i_wr_data))).map_err(|e| Stop::Error(format!("cycle {cycle}: I-buffer: {e}")))?;
+        imem.edge(out.z_re.then_some(out.z_rd_addr), out.i_we.then_some((out.i_wr_addr, out.i_wr_data))).map_err(|e| Stop::Error(format!("cycle {cycle}: I-buffer: {e}")))?;
         if let Some(r) = rtl.as_mut() {
             r.rising_edge(cycle).map_err(Stop::Error)?;
         }

@@ -32,17 +32,14 @@
 
 use crate::chipset::{PhaseCycles, Progress, VcdScope};
 use crate::common::workspace_target;
-use crate::cs::pack::{command_of, rgb_of, tdata_of};
-use crate::rc::bench::command_word;
-use golden::cycle::colour_setup::SetupCmd;
-use golden::cycle::rc::RcCmd;
-use golden::format::Screen;
-use golden::raster::{Culled, CullMode, FrontFace, TriResult};
-use golden::render::{Chipset, RcCommand, ScanOut, SetupCommand};
+use crate::cs::pack::{command_of, rgb_of};
+use crate::chipset::FrameRun;
 use crate::cs::color_shader_bench::config_ports;
-use golden::cycle::color_shader::phong_config;
-use golden::shade::{PhongLights, Shading};
-use hdl::rc::RcResult;
+use golden::cycle::colour_setup::SetupCmd;
+use golden::format::{Screen, DEPTH_MAX, INDEX_BACKGROUND};
+use golden::raster::{Culled, TriResult};
+use golden::render::{Chipset, FrameJob, FrameOut, LowerPipeline, ScanOut};
+use hdl::rc::{RcCommand, RcResult};
 use rust_hdl::prelude::*;
 use std::io::{BufRead, BufReader, BufWriter, Read, Write};
 use std::path::{Path, PathBuf};
@@ -196,9 +193,10 @@ pub struct VerilatorChipset {
     to_sim: BufWriter<ChildStdin>,
     from_sim: BufReader<ChildStdout>,
     stderr: Arc<Mutex<String>>,
-    frame_start: u64,
-    /// The buffers hold the previous frame's clear-behind (false after reset: memory contents unknown).
-    cleared: bool,
+    /// Cycles per phase of every frame of the last run.
+    pub frame_phases: Vec<PhaseCycles>,
+    /// Frames started since reset: frames 0 and 1 clear their bank, later ones find it cleared.
+    frames_started: u64,
     ibuf_after_raster: Vec<u32>,
     zbuf_after_raster: Vec<u32>,
     vcd_open: bool,
@@ -267,8 +265,8 @@ impl VerilatorChipset {
             to_sim,
             from_sim,
             stderr,
-            frame_start: 0,
-            cleared: false,
+            frame_phases: Vec::new(),
+            frames_started: 0,
             ibuf_after_raster: Vec::new(),
             zbuf_after_raster: Vec::new(),
             vcd_open: vcd.is_some(),
@@ -420,85 +418,99 @@ pub fn result_of(word: u32) -> Option<TriResult> {
 }
 
 impl Chipset for VerilatorChipset {
-    fn rasterize(&mut self, tris: &[RcCommand], cull: CullMode, front: FrontFace) -> Result<Vec<TriResult>, String> {
-        let mut cmds = vec![RcCmd::frame(!self.cleared)];
-        for t in tris {
-            cmds.push(RcCmd::triangle(t.index, t.v, cull, front)?);
+    fn run(&mut self, jobs: &[FrameJob], host: &mut dyn LowerPipeline) -> Result<Vec<FrameOut>, String> {
+        let mut frames = Vec::with_capacity(jobs.len());
+        for job in jobs {
+            let fr = FrameRun::new(job, self.frames_started < 2)?;
+            self.frames_started += 1;
+            let mut words = Vec::with_capacity(RC_WORDS * (fr.words.len() + 6 * fr.config.len()));
+            for w in &fr.words {
+                push_words(Bits::<{ RcCommand::BITS }>::from(*w), RC_WORDS, &mut words);
+            }
+            for c in &fr.config {
+                // The same packing as the RustHDL backend's ports (`config_ports`), as 32-bit words.
+                let ((le, la, ld), (_, ma, ms, md)) = config_ports(Some(*c));
+                let (kind, address, slot, data) = if le { (0, la, 0, ld) } else { (1, ma, ms, md) };
+                words.extend_from_slice(&[kind, address as u32, slot as u32, data as u32, (data >> 32) as u32, (data >> 64) as u32]);
+            }
+            self.send(format!("frame {} {} {} {}\n", fr.words.len(), fr.background, fr.phong as u8, fr.config.len()).as_bytes(), &words)?;
+            frames.push(fr);
         }
-        cmds.push(RcCmd::end_of_frame());
-        let mut words = Vec::with_capacity(RC_WORDS * cmds.len());
-        for c in &cmds {
-            let b: Bits<{ hdl::rc::RcCommand::BITS }> = command_word(c).into();
-            push_words(b, RC_WORDS, &mut words);
+        let nf = frames.len();
+        let n = self.screen.pixels();
+        let work: u64 = jobs.iter().map(|j| n as u64 + 128 * j.tris.len() as u64).sum();
+        let visible_bit = 1u32 << RcResult::default().get_my_offset_visible();
+        self.send(format!("run {} {visible_bit}\n", self.budget(work)).as_bytes(), &[])?;
+        let mut outs: Vec<Option<FrameOut>> = vec![None; nf];
+        let mut host_error: Option<String> = None;
+        loop {
+            let f = match self.reply() {
+                Ok(f) => f,
+                // The harness stopped because the host failed: the host's reason, not the harness's.
+                Err(e) => return Err(host_error.unwrap_or(e)),
+            };
+            let num = |k: usize| -> Result<i64, String> { f.get(k).and_then(|s| s.parse().ok()).ok_or_else(|| format!("verilated chipset: bad reply '{}'", f.join(" "))) };
+            match f[0].as_str() {
+                "Q" => {
+                    let (fi, position) = (num(1)? as usize, num(2)? as usize);
+                    match host.visible(fi, position).and_then(|c| SetupCmd::from_command(&c)) {
+                        Ok(c) => {
+                            let mut words = vec![1u32];
+                            let b: Bits<{ hdl::cs::SetupCommand::BITS }> = command_of(&c).into();
+                            push_words(b, SETUP_WORDS, &mut words);
+                            self.send(b"", &words)?;
+                        }
+                        Err(e) => {
+                            host_error = Some(e);
+                            self.send(b"", &[0u32; 1 + SETUP_WORDS])?;
+                        }
+                    }
+                }
+                "R" => {
+                    let (fi, count) = (num(1)? as usize, num(2)? as usize);
+                    let words = self.words(count)?;
+                    let ib = self.words(n)?;
+                    let zb = self.words(n)?;
+                    let fr = frames.get_mut(fi).ok_or("verilated chipset: a frame it was not sent")?;
+                    for &w in &words {
+                        let r = result_of(w).ok_or("verilated chipset: an end-of-frame word among the results")?;
+                        fr.result(r)?;
+                    }
+                    if fr.results.len() != fr.tris.len() {
+                        return Err(format!("chipset: {} results for {} triangles", fr.results.len(), fr.tris.len()));
+                    }
+                    let zb: Vec<u32> = ib.iter().zip(&zb).map(|(&i, &z)| if i == INDEX_BACKGROUND { DEPTH_MAX } else { z }).collect();
+                    self.ibuf_after_raster = ib.clone();
+                    self.zbuf_after_raster = zb.clone();
+                    outs[fi] = Some(FrameOut { results: std::mem::take(&mut fr.results), scan: ScanOut { rgb: Vec::new(), ibuf: ib, zbuf: zb }, rc_counts: None });
+                }
+                "O" => {
+                    let (fi, count) = (num(1)? as usize, num(2)? as usize);
+                    let tdata = self.words(count)?;
+                    if tdata.len() != n {
+                        return Err(format!("chipset: scan-out produced {} of {n} pixels", tdata.len()));
+                    }
+                    let out = outs.get_mut(fi).and_then(|o| o.as_mut()).ok_or("verilated chipset: a scan-out before its frame's end of frame")?;
+                    out.scan.rgb = tdata.iter().flat_map(|&t| rgb_of(t)).collect();
+                }
+                "F" => {
+                    let fi = num(1)? as usize;
+                    let st = (2..13).map(num).collect::<Result<Vec<i64>, String>>()?;
+                    let o = |v: i64| (v >= 0).then_some(v as u64);
+                    let fr = frames.get_mut(fi).ok_or("verilated chipset: a frame it was not sent")?;
+                    (fr.start, fr.first_tri_taken, fr.last_cmd_taken, fr.eof) = (o(st[0]), o(st[1]), st[2] as u64, o(st[3]));
+                    (fr.clear_writes, fr.z_reads, fr.setup_first, fr.drawn) = (st[4] as u64, st[5] as u64, o(st[6]), o(st[7]));
+                    (fr.scan_begin, fr.scan_taken, fr.scan_done) = (o(st[8]), o(st[9]), o(st[10]));
+                }
+                "D" => {
+                    self.cycle = num(1)? as u64;
+                    break;
+                }
+                _ => return Err(format!("verilated chipset: unexpected reply '{}'", f.join(" "))),
+            }
         }
-        let start = self.cycle;
-        self.frame_start = start;
-        let budget = self.budget(self.screen.pixels() as u64 + 64 * tris.len() as u64);
-        self.send(format!("raster {} {budget}\n", cmds.len()).as_bytes(), &words)?;
-        let f = self.expect("R")?;
-        let [cycle, clear_writes, first_tri_taken, last_cmd_taken, z_reads, n] = f[..] else {
-            return Err(format!("verilated chipset: bad raster reply {f:?}"));
-        };
-        let raw = self.words(n as usize)?;
-        let pixels = self.screen.pixels();
-        self.ibuf_after_raster = self.words(pixels)?;
-        self.zbuf_after_raster = self.words(pixels)?;
-        self.cycle = cycle as u64;
-        let results: Vec<TriResult> = raw.iter().filter_map(|&w| result_of(w)).collect();
-        if results.len() != tris.len() {
-            return Err(format!("chipset: {} results for {} triangles", results.len(), tris.len()));
-        }
-        let last = last_cmd_taken as u64;
-        let t0 = if first_tri_taken < 0 { last } else { first_tri_taken as u64 };
-        self.phases.clear = clear_writes as u64;
-        self.phases.geometry_transfer = last - t0;
-        self.phases.rasterization = self.cycle - start;
-        self.phases.z_reads = z_reads as u64;
-        Ok(results)
-    }
-
-    fn colour_setup(&mut self, cmds: &[SetupCommand]) -> Result<(), String> {
-        let mut words = Vec::with_capacity(SETUP_WORDS * cmds.len());
-        for c in cmds {
-            let b: Bits<{ hdl::cs::SetupCommand::BITS }> = command_of(&SetupCmd::from_command(c)?).into();
-            push_words(b, SETUP_WORDS, &mut words);
-        }
-        let start = self.cycle;
-        let budget = self.budget(64 * cmds.len() as u64);
-        self.send(format!("setup {} {budget}\n", cmds.len()).as_bytes(), &words)?;
-        let f = self.expect("S")?;
-        self.cycle = *f.first().ok_or("verilated chipset: bad setup reply")? as u64;
-        self.phases.colour_setup = self.cycle - start;
-        Ok(())
-    }
-
-    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> Result<ScanOut, String> {
-        let phong = shading == Shading::Phong;
-        let config = if phong { phong_config(lights)? } else { Vec::new() };
-        let mut words = Vec::with_capacity(6 * config.len());
-        for c in &config {
-            // The same packing as the RustHDL backend's ports (`config_ports`), as 32-bit words.
-            let ((le, la, ld), (_, ma, ms, md)) = config_ports(Some(*c));
-            let (kind, address, slot, data) = if le { (0, la, 0, ld) } else { (1, ma, ms, md) };
-            words.extend_from_slice(&[kind, address as u32, slot as u32, data as u32, (data >> 32) as u32, (data >> 64) as u32]);
-        }
-        let pixels = self.screen.pixels();
-        let start = self.cycle;
-        let budget = self.budget(pixels as u64);
-        self.send(format!("scan {} {budget} {} {}\n", tdata_of(background), phong as u8, config.len()).as_bytes(), &words)?;
-        let f = self.expect("O")?;
-        let [cycle, n] = f[..] else {
-            return Err(format!("verilated chipset: bad scan-out reply {f:?}"));
-        };
-        let tdata = self.words(n as usize)?;
-        if tdata.len() != pixels {
-            return Err(format!("chipset: scan-out produced {} of {pixels} pixels", tdata.len()));
-        }
-        self.cycle = cycle as u64;
-        self.phases.scan_out = self.cycle - start;
-        self.phases.total = self.cycle - self.frame_start;
-        self.cleared = true;
-        let rgb = tdata.iter().flat_map(|&t| rgb_of(t)).collect();
-        Ok(ScanOut { rgb, ibuf: self.ibuf_after_raster.clone(), zbuf: self.zbuf_after_raster.clone() })
+        self.frame_phases = (0..nf).map(|f| frames[f].phases(if f > 0 { frames[f - 1].scan_taken } else { None })).collect();
+        self.phases = self.frame_phases.last().cloned().unwrap_or_default();
+        outs.into_iter().map(|o| o.ok_or_else(|| "verilated chipset: a frame without output".to_string())).collect()
     }
 }

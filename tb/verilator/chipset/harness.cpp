@@ -11,30 +11,37 @@
 // applied with the clock low and the top is evaluated (VCD time 10*cycle); the harness samples the
 // handshakes, then the memories take their reads (old contents) and writes at the edge, then the clock
 // rises (VCD time 10*cycle + 5). The read data reach the `*_rd_data` ports with the next low phase.
-// Contents after reset: Z word i = (i * 2654435761) & 0xffffff, I word i = (i * 40503) & 0xffff
-// (garbage with a fixed pattern, as in `RtlChipset`; the first frame's clear puts them in order),
-// TdbS all zero. TdbS records are 424 bits = 14 32-bit words (Verilator's VlWide<14>, word 0 holding
-// bits 31:0).
+// Z-buffer: W*H words. I-buffer: two banks of W*H words (address bit 20 = bank). TdbS: two banks of
+// 2^16 records (address bit 16 = bank). Contents after reset: Z word i = (i * 2654435761) & 0xffffff,
+// I word j of both banks together = (j * 40503) & 0xffff (garbage with a fixed pattern, as in
+// `RtlChipset`; the first frame in each bank clears it), TdbS all zero. TdbS records are 424 bits =
+// 14 32-bit words (Verilator's VlWide<14>, word 0 holding bits 31:0).
 //
 // Protocol. Rust -> harness on stdin: a text line, then for some commands a binary payload (32-bit
 // little-endian words):
-//   raster <n> <budget>\n   + n RC command words of 6 x u32 (190 bits): run the geometry phase
-//   setup <n> <budget>\n    + n colour-setup words of 10 x u32 (297 bits): run colour setup
-//   scan <tdata> <budget> <phong> <n>\n + n Phong-constant writes of 6 x u32 (kind 0 = light, 1 =
-//                           material; address; slot; 96 data bits): write them one per cycle, then run
-//                           the scan-out (background as video_tdata, clear behind on, Phong if set)
+//   frame <n> <tdata> <phong> <c>\n + n RC command words of 6 x u32 (190 bits), then c Phong-constant
+//                           writes of 6 x u32 (kind 0 = light, 1 = material; address; slot; 96 data
+//                           bits): queue a frame (background tdata, Phong scan-out if set)
+//   run <budget>\n          run the queued frames back to back (the host loop of `RtlChipset::run`)
 //   vcd_close\n             flush and close the VCD
 //   quit\n                  exit
+// During `run`, the harness asks for the host's lower pipeline: it writes `Q <frame> <position>\n` and
+// reads back 1 + 10 words: a flag (1 = a command follows; 0 = the host failed, stop the run) and a
+// colour-setup word of 297 bits.
 // Harness -> Rust on the protocol channel (the original stdout; the process's stdout is redirected to
 // stderr so that nothing the model prints can corrupt the protocol):
 //   P <done> <total> <phase>\n                        progress
-//   E <message>\n                                     the command failed (message as RtlChipset's)
-//   R <cycle> <clear_writes> <first_tri_taken|-1> <last_cmd_taken> <z_reads> <n>\n
-//       + n result words (u32, RcResult bits) + W*H I-buffer words + W*H Z-buffer words (u32 each)
-//   S <cycle>\n                                       colour setup done
-//   O <cycle> <n>\n + n video_tdata words (u32)       scan-out done
+//   Q <frame> <position>\n                            a visible triangle (see above)
+//   E <message>\n                                     the run failed (message as RtlChipset's)
+//   R <frame> <n> <bank>\n + n result words (u32, RcResult bits) + W*H I words of the drawn bank + W*H
+//                                                     Z words: the frame's end-of-frame result
+//   O <frame> <n>\n + n video_tdata words (u32)       the frame's scan-out ended
+//   F <frame> <11 cycle stamps, -1 for none>\n        start first_tri_taken last_cmd_taken eof
+//                                                     clear_writes z_reads setup_first drawn
+//                                                     scan_begin scan_taken scan_done
+//   D <cycle>\n                                       the run is done
 //   V\n                                               VCD closed
-// `budget` is the number of cycles after which the phase is an error (a hang, not an endless loop).
+// `budget` is the number of cycles after which the run is an error (a hang, not an endless loop).
 
 #include "Vchipset.h"
 #include "verilated.h"
@@ -48,6 +55,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -76,12 +84,10 @@ class Bench {
 #endif
         top.reset(new Vchipset{ctx.get(), "uut"});
         zbuf.resize(n);
-        ibuf.resize(n);
-        for (size_t i = 0; i < n; i++) {
-            zbuf[i] = (uint32_t(i) * 2654435761u) & 0xffffffu;
-            ibuf[i] = (uint32_t(i) * 40503u) & 0xffffu;
-        }
-        tdbs.assign(1 << 16, Record{});
+        ibuf.resize(2 * n);
+        for (size_t i = 0; i < n; i++) zbuf[i] = (uint32_t(i) * 2654435761u) & 0xffffffu;
+        for (size_t i = 0; i < 2 * n; i++) ibuf[i] = (uint32_t(i) * 40503u) & 0xffffu;
+        tdbs.assign(2 << 16, Record{});
         t_rd.fill(0);
 #if VM_TRACE
         if (vcd) {
@@ -103,6 +109,10 @@ class Bench {
 
     ~Bench() { close_vcd(); top->final(); }
 
+    // Per frame of a run: the result words so far.
+    std::vector<std::vector<uint32_t>> results_of;
+    uint32_t visible_bit = 0;
+
     void close_vcd() {
 #if VM_TRACE
         if (tfp) {
@@ -112,10 +122,19 @@ class Bench {
 #endif
     }
 
-    // One phase loop per command; each mirrors the same function of RtlChipset line by line.
-    void rasterize(const std::vector<uint32_t>& words, uint64_t budget);
-    void colour_setup(const std::vector<uint32_t>& words, uint64_t budget);
-    void scanout(uint32_t background, uint64_t budget, bool phong, const std::vector<uint32_t>& config);
+    struct Frame {
+        std::vector<uint32_t> words;   // RC commands, RC_WORDS each
+        std::vector<uint32_t> config;  // Phong-constant writes, CONFIG_WORDS each
+        uint32_t background = 0;
+        bool phong = false;
+        size_t results = 0;
+        long long start = -1, first_tri_taken = -1, last_cmd_taken = 0, eof = -1, clear_writes = 0, z_reads = 0,
+                  setup_first = -1, drawn = -1, scan_begin = -1, scan_taken = -1, scan_done = -1;
+    };
+    std::vector<Frame> frames;
+
+    // The host loop of RtlChipset::run (tb/src/chipset.rs), line by line.
+    void run(uint64_t budget);
 
   private:
     const uint32_t width, height;
@@ -127,10 +146,9 @@ class Bench {
 #endif
     std::vector<uint32_t> zbuf, ibuf;
     std::vector<Record> tdbs;
-    uint32_t z_rd = 0, i_rd = 0;
+    uint32_t z_rd = 0, id_rd = 0, is_rd = 0;
     Record t_rd;
     uint64_t cycle = 0;
-    uint64_t clear_writes = 0;
 
     void dump(uint64_t t) {
 #if VM_TRACE
@@ -155,9 +173,23 @@ class Bench {
         for (int k = 0; k < 3; k++) top->light_write_data[k] = top->material_write_data[k] = 0;
     }
 
+    void drive_config(const uint32_t* c) {
+        if (c[0] == 0) {
+            top->light_write_enable = 1;
+            top->light_write_address = c[1];
+            for (int k = 0; k < 3; k++) top->light_write_data[k] = c[3 + k];
+        } else {
+            top->material_write_enable = 1;
+            top->material_write_address = c[1];
+            top->material_write_slot = c[2];
+            for (int k = 0; k < 3; k++) top->material_write_data[k] = c[3 + k];
+        }
+    }
+
     void low() {
         top->z_rd_data = z_rd;
-        top->i_rd_data = i_rd;
+        top->id_rd_data = id_rd;
+        top->is_rd_data = is_rd;
         for (int k = 0; k < TDBS_WORDS; k++) top->t_rd_data[k] = t_rd[k];
         top->clock = 0;
         top->eval();
@@ -165,10 +197,16 @@ class Bench {
     }
 
     [[noreturn]] void bad(const char* what, size_t a) {
-        char m[200];
-        snprintf(m, sizeof m, "chipset: %s address %zu outside the %zu-word buffer in cycle %llu", what, a, n,
-                 (unsigned long long)cycle);
+        char m[240];
+        snprintf(m, sizeof m, "chipset: %s address %#zx outside the buffer (W*H = %zu words per bank) in cycle %llu", what, a,
+                 n, (unsigned long long)cycle);
         throw Failure{m};
+    }
+
+    // I-buffer address: bit 20 the bank, bits 19:0 the pixel.
+    size_t ia(const char* what, size_t a) {
+        if ((a & 0xfffff) >= n) bad(what, a);
+        return (a >> 20) * n + (a & 0xfffff);
     }
 
     void high() {
@@ -178,26 +216,24 @@ class Bench {
             if (a >= n) bad("Z read", a);
             z_rd = zbuf[a];
         }
-        if (top->i_re) {
-            size_t a = top->i_rd_addr;
-            if (a >= n) bad("I read", a);
-            i_rd = ibuf[a];
-        }
-        if (top->t_re) t_rd = tdbs[top->t_rd_addr & 0xffff];
+        if (top->id_re) id_rd = ibuf[ia("I read (draw side)", top->id_rd_addr)];
+        if (top->is_re) is_rd = ibuf[ia("I read (scan side)", top->is_rd_addr)];
+        if (top->t_re) t_rd = tdbs[top->t_rd_addr & 0x1ffff];
         if (top->z_we) {
             size_t a = top->z_wr_addr;
             if (a >= n) bad("Z write", a);
             zbuf[a] = top->z_wr_data;
         }
-        if (top->i_we) {
-            size_t a = top->i_wr_addr;
-            if (a >= n) bad("I write", a);
-            uint32_t d = top->i_wr_data;
-            ibuf[a] = d;
-            if (d == 0) clear_writes++;
+        const bool dw = top->id_we, sw = top->is_we;
+        const size_t da = top->id_wr_addr, sa = top->is_wr_addr;
+        if (dw && sw && da == sa) {
+            throw Failure{"chipset: both I-buffer write ports write address " + std::to_string(da) + " in cycle " +
+                          std::to_string(cycle)};
         }
+        if (dw) ibuf[ia("I write (draw side)", da)] = top->id_wr_data;
+        if (sw) ibuf[ia("I write (scan side)", sa)] = top->is_wr_data;
         if (top->t_we) {
-            Record& r = tdbs[top->t_wr_addr & 0xffff];
+            Record& r = tdbs[top->t_wr_addr & 0x1ffff];
             for (int k = 0; k < TDBS_WORDS; k++) r[k] = top->t_wr_data[k];
         }
         top->clock = 1;
@@ -217,115 +253,62 @@ void put_words(const uint32_t* w, size_t count) {
     if (count && fwrite(w, 4, count, proto_out) != count) exit(3);
 }
 
-void Bench::rasterize(const std::vector<uint32_t>& words, uint64_t budget) {
-    const size_t count = words.size() / RC_WORDS;
-    std::vector<uint32_t> results;
-    size_t next = 0;
-    const uint64_t start = cycle;
-    clear_writes = 0;
-    long long first_tri_taken = -1;
-    uint64_t last_cmd_taken = start;
-    uint64_t z_reads = 0;  // cycles with a Z read: the fragments the RC Z-tested (as RtlChipset counts them)
-    const uint64_t limit = cycle + budget;
-    for (;;) {
-        idle_inputs();
-        if (next < count) {
-            top->rc_cmd__024valid = 1;
-            for (int k = 0; k < RC_WORDS; k++) top->rc_cmd__024data[k] = words[next * RC_WORDS + k];
-        }
-        low();
-        const bool taken = next < count && top->rc_cmd__024ready;
-        z_reads += top->z_re ? 1 : 0;
-        bool eof = false;
-        if (top->rc_result__024valid) {
-            const uint32_t r = top->rc_result__024data;
-            if (r & 1) {  // RcResult.eof is bit 0 (hdl/src/rc/mod.rs)
-                eof = true;
-            } else {
-                results.push_back(r);
-            }
-        }
-        high();
-        if (taken) {
-            if (next == 1) first_tri_taken = (long long)(cycle - 1);
-            next++;
-            last_cmd_taken = cycle;
-        }
-        if (cycle % PROGRESS_EVERY == 0) {
-            progress(first_tri_taken < 0 ? "clear" : "rasterization", results.size(), count > 2 ? count - 2 : 0);
-        }
-        if (eof) break;
-        if (cycle > limit) {
-            throw Failure{"chipset: no end-of-frame result after " + std::to_string(cycle - start) + " cycles"};
-        }
-    }
-    fprintf(proto_out, "R %llu %llu %lld %llu %llu %zu\n", (unsigned long long)cycle, (unsigned long long)clear_writes,
-            first_tri_taken, (unsigned long long)last_cmd_taken, (unsigned long long)z_reads, results.size());
-    put_words(results.data(), results.size());
-    put_words(ibuf.data(), n);
-    put_words(zbuf.data(), n);
-    fflush(proto_out);
-}
+bool read_words(std::vector<uint32_t>& v, size_t count);
 
-void Bench::colour_setup(const std::vector<uint32_t>& words, uint64_t budget) {
-    const size_t count = words.size() / SETUP_WORDS;
-    const uint64_t start = cycle, limit = cycle + budget;
-    size_t next = 0;
-    for (;;) {
-        idle_inputs();
-        if (next < count) {
-            top->setup_cmd__024valid = 1;
-            for (int k = 0; k < SETUP_WORDS; k++) top->setup_cmd__024data[k] = words[next * SETUP_WORDS + k];
-        }
-        low();
-        const bool taken = next < count && top->setup_cmd__024ready;
-        const bool busy = top->setup_busy || top->t_we;
-        high();
-        if (taken) {
-            next++;
-            if (next % 256 == 0) progress("colour setup", next, count);
-        }
-        if (next == count && !taken && !busy) break;
-        if (cycle > limit) {
-            throw Failure{"chipset: colour setup did not finish in " + std::to_string(cycle - start) + " cycles"};
-        }
-    }
-    fprintf(proto_out, "S %llu\n", (unsigned long long)cycle);
-    fflush(proto_out);
-}
+enum class Scan { Wait, Config, Start, Running };
 
-void Bench::scanout(uint32_t background, uint64_t budget, bool phong, const std::vector<uint32_t>& config) {
-    const size_t w = width, h = height;
-    std::vector<uint32_t> tdata;
+void Bench::run(uint64_t budget) {
+    const size_t nf = frames.size(), w = width, h = height;
+    size_t rc_f = 0, rc_next = 0, res_f = 0, draw_f = 0, scan_f = 0, config_k = 0, pixels = 0;
+    struct Queued {
+        size_t frame;
+        std::array<uint32_t, SETUP_WORDS> word;
+    };
+    std::deque<Queued> queue;
+    std::vector<uint32_t> tdata, answer;
     tdata.reserve(w * h);
+    Scan scan = Scan::Wait;
     const uint64_t start = cycle, limit = cycle + budget;
-    // Phong constants first, one write per cycle, while the CS is idle (as RtlChipset).
-    for (size_t i = 0; i + CONFIG_WORDS <= config.size(); i += CONFIG_WORDS) {
+    while (scan_f < nf) {
         idle_inputs();
-        const uint32_t* c = &config[i];
-        if (c[0] == 0) {
-            top->light_write_enable = 1;
-            top->light_write_address = c[1];
-            for (int k = 0; k < 3; k++) top->light_write_data[k] = c[3 + k];
-        } else {
-            top->material_write_enable = 1;
-            top->material_write_address = c[1];
-            top->material_write_slot = c[2];
-            for (int k = 0; k < 3; k++) top->material_write_data[k] = c[3 + k];
+        // Upper pipeline: frame rc_f's commands, once the previous frame's scan-out has started.
+        const bool rc_offer = rc_f < nf && rc_next < frames[rc_f].words.size() / RC_WORDS &&
+                              (rc_f == 0 || frames[rc_f - 1].scan_taken >= 0);
+        if (rc_offer) {
+            top->rc_cmd__024valid = 1;
+            for (int k = 0; k < RC_WORDS; k++) top->rc_cmd__024data[k] = frames[rc_f].words[rc_next * RC_WORDS + k];
+            if (frames[rc_f].start < 0) frames[rc_f].start = (long long)cycle;
         }
-        low();
-        high();
-    }
-    bool started = false;
-    size_t pixels = 0;
-    for (;;) {
-        idle_inputs();
-        top->scan_background = background;
+        // Lower pipeline: the queued colour-setup commands.
+        if (!queue.empty()) {
+            top->setup_cmd__024valid = 1;
+            for (int k = 0; k < SETUP_WORDS; k++) top->setup_cmd__024data[k] = queue.front().word[k];
+            if (frames[queue.front().frame].setup_first < 0) frames[queue.front().frame].setup_first = (long long)cycle;
+        }
+        // Scan-out of frame scan_f.
+        if (scan == Scan::Wait && frames[scan_f].drawn >= 0 && (scan_f == 0 || frames[scan_f - 1].scan_done >= 0)) {
+            frames[scan_f].scan_begin = (long long)cycle;
+            config_k = 0;
+            scan = frames[scan_f].config.empty() ? Scan::Start : Scan::Config;
+        }
+        Frame& sf = frames[scan_f];
+        top->scan_background = sf.background;
         top->scan_clear_behind = 1;
-        top->scan_phong = phong;
-        top->scan_start = !started;
+        top->scan_phong = sf.phong;
+        if (scan == Scan::Config) drive_config(&sf.config[config_k * CONFIG_WORDS]);
+        if (scan == Scan::Start) top->scan_start = 1;
         low();
-        const bool start_taken = !started && !top->scan_busy;
+        const bool rc_taken = rc_offer && top->rc_cmd__024ready;
+        const bool setup_taken = !queue.empty() && top->setup_cmd__024ready;
+        const bool setup_busy = top->setup_busy || top->t_we;
+        const bool start_taken = scan == Scan::Start && !top->scan_busy;
+        const bool scan_busy = top->scan_busy;
+        if (res_f < nf) {
+            frames[res_f].z_reads += top->z_re ? 1 : 0;
+            frames[res_f].clear_writes += (top->id_we && top->id_wr_data == 0) ? 1 : 0;
+        }
+        const bool result = top->rc_result__024valid;
+        const uint32_t r = top->rc_result__024data;
         bool beat = false;
         uint32_t word = 0;
         if (top->video_tvalid) {
@@ -341,23 +324,98 @@ void Bench::scanout(uint32_t background, uint64_t budget, bool phong, const std:
             beat = true;
             word = top->video_tdata;
         }
-        const bool busy = top->scan_busy;
+        const size_t draw_bank = top->draw_bank;
+        // The host answers a visible result at once (its command is offered from the next cycle).
+        bool eof = false;
+        if (result) {
+            if (res_f >= nf) throw Failure{"chipset: a result after the last frame's end of frame in cycle " + std::to_string(cycle)};
+            if (r & 1) {  // RcResult.eof is bit 0 (hdl/src/rc/mod.rs)
+                eof = true;
+            } else {
+                Frame& fr = frames[res_f];
+                results_of[res_f].push_back(r);
+                fr.results++;
+                if (r & visible_bit) {
+                    fprintf(proto_out, "Q %zu %zu\n", res_f, fr.results - 1);
+                    fflush(proto_out);
+                    if (!read_words(answer, 1 + SETUP_WORDS)) exit(4);
+                    if (answer[0] != 1) throw Failure{"host: the lower pipeline failed"};
+                    Queued q{res_f, {}};
+                    for (int k = 0; k < SETUP_WORDS; k++) q.word[k] = answer[1 + k];
+                    queue.push_back(q);
+                }
+            }
+        }
         high();
-        started |= start_taken;
+        const long long now = (long long)cycle;
+        if (rc_taken) {
+            Frame& fr = frames[rc_f];
+            if (rc_next == 1) fr.first_tri_taken = now - 1;
+            fr.last_cmd_taken = now;
+            rc_next++;
+            if (rc_next == fr.words.size() / RC_WORDS) {
+                rc_f++;
+                rc_next = 0;
+            }
+        }
+        if (setup_taken) queue.pop_front();
+        if (eof) {
+            Frame& fr = frames[res_f];
+            fr.eof = now;
+            std::vector<uint32_t>& res = results_of[res_f];
+            fprintf(proto_out, "R %zu %zu %zu\n", res_f, res.size(), draw_bank);
+            put_words(res.data(), res.size());
+            put_words(ibuf.data() + draw_bank * n, n);
+            put_words(zbuf.data(), n);
+            fflush(proto_out);
+            res_f++;
+        }
+        if (draw_f < nf && frames[draw_f].eof >= 0 && queue.empty() && !setup_taken && !setup_busy) {
+            frames[draw_f].drawn = now;
+            draw_f++;
+        }
+        if (scan == Scan::Config) {
+            config_k++;
+            if (config_k == frames[scan_f].config.size() / CONFIG_WORDS) scan = Scan::Start;
+        } else if (scan == Scan::Start && start_taken) {
+            frames[scan_f].scan_taken = now - 1;
+            scan = Scan::Running;
+        }
         if (beat) {
-            if (pixels == w * h) throw Failure{"chipset: more pixels than the screen has"};
+            if (scan != Scan::Running || pixels == w * h) {
+                throw Failure{"chipset: a pixel no scan-out asked for in cycle " + std::to_string(now - 1)};
+            }
             tdata.push_back(word);
             pixels++;
             if (pixels % PROGRESS_EVERY == 0) progress("scan-out", pixels, w * h);
         }
-        if (started && pixels == w * h && !busy) break;
+        if (scan == Scan::Running && pixels == w * h && !scan_busy) {
+            frames[scan_f].scan_done = now;
+            fprintf(proto_out, "O %zu %zu\n", scan_f, tdata.size());
+            put_words(tdata.data(), tdata.size());
+            fflush(proto_out);
+            tdata.clear();
+            scan = Scan::Wait;
+            pixels = 0;
+            scan_f++;
+        }
+        if (cycle % PROGRESS_EVERY == 0 && res_f < nf) {
+            const Frame& fr = frames[res_f];
+            progress(fr.first_tri_taken < 0 ? "clear" : "rasterization", fr.results, fr.words.size() / RC_WORDS - 2);
+        }
         if (cycle > limit) {
-            throw Failure{"chipset: scan-out produced " + std::to_string(pixels) + " of " + std::to_string(w * h) +
-                          " pixels in " + std::to_string(cycle - start) + " cycles"};
+            throw Failure{"chipset: " + std::to_string(nf) + " frames not done after " + std::to_string(cycle - start) +
+                          " cycles (" + std::to_string(res_f) + " drawn by the RC, " + std::to_string(scan_f) +
+                          " scanned out)"};
         }
     }
-    fprintf(proto_out, "O %llu %zu\n", (unsigned long long)cycle, tdata.size());
-    put_words(tdata.data(), tdata.size());
+    for (size_t f = 0; f < nf; f++) {
+        const Frame& fr = frames[f];
+        fprintf(proto_out, "F %zu %lld %lld %lld %lld %lld %lld %lld %lld %lld %lld %lld\n", f, fr.start, fr.first_tri_taken,
+                fr.last_cmd_taken, fr.eof, fr.clear_writes, fr.z_reads, fr.setup_first, fr.drawn, fr.scan_begin,
+                fr.scan_taken, fr.scan_done);
+    }
+    fprintf(proto_out, "D %llu\n", (unsigned long long)cycle);
     fflush(proto_out);
 }
 
@@ -398,15 +456,23 @@ int main(int argc, char** argv) {
         unsigned long long a = 0, b = 0, c = 0, d = 0;
         const int got = sscanf(line, "%31s %llu %llu %llu %llu", cmd, &a, &b, &c, &d);
         try {
-            if (got == 3 && !strcmp(cmd, "raster")) {
-                if (!read_words(words, size_t(a) * RC_WORDS)) return 4;
-                bench.rasterize(words, b);
-            } else if (got == 3 && !strcmp(cmd, "setup")) {
-                if (!read_words(words, size_t(a) * SETUP_WORDS)) return 4;
-                bench.colour_setup(words, b);
-            } else if (got == 5 && !strcmp(cmd, "scan")) {
-                if (!read_words(words, size_t(d) * CONFIG_WORDS)) return 4;
-                bench.scanout(uint32_t(a), b, c != 0, words);
+            if (got == 5 && !strcmp(cmd, "frame")) {
+                Bench::Frame f;
+                if (!read_words(f.words, size_t(a) * RC_WORDS)) return 4;
+                if (!read_words(f.config, size_t(d) * CONFIG_WORDS)) return 4;
+                f.background = uint32_t(b);
+                f.phong = c != 0;
+                bench.frames.push_back(std::move(f));
+            } else if (got == 3 && !strcmp(cmd, "run")) {
+                bench.visible_bit = uint32_t(b);
+                bench.results_of.assign(bench.frames.size(), {});
+                try {
+                    bench.run(a);
+                } catch (...) {
+                    bench.frames.clear();
+                    throw;
+                }
+                bench.frames.clear();
             } else if (got == 1 && !strcmp(cmd, "vcd_close")) {
                 bench.close_vcd();
                 fprintf(proto_out, "V\n");

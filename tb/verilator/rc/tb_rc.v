@@ -3,7 +3,7 @@
 //   i_we i_wr_addr i_wr_data            (14 hex fields, the last 11 are the cycle model's outputs)
 // Drives the generated `rc` with the recorded inputs, answers its memory ports with models of the same
 // semantics as tb/src/rc/memory.rs (read data one cycle later, old contents on a same-edge write;
-// Z starts at 2^24-1, I at 0), and compares every output with `!==` in every cycle. The first mismatch
+// Z starts at 2^24-1, I at 0; the I-buffer is read with z_re/z_rd_addr into i_rd_data), and compares every output with `!==` in every cycle. The first mismatch
 // prints "TESTBENCH FAILED" with the cycle and port; the end prints "TESTBENCH PASSED <cycles>".
 // Runs under Icarus (iverilog -g2012) and Verilator (--binary --timing).
 `timescale 1ns/1ps
@@ -14,6 +14,7 @@ module tb_rc;
   reg [189:0] cmd_data = 190'h0;
   reg res_ready = 1'b0;
   reg [23:0] z_rd_data = 24'h0;
+  reg [15:0] i_rd_data = 16'h0;
   wire cmd_ready, res_valid, z_re, z_we, i_we;
   wire [19:0] res_data, z_rd_addr, z_wr_addr, i_wr_addr;
   wire [23:0] z_wr_data;
@@ -24,7 +25,8 @@ module tb_rc;
   rc dut(.clock(clock), .cmd$data(cmd_data), .cmd$valid(cmd_valid), .cmd$ready(cmd_ready),
          .result$data(res_data), .result$valid(res_valid), .result$ready(res_ready),
          .z_re(z_re), .z_rd_addr(z_rd_addr), .z_we(z_we), .z_wr_addr(z_wr_addr), .z_wr_data(z_wr_data),
-         .z_rd_data(z_rd_data), .i_we(i_we), .i_wr_addr(i_wr_addr), .i_wr_data(i_wr_data));
+         .z_rd_data(z_rd_data), .i_we(i_we), .i_wr_addr(i_wr_addr), .i_wr_data(i_wr_data),
+         .i_rd_data(i_rd_data));
 
 `ifdef DUMP_VCD
   // With -DDUMP_VCD and +vcd=FILE: the ports and top-level nets of the rc instance, for `idxrender vcd-diff`.
@@ -37,6 +39,7 @@ module tb_rc;
 
   always @(posedge clock) begin
     if (z_re) z_rd_data <= zmem[z_rd_addr];
+    if (z_re) i_rd_data <= imem[z_rd_addr];
     if (z_we) zmem[z_wr_addr] <= z_wr_data;
     if (i_we) imem[i_wr_addr] <= i_wr_data;
   end
