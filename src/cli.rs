@@ -137,7 +137,14 @@ pub struct RenderArgs {
     /// With --vcd: every signal of every block instead of the top-level ports (hundreds of MB per frame).
     #[arg(long, requires = "vcd")]
     pub vcd_full: bool,
+    /// Render the scene this many times back to back (1..=64; RTL backends overlap the frames as the
+    /// chipset does) and write the last frame's files; every frame is compared with the golden one.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES as i64))]
+    pub frames: u32,
 }
+
+/// The most frames one `render --frames` run takes (each frame's host state is kept until the run ends).
+pub const MAX_FRAMES: u32 = 64;
 
 fn parse_size(s: &str) -> Result<Screen, String> {
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(|| format!("--size '{s}' is not WxH (e.g. 320x200)"))?;
@@ -239,6 +246,7 @@ fn run_render(args: &RenderArgs) -> Result<(), String> {
     let mesh = load_scene(args)?;
     let opts = render_options(args, &mesh)?;
     match args.arch {
+        ArchArg::Proof if args.frames != 1 => Err("--frames applies to --arch index (the chipset); PROOF renders one frame".into()),
         ArchArg::Proof => crate::proof::run_render(args, &mesh, &opts),
         ArchArg::Index => crate::render::run_render(args, &mesh, &opts),
     }

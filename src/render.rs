@@ -9,7 +9,7 @@
 //! screen size) and, with `--vcd`, `frame.vcd` (the top's ports; `--vcd-full`: every signal).
 
 use crate::cli::{BackendArg, RenderArgs};
-use golden::render::{render, render_with, Frame, RenderOptions};
+use golden::render::{render, render_frames_with, Frame, RenderOptions};
 use golden::scene::Mesh;
 use golden::shade::{PhongLights, Shading};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -38,13 +38,20 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     }
     let t0 = std::time::Instant::now();
     let golden_frame = render(mesh, opts)?;
+    if args.backend == BackendArg::Golden {
+        // The algorithmic model draws frames one after the other; the later ones are the same frame.
+        for _ in 1..args.frames {
+            render(mesh, opts)?;
+        }
+    }
     let golden_secs = t0.elapsed().as_secs_f64();
     let (frame, rtl) = match args.backend {
         BackendArg::Golden => (golden_frame, None),
         BackendArg::Rtl | BackendArg::Verilator => {
             let run = run_rtl(args, mesh, opts)?;
-            let diff = compare(&golden_frame, &run.frame);
-            (run.frame, Some((run.phases, run.secs, run.vcd, diff)))
+            // Every frame of the run against the golden frame (the scene is the same each time).
+            let diff = run.frames.iter().enumerate().find_map(|(k, f)| compare(&golden_frame, f).map(|d| if run.frames.len() > 1 { format!("frame {} of {}: {d}", k + 1, run.frames.len()) } else { d }));
+            (run.frame, Some((run.phases, run.cycles, run.secs, run.vcd, diff)))
         }
     };
     let mut stats = serde_json::json!({
@@ -74,7 +81,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         s.host_type_i.ops().cost(),
         s.host_type_ii.ops().cost()
     );
-    let Some((phases, secs, vcd, diff)) = rtl else {
+    let Some((phases, run_cycles, secs, vcd, diff)) = rtl else {
         crate::say!("  golden model: {golden_secs:.3} s");
         for f in files {
             crate::say!("  wrote {}", f.display());
@@ -89,9 +96,11 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "colour_setup": phases.colour_setup,
         "scan_out": phases.scan_out,
         "total": phases.total,
+        "frames": args.frames,
+        "frame_interval": phases.frame_interval,
         "scan_out_pixels_per_clock": pixels / phases.scan_out.max(1) as f64,
         "simulation_seconds": secs,
-        "simulated_cycles_per_second": phases.total as f64 / secs.max(1e-9),
+        "simulated_cycles_per_second": run_cycles as f64 / secs.max(1e-9),
         "equal_to_golden": diff.is_none(),
     });
     stats["cycles"] = cycles.clone();
@@ -104,8 +113,9 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         files.push(p);
     }
     crate::say!(
-        "  RTL: {} cycles (clear {}, geometry transfer {}, rasterization {}, colour setup {}, scan-out {} = {:.4} px/clk); \
+        "  RTL{}: {} cycles (clear {}, geometry transfer {}, rasterization {}, colour setup {}, scan-out {} = {:.4} px/clk{}); \
          {:.1} s simulated, {:.0} cycles/s",
+        if args.frames > 1 { format!(", last of {} frames", args.frames) } else { String::new() },
         phases.total,
         phases.clear,
         phases.geometry_transfer,
@@ -113,8 +123,9 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         phases.colour_setup,
         phases.scan_out,
         pixels / phases.scan_out.max(1) as f64,
+        phases.frame_interval.map(|i| format!("; frame interval {i}")).unwrap_or_default(),
         secs,
-        phases.total as f64 / secs.max(1e-9)
+        run_cycles as f64 / secs.max(1e-9)
     );
     for f in files {
         crate::say!("  wrote {}", f.display());
@@ -130,7 +141,11 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
 
 struct RtlRun {
     frame: Frame,
+    /// Every frame of the run (`frame` is the last, once compared).
+    frames: Vec<Frame>,
     phases: tb::chipset::PhaseCycles,
+    /// Cycles of the whole run.
+    cycles: u64,
     secs: f64,
     vcd: Option<PathBuf>,
 }
@@ -163,11 +178,12 @@ fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<RtlRu
     };
     // Simulation time, not the Verilator build (or the cache lookup) in the constructor.
     let t0 = std::time::Instant::now();
-    let result = render_with(mesh, opts, chip.as_mut());
+    let jobs: Vec<(&Mesh, &RenderOptions)> = (0..args.frames).map(|_| (mesh, opts)).collect();
+    let result = render_frames_with(&jobs, chip.as_mut());
     chip.finish_vcd();
     bar.finish_and_clear();
     let secs = t0.elapsed().as_secs_f64();
-    let frame = match result {
+    let frames = match result {
         Ok(f) => f,
         Err(e) => {
             let _ = std::fs::remove_file(&vcd_tmp);
@@ -181,7 +197,8 @@ fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<RtlRu
     } else {
         None
     };
-    Ok(RtlRun { frame, phases: chip.phases(), secs, vcd })
+    let cycles = chip.cycles();
+    Ok(RtlRun { frame: frames.last().cloned().ok_or("no frame")?, frames, phases: chip.phases(), cycles, secs, vcd })
 }
 
 /// The first difference between two frames of the same scene, if any.

@@ -14,6 +14,8 @@ use golden::scene::Mesh;
 pub trait CycleChipset: Chipset {
     /// Cycles per phase of the last frame.
     fn phases(&self) -> PhaseCycles;
+    /// Cycles since reset.
+    fn cycles(&self) -> u64;
     /// Close (flush) the VCD, if any.
     fn finish_vcd(&mut self);
 }
@@ -21,6 +23,9 @@ pub trait CycleChipset: Chipset {
 impl CycleChipset for RtlChipset {
     fn phases(&self) -> PhaseCycles {
         self.phases.clone()
+    }
+    fn cycles(&self) -> u64 {
+        self.cycle
     }
     fn finish_vcd(&mut self) {
         RtlChipset::finish_vcd(self)
@@ -30,6 +35,9 @@ impl CycleChipset for RtlChipset {
 impl CycleChipset for VerilatorChipset {
     fn phases(&self) -> PhaseCycles {
         self.phases.clone()
+    }
+    fn cycles(&self) -> u64 {
+        self.cycle
     }
     fn finish_vcd(&mut self) {
         VerilatorChipset::finish_vcd(self)
