@@ -10,7 +10,9 @@
 //! * **Hardware efficiency**: cycles per phase (the backends' accounting, `cycles.json`), RC candidates
 //!   and fragments per clock, RC and colour-setup cycles per triangle, CS pixels per clock, against the
 //!   limits of one candidate per clock (traversal), one Z read per clock (the Z port) and one pixel per
-//!   clock (scan-out). The steady state is frame 2, on buffers the CS cleared behind frame 1.
+//!   clock (scan-out). Each scene and size runs [`FRAMES_PER_RUN`] frames back to back on one chipset
+//!   (the RC draws frame N+1 while the CS scans frame N out); the steady state is the last frame, and
+//!   its frame interval (scan start to scan start) is the time per frame.
 //! * **Frames per second at Fmax**: from the `chipset` rows of `fpga-report`'s JSON, against seed 000
 //!   Table IV's frame rates (`golden::analysis::levels`). Without an Fmax the table says why and gives
 //!   no frame rate; it never assumes a clock.
@@ -29,7 +31,7 @@ use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
-use tb::backend::{render_timed, CycleChipset, TimedFrame};
+use tb::backend::{render_timed, render_timed_frames, CycleChipset, TimedFrame};
 use tb::chipset::{PhaseCycles, RtlChipset};
 use tb::verilator::VerilatorChipset;
 
@@ -102,7 +104,8 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
         }
     }
 
-    // Verilator: every scene and size, two frames each on one chipset (frame 2 is the steady state).
+    // Verilator: every scene and size, FRAMES_PER_RUN frames back to back on one chipset (the last is
+    // the steady state).
     let mut frames = Vec::new();
     let mut sim_rows = Vec::new();
     for case in &cases {
@@ -110,17 +113,13 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
         bar.set_message(format!("Verilator {} {w}x{h}", case.scene));
         let build = builds[SIZES.iter().position(|&s| s == (w, h)).expect("a size of SIZES")].clone();
         let mut chip = VerilatorChipset::from_build(case.opts.screen, build)?;
-        let mut frame1_ok = true;
-        for frame in [1u32, 2] {
-            if !frame1_ok {
-                break;
-            }
-            let run = render_timed(&case.mesh, &case.opts, &mut chip);
-            let row = FrameRow::new(case, frame, &run);
-            frame1_ok = row.phases.is_some();
-            sim_rows.push(SimRow::new("Verilator", case, frame, &run, &row.equals_golden));
-            frames.push(row);
-        }
+        let c0 = chip.cycle;
+        let runs = render_timed_frames(&case.mesh, &case.opts, FRAMES_PER_RUN as usize, &mut chip);
+        let rows: Vec<FrameRow> = runs.iter().enumerate().map(|(k, run)| FrameRow::new(case, k as u32 + 1, run)).collect();
+        let verdict = rows.iter().map(|r| r.equals_golden.clone()).find(|v| !v.equal).unwrap_or_else(|| rows[rows.len() - 1].equals_golden.clone());
+        let done = rows.iter().all(|r| r.phases.is_some());
+        sim_rows.push(SimRow::new("Verilator", case, FRAMES_PER_RUN, done.then_some(chip.cycle - c0), runs[0].secs, &verdict));
+        frames.extend(rows);
         bar.inc(1);
     }
 
@@ -140,7 +139,7 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
         let mut chip = RtlChipset::new(case.opts.screen, None)?.with_progress(progress);
         let run = render_timed(&case.mesh, &case.opts, &mut chip);
         let row = FrameRow::new(&case, 1, &run);
-        let sim = SimRow::new("RustHDL", &case, 1, &run, &row.equals_golden);
+        let sim = SimRow::new("RustHDL", &case, 1, row.phases.is_some().then_some(chip.cycle), run.secs, &row.equals_golden);
         bar.inc(1);
         RtlResult { frame: row, sim }
     };
@@ -349,6 +348,8 @@ struct Phases {
     colour_setup: u64,
     scan_out: u64,
     total: u64,
+    /// From the previous frame's scan start to this one's (none for a run's first frame).
+    frame_interval: Option<u64>,
     z_reads: u64,
 }
 
@@ -361,6 +362,7 @@ impl From<&PhaseCycles> for Phases {
             colour_setup: p.colour_setup,
             scan_out: p.scan_out,
             total: p.total,
+            frame_interval: p.frame_interval,
             z_reads: p.z_reads,
         }
     }
@@ -375,14 +377,12 @@ struct Rates {
     fragments_per_clock: f64,
     /// (rasterization - clear) / triangles sent.
     rc_cycles_per_triangle: f64,
-    /// colour setup / setup commands (None: nothing to set up).
+    /// colour-setup span / setup commands (None: nothing to set up); the span runs beside
+    /// rasterization, so this is the rate at which the RC delivered visible triangles when it is larger
+    /// than colour setup's own 48 cycles per triangle.
     colour_setup_cycles_per_triangle: Option<f64>,
     /// pixels / scan-out cycles; limit 1.
     cs_pixels_per_clock: f64,
-    /// Shares of the frame's cycles.
-    share_rasterization: f64,
-    share_colour_setup: f64,
-    share_scan_out: f64,
 }
 
 /// One simulated frame's cycle accounting and the counts to divide it by.
@@ -425,9 +425,6 @@ impl FrameRow {
                 rc_cycles_per_triangle: per(p.rasterization - p.clear, triangles_sent),
                 colour_setup_cycles_per_triangle: (run.setup_commands > 0).then(|| per(p.colour_setup, run.setup_commands)),
                 cs_pixels_per_clock: per(pixels, p.scan_out),
-                share_rasterization: per(p.rasterization, p.total),
-                share_colour_setup: per(p.colour_setup, p.total),
-                share_scan_out: per(p.scan_out, p.total),
             }
         });
         FrameRow {
@@ -454,25 +451,26 @@ struct SimRow {
     simulator: String,
     scene: String,
     size: [u32; 2],
-    frame: u32,
+    /// Frames in the run (back to back on one chipset).
+    frames: u32,
+    /// Cycles of the whole run (None: it stopped early).
     cycles: Option<u64>,
-    /// The host program and the simulation of the frame (`render_with`), not building the simulator.
+    /// The host program and the simulation of the run, not building the simulator.
     seconds: f64,
     cycles_per_second: Option<f64>,
     equals_golden: Verdict,
 }
 
 impl SimRow {
-    fn new(simulator: &str, case: &Case, frame: u32, run: &TimedFrame, verdict: &Verdict) -> SimRow {
-        let cycles = run.phases.as_ref().map(|p| p.total);
+    fn new(simulator: &str, case: &Case, frames: u32, cycles: Option<u64>, secs: f64, verdict: &Verdict) -> SimRow {
         SimRow {
             simulator: simulator.into(),
             scene: case.scene.clone(),
             size: [case.opts.screen.width, case.opts.screen.height],
-            frame,
+            frames,
             cycles,
-            seconds: run.secs,
-            cycles_per_second: cycles.map(|c| c as f64 / run.secs.max(1e-9)),
+            seconds: secs,
+            cycles_per_second: cycles.map(|c| c as f64 / secs.max(1e-9)),
             equals_golden: verdict.clone(),
         }
     }
@@ -658,7 +656,12 @@ fn parse_fpga_report(text: &str) -> Result<Vec<FpgaRow>, String> {
     Ok(out)
 }
 
-/// A steady-state frame (frame 2) of one scene and size, as the frame-rate tables need it.
+/// Frames per scene and size in the Verilator runs, back to back on one chipset: frames 1 and 2 clear
+/// their I-buffer bank (the first use of each after reset), frame 3 is the steady state.
+pub const FRAMES_PER_RUN: u32 = 3;
+
+/// A steady-state frame (the last of a run) of one scene and size, as the frame-rate tables need it;
+/// `cycles` is its frame interval, the time per frame of a long run.
 struct Steady {
     scene: String,
     size: [u32; 2],
@@ -670,10 +673,10 @@ struct Steady {
 fn steady_frames(frames: &[FrameRow], cases: &[Case]) -> Vec<Steady> {
     frames
         .iter()
-        .filter(|f| f.frame == 2)
+        .filter(|f| f.frame == FRAMES_PER_RUN)
         .filter_map(|f| {
             let case = cases.iter().find(|c| c.scene == f.scene && [c.opts.screen.width, c.opts.screen.height] == f.size)?;
-            Some(Steady { scene: f.scene.clone(), size: f.size, cycles: f.phases?.total, triangles_in: case.golden.stats.triangles_in, equal: f.equals_golden.equal })
+            Some(Steady { scene: f.scene.clone(), size: f.size, cycles: f.phases?.frame_interval?, triangles_in: case.golden.stats.triangles_in, equal: f.equals_golden.equal })
         })
         .collect()
 }
@@ -917,7 +920,7 @@ fn table(head: &[&str], rows: &[Vec<String>]) -> String {
 /// equal golden: (what, scene, size, value).
 fn extremes(frames: &[FrameRow]) -> Option<((&'static str, String, f64), (&'static str, String, f64))> {
     let mut all = Vec::new();
-    for f in frames.iter().filter(|f| f.frame == 2 && f.equals_golden.equal) {
+    for f in frames.iter().filter(|f| f.frame == FRAMES_PER_RUN && f.equals_golden.equal) {
         let Some(r) = &f.rates else { continue };
         let at = format!("{} {}", f.scene, size_str(f.size));
         all.push(("RC candidates per clock", at.clone(), r.candidates_per_clock));
@@ -936,11 +939,11 @@ fn summary(r: &Report) -> Vec<String> {
     }
     for s in &r.simulators {
         lines.push(format!(
-            "{} {} {} frame {}: {} cycles in {:.2} s ({}), equals golden: {}",
+            "{} {} {} {} frame(s): {} cycles in {:.2} s ({}), equals golden: {}",
             s.simulator,
             s.scene,
             size_str(s.size),
-            s.frame,
+            s.frames,
             s.cycles.map(|c| c.to_string()).unwrap_or("-".into()),
             s.seconds,
             s.cycles_per_second.map(|c| format!("{c:.0} cycles/s")).unwrap_or("-".into()),
@@ -998,9 +1001,9 @@ fn markdown(r: &Report) -> String {
     let _ = writeln!(
         md,
         "Whole frames through the `chipset` top, driven by the same host program (`render_with`) and compared with the \
-         golden frame as `render --backend` compares them (image, I-buffer, Z-buffer, per-triangle results). Seconds \
-         are the host program and the simulation of the frame; cycles/s = cycles / seconds. Frame 1 is the first \
-         after reset (the RC clears the buffers); frame 2 runs on the buffers the CS cleared behind frame 1.\n"
+         golden frame as `render --backend` compares them (image, I-buffer, Z-buffer, per-triangle results; every \
+         frame of a run). Verilator runs {FRAMES_PER_RUN} frames back to back per scene and size; seconds are the host \
+         program and the simulation of the run; cycles/s = cycles / seconds.\n"
     );
     let rows: Vec<Vec<String>> = r
         .simulators
@@ -1010,7 +1013,7 @@ fn markdown(r: &Report) -> String {
                 s.simulator.clone(),
                 s.scene.clone(),
                 size_str(s.size),
-                s.frame.to_string(),
+                s.frames.to_string(),
                 s.cycles.map(|c| c.to_string()).unwrap_or("-".into()),
                 format!("{:.3}", s.seconds),
                 s.cycles_per_second.map(|c| format!("{c:.0}")).unwrap_or("-".into()),
@@ -1018,7 +1021,7 @@ fn markdown(r: &Report) -> String {
             ]
         })
         .collect();
-    md += &table(&["simulator", "scene", "size", "frame", "cycles", "seconds", "cycles/s", "equals golden"], &rows);
+    md += &table(&["simulator", "scene", "size", "frames", "cycles", "seconds", "cycles/s", "equals golden"], &rows);
     md.push('\n');
     let rtl = r.simulators.iter().find(|s| s.simulator == "RustHDL");
     if let Some(s) = rtl {
@@ -1026,10 +1029,9 @@ fn markdown(r: &Report) -> String {
             (Some(eq), _) => {
                 let _ = writeln!(
                     md,
-                    "The RustHDL frame ({} {} frame {}) is measured, not extrapolated. Its cycles per phase {} the Verilated frame's.",
+                    "The RustHDL frame ({} {}, the first after reset) is measured, not extrapolated. Its cycles per phase {} those of the Verilated run's frame 1.",
                     s.scene,
                     size_str(s.size),
-                    s.frame,
                     if eq { "equal" } else { "**differ from**" }
                 );
             }
@@ -1059,8 +1061,11 @@ fn markdown(r: &Report) -> String {
     let _ = writeln!(
         md,
         "Cycles per phase from the Verilated chipset's accounting (the RustHDL backend counts the same: \
-         `tb/tests/verilator_frames.rs`). Rasterization runs from the frame command to the end-of-frame result and \
-         includes the clear; geometry transfer overlaps it; total = rasterization + colour setup + scan-out.\n"
+         `tb/tests/verilator_frames.rs`), {FRAMES_PER_RUN} frames back to back per scene and size. Rasterization runs \
+         from the frame command to the end-of-frame result and includes the clear (frames 1 and 2 clear their \
+         I-buffer bank, the first use of each after reset); geometry transfer and colour setup overlap it; scan-out \
+         overlaps the next frame's rasterization; total runs from the frame command to the end of its scan-out; the \
+         frame interval (scan start to scan start) is the time per frame of a long run.\n"
     );
     let rows: Vec<Vec<String>> = r
         .frames
@@ -1068,14 +1073,17 @@ fn markdown(r: &Report) -> String {
         .map(|f| {
             let mut row = vec![f.scene.clone(), size_str(f.size), f.frame.to_string()];
             match f.phases {
-                Some(p) => row.extend([p.clear, p.geometry_transfer, p.rasterization, p.colour_setup, p.scan_out, p.total].map(|c| c.to_string())),
-                None => row.extend(std::iter::repeat("-".to_string()).take(6)),
+                Some(p) => {
+                    row.extend([p.clear, p.geometry_transfer, p.rasterization, p.colour_setup, p.scan_out, p.total].map(|c| c.to_string()));
+                    row.push(p.frame_interval.map(|c| c.to_string()).unwrap_or("-".into()));
+                }
+                None => row.extend(std::iter::repeat("-".to_string()).take(7)),
             }
             row.push(f.equals_golden.cell());
             row
         })
         .collect();
-    md += &table(&["scene", "size", "frame", "clear", "geometry transfer", "rasterization", "colour setup", "scan-out", "total", "equals golden"], &rows);
+    md += &table(&["scene", "size", "frame", "clear", "geometry transfer", "rasterization", "colour setup", "scan-out", "total", "frame interval", "equals golden"], &rows);
     let _ = writeln!(
         md,
         "\nRates against the limits, in the rasterization phase for the RC and the scan-out phase for the CS. Limits: \
@@ -1084,7 +1092,8 @@ fn markdown(r: &Report) -> String {
          bounding-box pixels, counted by the algorithmic RC on the same commands (the traversal's walk is not \
          visible at the chipset's ports); fragments are the Z reads the chipset made (the algorithmic RC's count \
          in brackets where they differ). RC cycles per triangle = (rasterization - clear) / triangles sent; \
-         colour setup per shaded triangle = colour-setup cycles / setup commands. Frame 2 is the steady state.\n"
+         colour setup per shaded triangle = colour-setup span / setup commands (the span runs beside rasterization, so \
+         it is the RC's pace of visible results when that is slower than colour setup). The last frame is the steady state.\n"
     );
     let rows: Vec<Vec<String>> = r
         .frames
@@ -1106,10 +1115,9 @@ fn markdown(r: &Report) -> String {
                         q.colour_setup_cycles_per_triangle.map(|c| format!("{c:.1}")).unwrap_or("-".into()),
                         format!("{:.4}", q.cs_pixels_per_clock),
                         pct(q.cs_pixels_per_clock),
-                        format!("{} / {} / {}", pct(q.share_rasterization), pct(q.share_colour_setup), pct(q.share_scan_out)),
                     ]);
                 }
-                _ => row.extend(std::iter::repeat("-".to_string()).take(12)),
+                _ => row.extend(std::iter::repeat("-".to_string()).take(11)),
             }
             row.push(if f.equals_golden.equal { "yes".into() } else { "**no**".into() });
             row
@@ -1131,7 +1139,6 @@ fn markdown(r: &Report) -> String {
             "colour setup cycles/shaded triangle",
             "CS px/clk",
             "% of limit",
-            "share of frame: rasterization / colour setup / scan-out",
             "equals golden",
         ],
         &rows,
@@ -1209,7 +1216,7 @@ fn markdown(r: &Report) -> String {
                 })
                 .collect();
             md += &table(
-                &["device", "Fmax (MHz)", "scene", "size", "cycles/frame (frame 2)", "frames/s at Fmax", "Table IV frames/s", "triangles/s at Fmax", "Table IV triangles/s", "frame equals golden"],
+                &["device", "Fmax (MHz)", "scene", "size", "cycles/frame (frame interval)", "frames/s at Fmax", "Table IV frames/s", "triangles/s at Fmax", "Table IV triangles/s", "frame equals golden"],
                 &rows,
             );
             md.push('\n');
@@ -1236,7 +1243,7 @@ fn markdown(r: &Report) -> String {
         })
         .collect();
     md += &table(
-        &["scene", "size", "Table IV level", "frames/s", "triangles: scene / level's per frame", "cycles/frame (frame 2)", "MHz for that rate", "frame equals golden"],
+        &["scene", "size", "Table IV level", "frames/s", "triangles: scene / level's per frame", "cycles/frame (frame interval)", "MHz for that rate", "frame equals golden"],
         &rows,
     );
     md

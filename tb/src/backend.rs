@@ -16,6 +16,8 @@ pub trait CycleChipset: Chipset {
     fn phases(&self) -> PhaseCycles;
     /// Cycles since reset.
     fn cycles(&self) -> u64;
+    /// Cycles per phase of every frame of the last run.
+    fn frame_phases(&self) -> Vec<PhaseCycles>;
     /// Close (flush) the VCD, if any.
     fn finish_vcd(&mut self);
 }
@@ -26,6 +28,9 @@ impl CycleChipset for RtlChipset {
     }
     fn cycles(&self) -> u64 {
         self.cycle
+    }
+    fn frame_phases(&self) -> Vec<PhaseCycles> {
+        self.frame_phases.clone()
     }
     fn finish_vcd(&mut self) {
         RtlChipset::finish_vcd(self)
@@ -38,6 +43,9 @@ impl CycleChipset for VerilatorChipset {
     }
     fn cycles(&self) -> u64 {
         self.cycle
+    }
+    fn frame_phases(&self) -> Vec<PhaseCycles> {
+        self.frame_phases.clone()
     }
     fn finish_vcd(&mut self) {
         VerilatorChipset::finish_vcd(self)
@@ -64,37 +72,47 @@ pub struct TimedFrame {
 
 /// Render one frame of `mesh` through `chip` (see [`TimedFrame`]).
 pub fn render_timed(mesh: &Mesh, opts: &RenderOptions, chip: &mut dyn CycleChipset) -> TimedFrame {
-    render_timed_frames(mesh, opts, 1, chip)
+    render_timed_frames(mesh, opts, 1, chip).pop().expect("one frame")
 }
 
-/// Render `mesh` `frames` times back to back through `chip`; the [`TimedFrame`] of the last frame
-/// (whose `phases` include the frame interval when `frames` > 1).
-pub fn render_timed_frames(mesh: &Mesh, opts: &RenderOptions, frames: usize, chip: &mut dyn CycleChipset) -> TimedFrame {
-    let mut rec = Recorder { chip, last: None };
+/// Render `mesh` `frames` times back to back through `chip` in one run: a [`TimedFrame`] per frame
+/// (`secs` is the whole run's; `phases` of frame k > 1 include the frame interval). When the run
+/// fails, every frame carries the error and no phases.
+pub fn render_timed_frames(mesh: &Mesh, opts: &RenderOptions, frames: usize, chip: &mut dyn CycleChipset) -> Vec<TimedFrame> {
+    let mut rec = Recorder { chip, outs: Vec::new() };
     let t0 = std::time::Instant::now();
-    let jobs: Vec<(&Mesh, &RenderOptions)> = (0..frames).map(|_| (mesh, opts)).collect();
-    let frame = render_frames_with(&jobs, &mut rec).map(|mut v| v.pop().expect("one frame at least"));
+    let jobs: Vec<(&Mesh, &RenderOptions)> = (0..frames.max(1)).map(|_| (mesh, opts)).collect();
+    let result = render_frames_with(&jobs, &mut rec);
     let secs = t0.elapsed().as_secs_f64();
-    let last = rec.last.take();
-    let phases = last.as_ref().map(|_| rec.chip.phases());
-    let (results, scanout) = match last {
-        Some(o) => (o.results, Some(o.scan)),
-        None => (Vec::new(), None),
-    };
-    let setup_commands = results.iter().filter(|r| r.visible).count() as u64;
-    TimedFrame { frame, secs, phases, results, setup_commands, scanout }
+    let outs = std::mem::take(&mut rec.outs);
+    let phases = if outs.len() == jobs.len() { rec.chip.frame_phases() } else { Vec::new() };
+    (0..jobs.len())
+        .map(|k| {
+            let out = outs.get(k).cloned();
+            let (results, scanout) = match out {
+                Some(o) => (o.results, Some(o.scan)),
+                None => (Vec::new(), None),
+            };
+            let frame = match &result {
+                Ok(v) => Ok(v[k].clone()),
+                Err(e) => Err(e.clone()),
+            };
+            let setup_commands = results.iter().filter(|r| r.visible).count() as u64;
+            TimedFrame { frame, secs, phases: phases.get(k).cloned(), results, setup_commands, scanout }
+        })
+        .collect()
 }
 
-/// Passes the run through to the chipset and keeps what came out for the last frame.
+/// Passes the run through to the chipset and keeps what came out.
 struct Recorder<'a> {
     chip: &'a mut dyn CycleChipset,
-    last: Option<FrameOut>,
+    outs: Vec<FrameOut>,
 }
 
 impl Chipset for Recorder<'_> {
     fn run(&mut self, frames: &[FrameJob], host: &mut dyn LowerPipeline) -> Result<Vec<FrameOut>, String> {
         let out = self.chip.run(frames, host)?;
-        self.last = out.last().cloned();
+        self.outs = out.clone();
         Ok(out)
     }
 }
