@@ -5,7 +5,7 @@
 //! installed (the test script installs it).
 
 use golden::format::Screen;
-use golden::render::{render, render_with, Frame, RenderOptions};
+use golden::render::{render, render_frames_with, render_with, Frame, RenderOptions};
 use golden::scene::builtin;
 use golden::shade::Shading;
 use tb::chipset::RtlChipset;
@@ -61,7 +61,7 @@ fn teapot_at_320x200_through_the_verilated_chipset_equals_the_golden_frame() {
     }
     let p = &chip.phases;
     assert_eq!(p.clear, screen.pixels() as u64, "the first frame clears every pixel once");
-    assert_eq!(p.total, p.rasterization + p.colour_setup + p.scan_out);
+    assert!(p.total >= p.rasterization + p.scan_out && p.total < p.rasterization + p.colour_setup + p.scan_out, "colour setup beside rasterization: {p:?}");
     assert!(vl.stats.flagged_visible > 0, "nothing flagged visible");
     eprintln!(
         "teapot 320x200 through Verilator: {p:?}; {secs:.2} s for the frame ({:.0} cycles/s), harness build {:.1} s (fresh: {})",
@@ -126,27 +126,35 @@ fn polyhedron_cycles_per_phase_through_verilator_equal_the_rusthdl_simulations()
 }
 
 #[test]
-fn a_second_verilated_frame_uses_the_buffers_the_color_shader_cleared_behind_the_first() {
-    if verilator_missing("second frame through Verilator") {
+fn five_verilated_frames_of_four_scenes_back_to_back_equal_golden_and_the_rusthdl_run_cycle_for_cycle() {
+    if verilator_missing("frames back to back through Verilator") {
         return;
     }
-    // Castle, then dolphins, on the same chipset: no RC clear in the second frame; both simulations
-    // count the same cycles for it, and its frame equals the golden one.
-    let screen = Screen::new(64, 48).unwrap();
-    let castle = builtin::scene("castle").unwrap();
-    let dolphins = builtin::scene("dolphins").unwrap();
-    let (o1, o2) = (RenderOptions::for_scene(&castle, screen, Shading::Gouraud), RenderOptions::for_scene(&dolphins, screen, Shading::Flat));
+    // The scenes of chipset_frames.rs's back-to-back test: each frame equals its golden frame, and
+    // every frame's cycle accounting equals the RustHDL run's.
+    let screen = Screen::new(96, 64).unwrap();
+    let scene = |n: &str| builtin::scene(n).unwrap();
+    let jobs: Vec<(golden::scene::Mesh, RenderOptions)> =
+        [(scene("castle"), Shading::Gouraud), (scene("dolphins"), Shading::Flat), (builtin::teapot(4), Shading::Phong), (builtin::polyhedron(), Shading::Gouraud), (scene("castle"), Shading::Phong)]
+            .into_iter()
+            .map(|(m, s)| {
+                let o = RenderOptions::for_scene(&m, screen, s);
+                (m, o)
+            })
+            .collect();
+    let refs: Vec<(&golden::scene::Mesh, &RenderOptions)> = jobs.iter().map(|(m, o)| (m, o)).collect();
     let mut vl = VerilatorChipset::new(screen, None).unwrap();
-    render_with(&castle, &o1, &mut vl).unwrap();
-    let second = render_with(&dolphins, &o2, &mut vl).unwrap();
-    assert_eq!(vl.phases.clear, 0, "the second frame needs no clear");
-    if let Some(d) = first_difference(&render(&dolphins, &o2).unwrap(), &second) {
-        panic!("second frame through Verilator (golden vs Verilator): {d}");
+    let frames = render_frames_with(&refs, &mut vl).unwrap();
+    for (k, ((mesh, opts), f)) in jobs.iter().zip(&frames).enumerate() {
+        if let Some(d) = first_difference(&render(mesh, opts).unwrap(), f) {
+            panic!("frame {} ({} {:?}) through Verilator (golden vs Verilator): {d}", k + 1, mesh.name, opts.shading);
+        }
     }
     let mut rtl = RtlChipset::new(screen, None).unwrap();
-    render_with(&castle, &o1, &mut rtl).unwrap();
-    render_with(&dolphins, &o2, &mut rtl).unwrap();
-    assert_eq!(rtl.phases, vl.phases, "second frame's cycles: RustHDL (left) vs Verilator (right)");
+    render_frames_with(&refs, &mut rtl).unwrap();
+    assert_eq!(rtl.frame_phases, vl.frame_phases, "cycles per phase of every frame: RustHDL (left) vs Verilator (right)");
+    assert_eq!(rtl.cycle, vl.cycle);
+    assert_eq!(vl.frame_phases[2].clear, 0, "frame 3 needs no clear");
 }
 
 #[test]
@@ -256,16 +264,19 @@ fn the_verilated_chipsets_port_waveforms_equal_the_rusthdl_simulations_at_every_
     // Phong, so that the Phong-constant write ports carry traffic too.
     let screen = Screen::new(16, 8).unwrap();
     let mesh = builtin::polyhedron();
+    // Three frames back to back, so that the bank swaps and both pipelines at once are on the ports.
     let opts = RenderOptions::for_scene(&mesh, screen, Shading::Phong);
+    let jobs = [(&mesh, &opts), (&mesh, &opts), (&mesh, &opts)];
     let (pr, pv) = (vcd_path("chipset_verilator", "polyhedron_16x8_rusthdl"), vcd_path("chipset_verilator", "polyhedron_16x8_verilator"));
     let mut rtl = RtlChipset::new(screen, Some(pr.clone())).unwrap();
-    render_with(&mesh, &opts, &mut rtl).unwrap();
+    render_frames_with(&jobs, &mut rtl).unwrap();
     rtl.finish_vcd();
     let mut vl = VerilatorChipset::new(screen, Some(pv.clone())).unwrap();
-    render_with(&mesh, &opts, &mut vl).unwrap();
+    render_frames_with(&jobs, &mut vl).unwrap();
     vl.finish_vcd();
     let (a, b) = (parse_vcd(&std::fs::read_to_string(&pr).unwrap()), parse_vcd(&std::fs::read_to_string(&pv).unwrap()));
-    assert_eq!(b.names.len(), 46, "the Verilator VCD holds the 46 ports and nothing else: {:?}", b.names);
+    assert_eq!(b.names.len(), 53, "the Verilator VCD holds the 53 ports and nothing else: {:?}", b.names);
+    assert!(b.port("draw_bank").iter().any(|(_, v)| v[0]) && b.port("draw_bank").iter().any(|(_, v)| !v[0]), "the banks never swapped");
     for (port, width) in &b.names {
         let (x, y) = (a.port(port), b.port(port));
         assert_eq!(x.len(), y.len(), "{port}: {} vs {} timestamps", x.len(), y.len());
