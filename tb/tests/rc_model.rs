@@ -45,7 +45,7 @@ fn cycle_model_reproduces_seeded_random_triangle_lists() {
     for n in 0..20 {
         let screen = Screen::new(16 + rng.below(48) as u32, 16 + rng.below(40) as u32).unwrap();
         let cmds = frame(true, random_triangles(&mut rng, screen, 40));
-        let drive = Drive { gap_percent: 30, stall_percent: 40, seed: rng.next_u64(), garbage: true };
+        let drive = Drive { gap_percent: 30, stall_percent: 40, seed: rng.next_u64(), garbage: true, stale_depth: false };
         check(&format!("list {n}"), screen, &cmds, drive);
     }
 }

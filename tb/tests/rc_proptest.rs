@@ -58,7 +58,7 @@ proptest! {
             })
             .collect();
         let cmds = frame(true, cmds);
-        let drive = Drive { gap_percent: gap as u64, stall_percent: stall as u64, seed, garbage: true };
+        let drive = Drive { gap_percent: gap as u64, stall_percent: stall as u64, seed, garbage: true, stale_depth: false };
         let run = run_rtl("proptest_list", screen, &cmds, drive, None).map_err(TestCaseError::fail)?;
         let r = reference(screen, &cmds);
         prop_assert_eq!(run.results, r.results);

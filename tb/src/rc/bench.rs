@@ -27,18 +27,21 @@ pub struct Drive {
     pub seed: u64,
     /// Fill the buffers with random words first (the first command must then be a clearing frame).
     pub garbage: bool,
+    /// Fill the Z-buffer with random words and the I-buffer with the background index: what a frame
+    /// after the Color Shader's clear-behind finds (the RC must take every depth as far).
+    pub stale_depth: bool,
 }
 
 impl Drive {
     /// Commands as fast as accepted, results always taken, buffers cleared.
     pub fn ideal() -> Drive {
-        Drive { gap_percent: 0, stall_percent: 0, seed: 1, garbage: false }
+        Drive { gap_percent: 0, stall_percent: 0, seed: 1, garbage: false, stale_depth: false }
     }
     /// Random gaps and back-pressure from a seed (overridden by `SEED`), printed so that it can be replayed.
     pub fn random(test: &str, default_seed: u64) -> Drive {
         let seed = Rng::new(default_seed).seed();
         println!("{test}: seed {seed} (set SEED={seed} to replay)");
-        Drive { gap_percent: 30, stall_percent: 40, seed, garbage: true }
+        Drive { gap_percent: 30, stall_percent: 40, seed, garbage: true, stale_depth: false }
     }
 }
 
@@ -212,7 +215,9 @@ fn run_inner(
     max_cycles: u64,
 ) -> Result<Run, Stop> {
     let mut rng = Rng::new(drive.seed);
-    let (mut zmem, mut imem) = if drive.garbage {
+    let (mut zmem, mut imem) = if drive.stale_depth {
+        (Sram::garbage(screen.pixels(), 24, &mut rng), Sram::new(screen.pixels(), 16, INDEX_BACKGROUND))
+    } else if drive.garbage {
         (Sram::garbage(screen.pixels(), 24, &mut rng), Sram::garbage(screen.pixels(), 16, &mut rng))
     } else {
         (Sram::new(screen.pixels(), 24, DEPTH_MAX), Sram::new(screen.pixels(), 16, INDEX_BACKGROUND))
