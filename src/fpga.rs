@@ -43,6 +43,9 @@ pub enum Device {
     /// ECP5 LFE5U-45F, package CABGA381: 43 848 LUT4, 108 DP16KD BRAM, 72 MULT18X18D.
     #[value(name = "ecp5-45k")]
     Ecp5_45k,
+    /// ECP5 LFE5U-85F, package CABGA381: 83 640 LUT4, 208 DP16KD BRAM, 156 MULT18X18D.
+    #[value(name = "ecp5-85k")]
+    Ecp5_85k,
 }
 
 impl Device {
@@ -51,6 +54,7 @@ impl Device {
             Device::Up5k => "up5k",
             Device::Hx8k => "hx8k",
             Device::Ecp5_45k => "ecp5-45k",
+            Device::Ecp5_85k => "ecp5-85k",
         }
     }
     fn nextpnr_args(self) -> [&'static str; 3] {
@@ -58,17 +62,18 @@ impl Device {
             Device::Up5k => ["--up5k", "--package", "sg48"],
             Device::Hx8k => ["--hx8k", "--package", "ct256"],
             Device::Ecp5_45k => ["--45k", "--package", "CABGA381"],
+            Device::Ecp5_85k => ["--85k", "--package", "CABGA381"],
         }
     }
     fn ecp5(self) -> bool {
-        self == Device::Ecp5_45k
+        matches!(self, Device::Ecp5_45k | Device::Ecp5_85k)
     }
     /// The synthesis a device needs; devices of one flavour share one netlist.
     fn flavour(self) -> &'static str {
         match self {
             Device::Up5k => "dsp",
             Device::Hx8k => "nodsp",
-            Device::Ecp5_45k => "ecp5",
+            Device::Ecp5_45k | Device::Ecp5_85k => "ecp5",
         }
     }
     /// yosys's synthesis command for the device (iCE40: SB_MAC16 only on the UltraPlus parts).
@@ -76,7 +81,7 @@ impl Device {
         match self {
             Device::Up5k => "synth_ice40 -dsp",
             Device::Hx8k => "synth_ice40",
-            Device::Ecp5_45k => "synth_ecp5",
+            Device::Ecp5_45k | Device::Ecp5_85k => "synth_ecp5",
         }
     }
     /// The logic-cell resource in nextpnr's utilisation table.

@@ -3,29 +3,38 @@
 //! RTL can use FPGA block RAM or external SRAM.
 //!
 //! ```text
-//!  host (upper pipeline)                                               +-------------------+
-//!   rc_cmd ---(valid/ready)--> [ rc ] --- z read/write ---------------->| Z-buffer  (W*H x 24)
-//!   rc_result <-(valid/ready)-   |   \--- i write -------+------------->| I-buffer  (W*H x 16)
-//!                                |                       |  +---------->|                   |
-//!  host (lower pipeline)         |                       |  |  i read <-|                   |
-//!   setup_cmd -(valid/ready)-> [ colour_setup ] -- tdbs write --------->| TdbS (2^16 x 424) |
-//!                                                        |  |  tdbs rd <-+-------------------+
-//!  scan_start, scan_background,                          |  |
-//!  scan_clear_behind, scan_phong,                        |  |
-//!  light_write_*, material_write_* -> [ cs ] -- i read, tdbs read, clear-behind i/z writes
-//!                               +--> video (AXI4-Stream: tdata RGB888, tvalid/tready, tuser, tlast)
+//!  host, upper pipeline                                          memories (outside the top)
+//!   rc_cmd ---(valid/ready)--> [ rc ] -- z read/write ---------> Z-buffer (W*H x 24), one bank
+//!   rc_result <-(valid/ready)-   |    -- id_* read/write ------> I-buffer bank draw_bank   (W*H x 16)
+//!  host, lower pipeline          |                                        |
+//!   setup_cmd -(valid/ready)-> [ colour_setup ] -- t_we/t_wr_* -> TdbS bank draw_bank  (2^16 x 424)
+//!                                                                         |
+//!  scan_start, scan_background, scan_clear_behind, scan_phong,    I-buffer bank !draw_bank
+//!  light_write_*, material_write_* -> [ cs ] -- is_* read/write ->        |  (clear-behind)
+//!                                      |    -- t_re/t_rd_* ------> TdbS bank !draw_bank
+//!                                      +--> video (AXI4-Stream: tdata RGB888, tvalid/tready, tuser, tlast)
 //! ```
 //!
-//! The three blocks work in phases that the host sequences as seed 001's dual pipeline does:
-//! geometry (the RC, until its end-of-frame result), colour setup of the visible triangles, scan-out.
-//! The Z- and I-buffer write ports are shared by the RC and the CS's clear-behind: the CS's write wins
-//! when both are enabled, which the host's phases never let happen. Clear strategy: the CS clears both
-//! buffers behind its scan-out (`scan_clear_behind`), so the next frame starts with a frame command
-//! whose `clear` bit is 0 and costs no clear cycles; `clear` = 1 (a W*H-cycle clear by the RC) is for
-//! the first frame after reset, when the buffers hold whatever the memory powered up with.
+//! Seed 001's two pipelines run in parallel and frames follow each other back to back:
+//! * The host sends a triangle's colour-setup command as soon as the RC reports it visible; colour
+//!   setup (a new triangle every 4 cycles) writes TdbS while the RC draws later triangles.
+//! * The I-buffer and TdbS have two banks each (address bit 20 of `id_*`/`is_*`, bit 16 of `t_*`). The
+//!   RC and colour setup use bank `draw_bank`, the CS the other. A `scan_start` that the CS takes (it
+//!   is idle) swaps them: the frame just drawn is scanned out while the next one is drawn into the
+//!   bank the CS scanned (and cleared behind it) before. The host starts a scan only when the frame is
+//!   complete (the RC's end-of-frame result has come and colour setup is idle), and sends the next
+//!   frame's commands only after the scan has started.
+//! * The Z-buffer has one bank and is never cleared between frames: the RC reads the I-buffer word with
+//!   each depth (`id_rd_*`, the same address and cycle as `z_rd_*`), and a depth under the background
+//!   index counts as far (`rc::z_test`). Clearing the I-buffer behind the scan-out (`scan_clear_behind`)
+//!   is therefore all the clearing a frame needs: no clear pass, and 24 bits per pixel less memory than
+//!   a second Z bank. The CS's own Z clear-behind port is not connected.
+//! * `clear` in a frame command (the RC clears its bank of the I-buffer and the Z-buffer, W*H cycles)
+//!   is for the first use of each bank after reset, when the memories hold whatever they powered up with.
 //!
 //! Ports are the blocks' own (see `rc`, `cs::colour_setup`, `cs::color_shader`); memory read ports
-//! have latency 1 and a read of an address being written returns the old word.
+//! have latency 1 and a read of an address being written returns the old word. The two I-buffer write
+//! ports never write the same bank in one cycle.
 
 use crate::common::{StreamIn, StreamOut};
 use crate::cs::color_shader::ColorShader;

@@ -10,34 +10,31 @@
 //!   `tdbs_write_data` (the record, [`TdbsEntry`]); the memory takes the write at the rising edge;
 //! * `busy` (out): a command is being processed (its record is not yet written).
 //!
-//! ## Timing (cycle c0 = the cycle in which `cmd_valid && cmd_ready`; the command is taken at its edge)
-//! | command | cycles after c0 | what happens |
-//! |---|---|---|
-//! | flat | c0+1 | write of `flat_setup(rgb)` (material 0, as the algorithmic model) |
-//! | shaded | c0+1, c0+2 | the operands of the two products of `det` (one shared multiplier, operands and product registered) |
-//! | | c0+3, c0+4 | the first product is kept; `det` = the difference of the two products |
-//! | | c0+5 | canonical order (swap vertices 1, 2 if `det < 0`), `|det|` to the reciprocal |
-//! | | c0+6 ..= c0+31 | reciprocal: 25 restoring steps, result in c0+31; meanwhile the 12 products of the 6 plane numerators |
-//! | | c0+32 ..= c0+39 | A, B of R, G, B: `sat40(round(n * mant >> (s+4)))`, one product per cycle, each used two cycles after |
-//! | | c0+40 ..= c0+47 | C of R, G, B: two products each, C formed two cycles after the second's operands |
-//! | | c0+48 | write of `colour_setup(...)` |
-//! | zero area (`det == 0`) | c0+6 ..= c0+13 | A = B = 0 and the C sequence, which gives constant planes at vertex 0's values |
-//! | | c0+14 | write (the algorithmic model has no such case: the RC never flags a zero-area triangle visible) |
+//! ## Timing (cycle 0 = the cycle in which `cmd_valid && cmd_ready`; the command is taken at its edge)
+//! A pipeline with a fixed schedule (the RTL's module documentation gives it stage by stage):
+//! | cycles after taking | what happens |
+//! |---|---|
+//! | 1 ..= 4 | the 14 products of det and the six plane numerators (four multipliers) |
+//! | 5 | \|det\| and its leading one start the reciprocal |
+//! | 6 ..= 30 | the reciprocal's 25 restoring steps, one per cycle |
+//! | 33 ..= 37 | A and B of the three channels (two multipliers), rounded and saturated |
+//! | 36 ..= 40 | C of the three channels (two multipliers) |
+//! | 41 ([`SETUP_LATENCY`]) | the TdbS write of `record()` |
 //!
-//! `cmd_ready` is high when the block is idle and in its write cycle, so back-to-back shaded commands
-//! take [`SHADED_CYCLES`] = 48 cycles each and flat ones 1 cycle each. `busy` is high from c0+1 up to
-//! and including the write cycle.
+//! Every command takes this path: flat (its colour at every vertex, material 0), shaded, and zero area
+//! (`det == 0`: constant planes at vertex 0's values, which the algorithmic model never needs: the RC
+//! never flags a zero-area triangle visible). `cmd_ready` is low in the 3 cycles after a command is
+//! taken, so commands are at least [`SETUP_INTERVAL`] = 4 cycles apart and up to 11 are in flight.
+//! `busy` is high while any command is between the cycle after it was taken and its write cycle.
 
 use crate::format::{Plane, WinVertex};
 use crate::render::SetupCommand;
 use crate::shade::{colour_setup, flat_setup, TdbsEntry};
 
-/// Cycles from taking a shaded command to its TdbS write (and between back-to-back shaded commands).
-pub const SHADED_CYCLES: u64 = 48;
-/// Cycles from taking a flat command to its write.
-pub const FLAT_CYCLES: u64 = 1;
-/// Cycles from taking a zero-area command to its write.
-pub const ZERO_AREA_CYCLES: u64 = 14;
+/// Cycles from taking a command to its TdbS write (`hdl::cs::colour_setup::SETUP_LATENCY`).
+pub const SETUP_LATENCY: u64 = 41;
+/// Cycles between commands taken back to back (`hdl::cs::colour_setup::SETUP_INTERVAL`).
+pub const SETUP_INTERVAL: u64 = 4;
 /// Width of the triangle index (TdbS address) on the block's ports.
 pub const SETUP_INDEX_BITS: u32 = 16;
 
@@ -110,19 +107,6 @@ impl SetupCmd {
         colour_setup(&v, values, self.material)
     }
 
-    /// Cycles from taking the command to its write.
-    pub fn latency(&self) -> u64 {
-        if self.flat {
-            FLAT_CYCLES
-        } else {
-            let v = [0, 1, 2].map(|k| WinVertex { x: self.x[k] as i32, y: self.y[k] as i32, z: 0 });
-            if crate::raster::det(&v) == 0 {
-                ZERO_AREA_CYCLES
-            } else {
-                SHADED_CYCLES
-            }
-        }
-    }
 }
 
 /// The block's inputs in one cycle.
@@ -151,29 +135,29 @@ pub struct SetupOutputs {
 /// The cycle-accurate model.
 #[derive(Clone, Debug, Default)]
 pub struct ColourSetupModel {
-    /// Cycles left until the write cycle (0: idle); the write cycle itself has `left == 1`.
-    left: u64,
-    index: u16,
-    record: TdbsEntry,
+    /// Commands in flight: (cycles left until the write cycle, index, record); the write cycle itself
+    /// has 1 left.
+    flight: std::collections::VecDeque<(u64, u16, TdbsEntry)>,
+    /// Cycles since the last command was taken (saturating; `SETUP_INTERVAL` or more: ready).
+    since: u64,
     /// Commands taken so far.
     pub taken: u64,
 }
 
 impl ColourSetupModel {
     pub fn new() -> ColourSetupModel {
-        ColourSetupModel::default()
+        ColourSetupModel { since: SETUP_INTERVAL, ..Default::default() }
     }
 
     /// The outputs in the current cycle (they depend on the state only).
     pub fn outputs(&self) -> SetupOutputs {
-        let writing = self.left == 1;
+        let write = self.flight.front().filter(|f| f.0 == 1);
         SetupOutputs {
-            cmd_ready: self.left <= 1,
-            busy: self.left >= 1,
-            tdbs_write: TdbsWrite {
-                enable: writing,
-                address: if writing { self.index } else { 0 },
-                data: if writing { self.record } else { TdbsEntry::default() },
+            cmd_ready: self.since >= SETUP_INTERVAL,
+            busy: !self.flight.is_empty(),
+            tdbs_write: match write {
+                Some(&(_, address, data)) => TdbsWrite { enable: true, address, data },
+                None => TdbsWrite::default(),
             },
         }
     }
@@ -181,13 +165,16 @@ impl ColourSetupModel {
     /// One clock: returns this cycle's outputs, then takes the rising edge with `inp`.
     pub fn step(&mut self, inp: &SetupInputs) -> SetupOutputs {
         let out = self.outputs();
-        if self.left > 0 {
-            self.left -= 1;
+        if out.tdbs_write.enable {
+            self.flight.pop_front();
         }
+        for f in self.flight.iter_mut() {
+            f.0 -= 1;
+        }
+        self.since = (self.since + 1).min(SETUP_INTERVAL);
         if out.cmd_ready && inp.cmd_valid {
-            self.index = inp.cmd.index;
-            self.record = inp.cmd.record();
-            self.left = inp.cmd.latency();
+            self.flight.push_back((SETUP_LATENCY, inp.cmd.index, inp.cmd.record()));
+            self.since = 1;
             self.taken += 1;
         }
         out
@@ -268,16 +255,14 @@ mod tests {
     }
 
     #[test]
-    fn back_to_back_shaded_commands_take_shaded_cycles_each() {
+    fn back_to_back_commands_are_taken_every_four_cycles_and_written_41_cycles_later() {
         let mut cmd = SetupCmd { index: 3, x: [0, 160, 0], y: [0, 0, 160], ..Default::default() };
         cmd.values = [[255, 0, 0], [0, 255, 0], [0, 0, 255]];
-        let cmds = vec![cmd; 10];
-        let (_, cycles) = run_model(&cmds, 0);
-        // The last write happens in cycle 10*SHADED_CYCLES; plus the cycle in which the model is seen idle.
-        assert_eq!(cycles, 10 * SHADED_CYCLES + 1);
-        let flat = vec![SetupCmd { flat: true, index: 1, ..Default::default() }; 10];
-        let (_, cycles) = run_model(&flat, 0);
-        assert_eq!(cycles, 10 * FLAT_CYCLES + 1);
+        for cmds in [vec![cmd; 10], vec![SetupCmd { flat: true, index: 1, ..Default::default() }; 10]] {
+            let (_, cycles) = run_model(&cmds, 0);
+            // Taken in cycles 0, 4, ..., 36; the last written in 36 + 41; plus the cycle seen idle.
+            assert_eq!(cycles, 9 * SETUP_INTERVAL + SETUP_LATENCY + 1);
+        }
     }
 
     #[test]

@@ -5,11 +5,15 @@
 //! on the most negative value, so [`signed_bit_cast_safe`] replaces it; hdl_gen matches cast functions
 //! by name prefix, so it still emits `$signed(x)` in Verilog.
 
+pub mod div_step;
 pub mod fast_ram;
+pub mod leading_one;
 pub mod mul;
 pub mod stream;
 
+pub use div_step::DivStep;
 pub use fast_ram::FastRAM;
+pub use leading_one::LeadingOne36;
 pub use mul::{MulS, MulU};
 pub use stream::{StreamIn, StreamOut};
 

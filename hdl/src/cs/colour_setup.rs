@@ -1,67 +1,67 @@
 //! `colour_setup`: planes for a visible triangle's three channels with ONE reciprocal (seed 001 §2.3.2
 //! eqs. 6-7: `dR/dx = Ka*[(R2-R1)*dy.. - ...]`, `Ka = 1/det`; the scan's subscripts are garbled, the
 //! form used is `golden::format::Plane::setup`), written into TdbS at the triangle's index (seed 000
-//! §III-B). Bit-exact with `golden::shade::colour_setup` / `flat_setup`.
+//! §III-B). Bit-exact with `golden::shade::colour_setup` / `flat_setup`. A pipeline that takes a new
+//! command every 4 cycles and writes its record 41 cycles after taking it, whatever the command
+//! (flat, Gouraud, Phong, zero area).
 //!
 //! ```text
-//!                  +-----------------------------------------+
-//!  cmd.data  ----->| SetupCommand                            |
-//!  cmd.valid ----->|  det (2 products) -> canonical order    |--> tdbs_write_enable
-//!  cmd.ready <-----|  -> reciprocal (rc::Reciprocal, 25 st.) |--> tdbs_write_address (index, 16 b)
-//!                  |  || 6 numerators (12 products)          |--> tdbs_write_data (TdbsRecord, 424 b)
-//!                  |  -> A, B: sat40(round(n*mant >> s+4))   |
-//!  clock --------->|  -> C: v0*2^16 + round((A*(8-x0) +     |--> busy
-//!                  |        B*(8-y0)) / 16), sat56           |
-//!                  |  one shared 40x26 signed multiplier     |
-//!                  +-----------------------------------------+
+//!  cmd (valid/ready, one per 4 cycles)
+//!   |   window 1        window 2          windows 3..8         window 9       window 10      11
+//!   v   cycles 1-4      5-8               9-32                 33-36          37-40          41
+//!  [S1]-> det, 12 numerator products -> [S2] |det| -> 2^s, 3 division steps -> [S3..S8] 4 steps
+//!         (4 x 18x18, 14 products)            (leading one)                   each (22 steps)
+//!   -> [S9] A, B = sat40(round(n * mant >> s+4)) (2 x 36x26) -> [S10] C = sat56(v0*2^16 +
+//!      round((A*(8-x0) + B*(8-y0)) / 16)) (2 x 40x18) -> [S11] -> tdbs_write (cycle 41)
 //! ```
 //!
-//! Timing (c0 = the cycle a command is taken; `golden::cycle::colour_setup` is the reference):
-//! Det0 c0+1, Det1 c0+2 (the two products' operands), Det2 c0+3 (first product), Det3 c0+4 (det =
-//! dx10*dy20 - dx20*dy10), Norm c0+5 (swap vertices 1, 2 if det < 0, |det| to the reciprocal), Div
-//! c0+6..=c0+31 (reciprocal; the 12 numerator products run meanwhile), PlaneAB c0+32..=c0+39, PlaneC
-//! c0+40..=c0+47, Write c0+48. Flat: Write at c0+1. Zero area: A = B = 0, then PlaneC c0+6..=c0+13,
-//! Write c0+14. `cmd.ready` is high in Idle and Write: back-to-back shaded triangles take 48 cycles
-//! each, flat ones 1. All payload outputs are 0 while
-//! their enable is low.
+//! Schedule. A command taken in cycle 0 is in window j during cycles 4j-3 ..= 4j, and its data in
+//! station j (register arrays indexed by j: `c_*` the carried fields, `na_*`/`nb_*` the numerators,
+//! `rem`/`den`/`quo`/`shift`/`neg`/`zero` the division, `r_a`..`b_c` the planes); station j is loaded
+//! from station j-1 at the end of cycle 4(j-1). A value computed in cycle c is written into the
+//! station of cycle c+1 (when c ends a window, into the next station as it loads). Commands are at
+//! least 4 cycles apart (`cmd.ready` is low for 3 cycles after a command is taken), so every station
+//! and multiplier is used by one command at a time. `tok` (bit o-1 set in cycle o of a command) times
+//! everything.
 //!
-//! Pipelining: the multiplier's operands and its product are registered (`opa_r`/`opb_r`, `prod`),
-//! and whoever uses a product does so two cycles after its operands were chosen, told by a tag
-//! (`tag_v`, channel, phase, k; `tag1_*` is the same tag one stage earlier) which product it holds.
-//! Without the product register the operand mux, the 40x26 product, the 64-bit rounding shift and the
-//! saturation were one path of 42.6 ns on an ECP5 (23.5 MHz, the whole chipset's limit); without the
-//! operand register the channel mux, the vertex difference and the product were 29.2 ns in the chipset
-//! with the Phong CS (34.3 MHz). Each register costs 3 cycles per triangle (a det cycle, and one drain
-//! cycle each for A/B and C): 48 instead of 42.
+//! * Cycles 1-4: the 14 products of det and the six numerators (na = dv10*dy20 - dv20*dy10,
+//!   nb = dv20*dx10 - dv10*dx20, in the vertex order as sent) on four 18x18 multipliers, operands and
+//!   products registered; each difference two cycles later: det and na_r in 3, nb_r and na_g in 4, nb_g
+//!   and na_b in 5, nb_b in 6.
+//! * Cycle 5: |det| and its leading one start the division (rem = 2^s, the sign and det == 0 kept).
+//!   Swapping vertices 1 and 2 (`golden::raster::canonical_order`) negates det and every numerator
+//!   and keeps vertex 0, so the planes use the numerators negated when det < 0 and |det|.
+//! * Cycles 6-30: the 25 restoring steps (`golden::format::reciprocal`), one per cycle, three in
+//!   station 2, four in each of stations 3-7, two in station 8: mant = quotient, valid from cycle 31.
+//! * Cycles 33-35: A and B of R, G, B on two 36x26 multipliers; rounded, shifted and saturated
+//!   (`plane_round`) two cycles later (35-37). det == 0 (never sent by the host: the RC does not flag
+//!   a zero-area triangle visible) gives A = B = 0, so C is the constant vertex-0 value.
+//! * Cycles 36-38: A*(8-x0) and B*(8-y0) of R, G, B on two 40x18 multipliers; C two cycles later
+//!   (38-40).
+//! * Cycle 41: the TdbS write (enable, index, record).
+//!
+//! A flat command enters with all three vertex values set to its colour and material 0: every
+//! numerator is 0, so A = B = 0 and C = colour * 2^16, `flat_setup`'s record.
 //!
 //! Widths: coordinates and values are 16-bit, so every intermediate is bounded for ANY port input:
-//! |det| < 2^33, |numerator| < 2^33 (35-bit register), |n*mant| < 2^58, |A*(8-x0)| < 2^56 — the
-//! 64-bit product and sums never wrap.
+//! |det| < 2^33, |numerator| < 2^34, |n*mant| < 2^58, |A*(8-x0)| < 2^56: the 64-bit products and sums
+//! never wrap. All payload outputs are 0 while their enable is low.
 
-use crate::common::{signed_bit_cast_safe, MulS, StreamIn};
+use crate::common::{signed_bit_cast_safe, DivStep, LeadingOne36, MulS, StreamIn};
+use crate::cs::plane_round::PlaneRound;
 use crate::cs::{SetupCommand, TdbsRecord};
-use crate::rc::reciprocal::Reciprocal;
 use rust_hdl::prelude::*;
 
-#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
-pub enum SetupState {
-    Idle,
-    Det0,
-    Det1,
-    Det2,
-    Det3,
-    Norm,
-    Div,
-    PlaneAB,
-    PlaneC,
-    Write,
-}
+/// Cycles from taking a command to its TdbS write.
+pub const SETUP_LATENCY: u64 = 41;
+/// Cycles between two commands taken back to back.
+pub const SETUP_INTERVAL: u64 = 4;
 
 #[derive(LogicBlock)]
 pub struct ColourSetup {
     pub clock: Signal<In, Clock>,
     // From the host
-    /// Setup commands (valid/ready); taken in Idle and in the Write cycle.
+    /// Setup commands (valid/ready); `ready` is low in the 3 cycles after a command is taken.
     pub cmd: StreamIn<SetupCommand>,
     // To the TdbS memory (write port; the memory takes the write at the rising edge)
     /// Write the record this cycle.
@@ -71,140 +71,142 @@ pub struct ColourSetup {
     /// The record.
     pub tdbs_write_data: Signal<Out, TdbsRecord>,
     // To the controller
-    /// A command is in progress (from the cycle after it was taken up to its write cycle).
+    /// Some command is in progress (from the cycle after it was taken up to its write cycle).
     pub busy: Signal<Out, Bit>,
-
-    recip: Reciprocal,
-    mul: MulS<40, 26, 64>,
-    state: DFF<SetupState>,
-    index: DFF<Bits<16>>,
-    material: DFF<Bits<16>>,
-    x0: DFF<Signed<16>>,
-    y0: DFF<Signed<16>>,
-    x1: DFF<Signed<16>>,
-    y1: DFF<Signed<16>>,
-    x2: DFF<Signed<16>>,
-    y2: DFF<Signed<16>>,
-    v0r: DFF<Signed<16>>,
-    v0g: DFF<Signed<16>>,
-    v0b: DFF<Signed<16>>,
-    v1r: DFF<Signed<16>>,
-    v1g: DFF<Signed<16>>,
-    v1b: DFF<Signed<16>>,
-    v2r: DFF<Signed<16>>,
-    v2g: DFF<Signed<16>>,
-    v2b: DFF<Signed<16>>,
-    /// The shared multiplier's product, registered: every consumer reads the product of the operands
-    /// presented in the cycle before (a pipeline stage between the multiplier and the shift,
-    /// saturation and sums behind it, which were one 42 ns path).
-    prod: DFF<Signed<64>>,
-    /// The multiplier's operands, registered: the operand multiplexers and the product are two
-    /// clock periods (a product is in `prod` two cycles after its operands were chosen).
-    opa_r: DFF<Signed<40>>,
-    opb_r: DFF<Signed<26>>,
-    /// The tag of the operands in `opa_r`/`opb_r` (it moves to `tag_*` with their product).
-    tag1_v: DFF<Bit>,
-    tag1_ch: DFF<Bits<2>>,
-    tag1_ph: DFF<Bits<2>>,
-    tag1_k: DFF<Bits<3>>,
-    /// `prod` holds a product of the numerator, A/B or C sequence, and which one: (channel, phase) or k.
-    tag_v: DFF<Bit>,
-    tag_ch: DFF<Bits<2>>,
-    tag_ph: DFF<Bits<2>>,
-    tag_k: DFF<Bits<3>>,
-    /// The numerator or C sequence has issued its last product.
-    issued: DFF<Bit>,
-    /// First product of a difference of two products.
-    acc: DFF<Signed<64>>,
-    det: DFF<Signed<36>>,
-    /// Channel (0..2) and phase (0..3) of the numerator and C sequences; k (0..5) of the A/B one.
-    ch: DFF<Bits<2>>,
-    ph: DFF<Bits<2>>,
-    k: DFF<Bits<3>>,
-    n_done: DFF<Bit>,
-    na_r: DFF<Signed<35>>,
-    nb_r: DFF<Signed<35>>,
-    na_g: DFF<Signed<35>>,
-    nb_g: DFF<Signed<35>>,
-    na_b: DFF<Signed<35>>,
-    nb_b: DFF<Signed<35>>,
-    mant: DFF<Bits<25>>,
-    plane_r_a: DFF<Bits<40>>,
-    plane_r_b: DFF<Bits<40>>,
-    plane_r_c: DFF<Bits<56>>,
-    plane_g_a: DFF<Bits<40>>,
-    plane_g_b: DFF<Bits<40>>,
-    plane_g_c: DFF<Bits<56>>,
-    plane_b_a: DFF<Bits<40>>,
-    plane_b_b: DFF<Bits<40>>,
-    plane_b_c: DFF<Bits<56>>,
-    // Combinational (no `let` in hdl_gen; one width change per statement, GUIDE §1)
+    tok: DFF<Bits<41>>,
+    cmd1: DFF<SetupCommand>,
+    det1: DFF<Signed<36>>,
+    det2: DFF<Signed<36>>,
+    sh_ab1: DFF<Bits<7>>,
+    sh_ab2: DFF<Bits<7>>,
+    z_ab1: DFF<Bit>,
+    z_ab2: DFF<Bit>,
+    opab_m: DFF<Signed<26>>,
+    cv1: DFF<Signed<16>>,
+    cv2: DFF<Signed<16>>,
+    c_index: [DFF<Bits<16>>; 12],
+    c_material: [DFF<Bits<16>>; 12],
+    c_x0: [DFF<Bits<16>>; 12],
+    c_y0: [DFF<Bits<16>>; 12],
+    c_v0r: [DFF<Bits<16>>; 12],
+    c_v0g: [DFF<Bits<16>>; 12],
+    c_v0b: [DFF<Bits<16>>; 12],
+    na_r: [DFF<Bits<35>>; 12],
+    nb_r: [DFF<Bits<35>>; 12],
+    na_g: [DFF<Bits<35>>; 12],
+    nb_g: [DFF<Bits<35>>; 12],
+    na_b: [DFF<Bits<35>>; 12],
+    nb_b: [DFF<Bits<35>>; 12],
+    rem: [DFF<Bits<37>>; 12],
+    den: [DFF<Bits<37>>; 12],
+    quo: [DFF<Bits<25>>; 12],
+    shift: [DFF<Bits<6>>; 12],
+    neg: [DFF<Bit>; 12],
+    zero: [DFF<Bit>; 12],
+    r_a: [DFF<Bits<40>>; 12],
+    r_b: [DFF<Bits<40>>; 12],
+    r_c: [DFF<Bits<56>>; 12],
+    g_a: [DFF<Bits<40>>; 12],
+    g_b: [DFF<Bits<40>>; 12],
+    g_c: [DFF<Bits<56>>; 12],
+    b_a: [DFF<Bits<40>>; 12],
+    b_b: [DFF<Bits<40>>; 12],
+    b_c: [DFF<Bits<56>>; 12],
+    opn_a: [DFF<Signed<18>>; 4],
+    opn_b: [DFF<Signed<18>>; 4],
+    pn: [DFF<Signed<36>>; 4],
+    opab_n: [DFF<Signed<36>>; 2],
+    pab: [DFF<Signed<64>>; 2],
+    opc_a: [DFF<Signed<40>>; 2],
+    opc_o: [DFF<Signed<18>>; 2],
+    pc: [DFF<Signed<64>>; 2],
+    lead: LeadingOne36,
+    mn: [MulS<18, 18, 36>; 4],
+    mab: [MulS<36, 26, 64>; 2],
+    mc: [MulS<40, 18, 64>; 2],
+    round: [PlaneRound; 2],
+    step: [DivStep; 12],
+    ready: Signal<Local, Bit>,
     accept: Signal<Local, Bit>,
-    op_a: Signal<Local, Signed<40>>,
-    op_b: Signal<Local, Signed<26>>,
-    req_valid: Signal<Local, Bit>,
-    res_ready: Signal<Local, Bit>,
-    dx10: Signal<Local, Signed<17>>,
-    dy10: Signal<Local, Signed<17>>,
-    dx20: Signal<Local, Signed<17>>,
-    dy20: Signal<Local, Signed<17>>,
-    cv0: Signal<Local, Signed<16>>,
-    cv1: Signal<Local, Signed<16>>,
-    cv2: Signal<Local, Signed<16>>,
-    /// Vertex 0's value of the channel whose C the registered product belongs to.
-    tv0: Signal<Local, Signed<16>>,
-    dv10: Signal<Local, Signed<17>>,
-    dv20: Signal<Local, Signed<17>>,
-    diff: Signal<Local, Signed<64>>,
+    fr16: Signal<Local, Bits<16>>,
+    fg16: Signal<Local, Bits<16>>,
+    fb16: Signal<Local, Bits<16>>,
+    sx0: Signal<Local, Signed<16>>,
+    sy0: Signal<Local, Signed<16>>,
+    sx1: Signal<Local, Signed<16>>,
+    sy1: Signal<Local, Signed<16>>,
+    sx2: Signal<Local, Signed<16>>,
+    sy2: Signal<Local, Signed<16>>,
+    s0r: Signal<Local, Signed<16>>,
+    s0g: Signal<Local, Signed<16>>,
+    s0b: Signal<Local, Signed<16>>,
+    s1r: Signal<Local, Signed<16>>,
+    s1g: Signal<Local, Signed<16>>,
+    s1b: Signal<Local, Signed<16>>,
+    s2r: Signal<Local, Signed<16>>,
+    s2g: Signal<Local, Signed<16>>,
+    s2b: Signal<Local, Signed<16>>,
+    dx10: Signal<Local, Signed<18>>,
+    dy10: Signal<Local, Signed<18>>,
+    dx20: Signal<Local, Signed<18>>,
+    dy20: Signal<Local, Signed<18>>,
+    dv10r: Signal<Local, Signed<18>>,
+    dv20r: Signal<Local, Signed<18>>,
+    dv10g: Signal<Local, Signed<18>>,
+    dv20g: Signal<Local, Signed<18>>,
+    dv10b: Signal<Local, Signed<18>>,
+    dv20b: Signal<Local, Signed<18>>,
+    d01: Signal<Local, Signed<36>>,
+    d23: Signal<Local, Signed<36>>,
+    d01u: Signal<Local, Bits<36>>,
+    d23u: Signal<Local, Bits<36>>,
+    n01: Signal<Local, Bits<35>>,
+    n23: Signal<Local, Bits<35>>,
     det_abs: Signal<Local, Signed<36>>,
-    n_sel: Signal<Local, Signed<35>>,
-    mant26: Signal<Local, Signed<26>>,
-    sh_r: DFF<Bits<7>>,
-    half_r: DFF<Bits<64>>,
-    sh_m1: Signal<Local, Bits<7>>,
-    sh: Signal<Local, Bits<7>>,
-    rs_half: Signal<Local, Bits<64>>,
-    rs_y: Signal<Local, Signed<64>>,
-    rs_yb: Signal<Local, Bits<64>>,
-    rs_sh: Signal<Local, Bits<64>>,
-    rs_top: Signal<Local, Bits<25>>,
-    ab40: Signal<Local, Bits<40>>,
+    det_absu: Signal<Local, Bits<36>>,
+    n_a: Signal<Local, Bits<35>>,
+    n_b: Signal<Local, Bits<35>>,
+    sn_a: Signal<Local, Signed<35>>,
+    sn_b: Signal<Local, Signed<35>>,
+    wn_a: Signal<Local, Signed<36>>,
+    wn_b: Signal<Local, Signed<36>>,
+    ab_a: Signal<Local, Bits<40>>,
+    ab_b: Signal<Local, Bits<40>>,
     ca: Signal<Local, Bits<40>>,
     cb: Signal<Local, Bits<40>>,
-    ox: Signal<Local, Signed<17>>,
-    oy: Signal<Local, Signed<17>>,
+    cx0: Signal<Local, Bits<16>>,
+    cy0: Signal<Local, Bits<16>>,
+    cv: Signal<Local, Bits<16>>,
+    scx0: Signal<Local, Signed<16>>,
+    scy0: Signal<Local, Signed<16>>,
+    ox: Signal<Local, Signed<18>>,
+    oy: Signal<Local, Signed<18>>,
     cx: Signal<Local, Signed<64>>,
     cx8: Signal<Local, Signed<64>>,
     cxr: Signal<Local, Signed<64>>,
+    cx8u: Signal<Local, Bits<64>>,
+    cx60: Signal<Local, Bits<60>>,
+    scx60: Signal<Local, Signed<60>>,
     v0w: Signal<Local, Signed<64>>,
     v0s: Signal<Local, Bits<64>>,
     csum: Signal<Local, Signed<64>>,
+    csumu: Signal<Local, Bits<64>>,
     c_top: Signal<Local, Bits<9>>,
     c56: Signal<Local, Bits<56>>,
-    k0_2: Constant<Bits<2>>,
-    k1_2: Constant<Bits<2>>,
-    k2_2: Constant<Bits<2>>,
-    k3_2: Constant<Bits<2>>,
-    k0_3: Constant<Bits<3>>,
-    k1_3: Constant<Bits<3>>,
-    k2_3: Constant<Bits<3>>,
-    k3_3: Constant<Bits<3>>,
-    k4_3: Constant<Bits<3>>,
-    k5_3: Constant<Bits<3>>,
-    k6_3: Constant<Bits<3>>,
-    k7_3: Constant<Bits<3>>,
-    k3_7: Constant<Bits<7>>,
-    k4_7: Constant<Bits<7>>,
-    k16_7: Constant<Bits<7>>,
-    k1_64: Constant<Bits<64>>,
-    k8_64: Constant<Signed<64>>,
-    k8_17: Constant<Signed<17>>,
+    k0_16: Constant<Bits<16>>,
+    k1_tok: Constant<Bits<41>>,
+    k1_41: Constant<Bits<41>>,
+    k0_35: Constant<Bits<35>>,
+    k0_25: Constant<Bits<25>>,
     k0_36: Constant<Signed<36>>,
+    k0_18: Constant<Signed<18>>,
     k0_40: Constant<Bits<40>>,
     k0_56: Constant<Bits<56>>,
-    k0_16: Constant<Bits<16>>,
-    kmin_40: Constant<Bits<40>>,
-    kmax_40: Constant<Bits<40>>,
+    k0_36s: Constant<Signed<36>>,
+    k4_7: Constant<Bits<7>>,
+    k16_7: Constant<Bits<7>>,
+    k8_64: Constant<Signed<64>>,
+    k8_18: Constant<Signed<18>>,
     kmin_56: Constant<Bits<56>>,
     kmax_56: Constant<Bits<56>>,
 }
@@ -218,125 +220,140 @@ impl Default for ColourSetup {
             tdbs_write_address: Default::default(),
             tdbs_write_data: Default::default(),
             busy: Default::default(),
-            recip: Default::default(),
-            mul: Default::default(),
-            state: Default::default(),
-            index: Default::default(),
-            material: Default::default(),
-            x0: Default::default(),
-            y0: Default::default(),
-            x1: Default::default(),
-            y1: Default::default(),
-            x2: Default::default(),
-            y2: Default::default(),
-            v0r: Default::default(),
-            v0g: Default::default(),
-            v0b: Default::default(),
-            v1r: Default::default(),
-            v1g: Default::default(),
-            v1b: Default::default(),
-            v2r: Default::default(),
-            v2g: Default::default(),
-            v2b: Default::default(),
-            prod: Default::default(),
-            opa_r: Default::default(),
-            opb_r: Default::default(),
-            tag1_v: Default::default(),
-            tag1_ch: Default::default(),
-            tag1_ph: Default::default(),
-            tag1_k: Default::default(),
-            tag_v: Default::default(),
-            tag_ch: Default::default(),
-            tag_ph: Default::default(),
-            tag_k: Default::default(),
-            issued: Default::default(),
-            acc: Default::default(),
-            det: Default::default(),
-            ch: Default::default(),
-            ph: Default::default(),
-            k: Default::default(),
-            n_done: Default::default(),
+            tok: Default::default(),
+            cmd1: Default::default(),
+            det1: Default::default(),
+            det2: Default::default(),
+            sh_ab1: Default::default(),
+            sh_ab2: Default::default(),
+            z_ab1: Default::default(),
+            z_ab2: Default::default(),
+            opab_m: Default::default(),
+            cv1: Default::default(),
+            cv2: Default::default(),
+            c_index: Default::default(),
+            c_material: Default::default(),
+            c_x0: Default::default(),
+            c_y0: Default::default(),
+            c_v0r: Default::default(),
+            c_v0g: Default::default(),
+            c_v0b: Default::default(),
             na_r: Default::default(),
             nb_r: Default::default(),
             na_g: Default::default(),
             nb_g: Default::default(),
             na_b: Default::default(),
             nb_b: Default::default(),
-            mant: Default::default(),
-            plane_r_a: Default::default(),
-            plane_r_b: Default::default(),
-            plane_r_c: Default::default(),
-            plane_g_a: Default::default(),
-            plane_g_b: Default::default(),
-            plane_g_c: Default::default(),
-            plane_b_a: Default::default(),
-            plane_b_b: Default::default(),
-            plane_b_c: Default::default(),
+            rem: Default::default(),
+            den: Default::default(),
+            quo: Default::default(),
+            shift: Default::default(),
+            neg: Default::default(),
+            zero: Default::default(),
+            r_a: Default::default(),
+            r_b: Default::default(),
+            r_c: Default::default(),
+            g_a: Default::default(),
+            g_b: Default::default(),
+            g_c: Default::default(),
+            b_a: Default::default(),
+            b_b: Default::default(),
+            b_c: Default::default(),
+            opn_a: Default::default(),
+            opn_b: Default::default(),
+            pn: Default::default(),
+            opab_n: Default::default(),
+            pab: Default::default(),
+            opc_a: Default::default(),
+            opc_o: Default::default(),
+            pc: Default::default(),
+            lead: Default::default(),
+            mn: std::array::from_fn(|_| Default::default()),
+            mab: std::array::from_fn(|_| Default::default()),
+            mc: std::array::from_fn(|_| Default::default()),
+            round: std::array::from_fn(|_| Default::default()),
+            step: std::array::from_fn(|_| Default::default()),
+            ready: Default::default(),
             accept: Default::default(),
-            op_a: Default::default(),
-            op_b: Default::default(),
-            req_valid: Default::default(),
-            res_ready: Default::default(),
+            fr16: Default::default(),
+            fg16: Default::default(),
+            fb16: Default::default(),
+            sx0: Default::default(),
+            sy0: Default::default(),
+            sx1: Default::default(),
+            sy1: Default::default(),
+            sx2: Default::default(),
+            sy2: Default::default(),
+            s0r: Default::default(),
+            s0g: Default::default(),
+            s0b: Default::default(),
+            s1r: Default::default(),
+            s1g: Default::default(),
+            s1b: Default::default(),
+            s2r: Default::default(),
+            s2g: Default::default(),
+            s2b: Default::default(),
             dx10: Default::default(),
             dy10: Default::default(),
             dx20: Default::default(),
             dy20: Default::default(),
-            cv0: Default::default(),
-            cv1: Default::default(),
-            cv2: Default::default(),
-            tv0: Default::default(),
-            dv10: Default::default(),
-            dv20: Default::default(),
-            diff: Default::default(),
+            dv10r: Default::default(),
+            dv20r: Default::default(),
+            dv10g: Default::default(),
+            dv20g: Default::default(),
+            dv10b: Default::default(),
+            dv20b: Default::default(),
+            d01: Default::default(),
+            d23: Default::default(),
+            d01u: Default::default(),
+            d23u: Default::default(),
+            n01: Default::default(),
+            n23: Default::default(),
             det_abs: Default::default(),
-            n_sel: Default::default(),
-            mant26: Default::default(),
-            sh_r: Default::default(),
-            half_r: Default::default(),
-            sh_m1: Default::default(),
-            sh: Default::default(),
-            rs_half: Default::default(),
-            rs_y: Default::default(),
-            rs_yb: Default::default(),
-            rs_sh: Default::default(),
-            rs_top: Default::default(),
-            ab40: Default::default(),
+            det_absu: Default::default(),
+            n_a: Default::default(),
+            n_b: Default::default(),
+            sn_a: Default::default(),
+            sn_b: Default::default(),
+            wn_a: Default::default(),
+            wn_b: Default::default(),
+            ab_a: Default::default(),
+            ab_b: Default::default(),
             ca: Default::default(),
             cb: Default::default(),
+            cx0: Default::default(),
+            cy0: Default::default(),
+            cv: Default::default(),
+            scx0: Default::default(),
+            scy0: Default::default(),
             ox: Default::default(),
             oy: Default::default(),
             cx: Default::default(),
             cx8: Default::default(),
             cxr: Default::default(),
+            cx8u: Default::default(),
+            cx60: Default::default(),
+            scx60: Default::default(),
             v0w: Default::default(),
             v0s: Default::default(),
             csum: Default::default(),
+            csumu: Default::default(),
             c_top: Default::default(),
             c56: Default::default(),
-            k0_2: Constant::new(0.into()),
-            k1_2: Constant::new(1.into()),
-            k2_2: Constant::new(2.into()),
-            k3_2: Constant::new(3.into()),
-            k0_3: Constant::new(0.into()),
-            k1_3: Constant::new(1.into()),
-            k2_3: Constant::new(2.into()),
-            k3_3: Constant::new(3.into()),
-            k4_3: Constant::new(4.into()),
-            k5_3: Constant::new(5.into()),
-            k6_3: Constant::new(6.into()),
-            k7_3: Constant::new(7.into()),
-            k3_7: Constant::new(3.into()),
-            k4_7: Constant::new(4.into()),
-            k16_7: Constant::new(16.into()),
-            k1_64: Constant::new(1.into()),
-            k8_64: Constant::new(8.into()),
-            k8_17: Constant::new(8.into()),
+            k0_16: Constant::new(0.into()),
+            k1_tok: Constant::new(1.into()),
+            k1_41: Constant::new(1.into()),
+            k0_35: Constant::new(0.into()),
+            k0_25: Constant::new(0.into()),
             k0_36: Constant::new(0.into()),
+            k0_18: Constant::new(0.into()),
             k0_40: Constant::new(0.into()),
             k0_56: Constant::new(0.into()),
-            k0_16: Constant::new(0.into()),
-            kmin_40: Constant::new((1u64 << 39).into()),
-            kmax_40: Constant::new(((1u64 << 39) - 1).into()),
+            k0_36s: Constant::new(0.into()),
+            k4_7: Constant::new(4.into()),
+            k16_7: Constant::new(16.into()),
+            k8_64: Constant::new(8.into()),
+            k8_18: Constant::new(8.into()),
             kmin_56: Constant::new((1u64 << 55).into()),
             kmax_56: Constant::new(((1u64 << 55) - 1).into()),
         }
@@ -346,132 +363,608 @@ impl Default for ColourSetup {
 impl Logic for ColourSetup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self, clock, state, index, material, x0, y0, x1, y1, x2, y2, v0r, v0g, v0b, v1r, v1g, v1b, v2r, v2g, v2b,
-            prod, sh_r, half_r, opa_r, opb_r, tag1_v, tag1_ch, tag1_ph, tag1_k, tag_v, tag_ch, tag_ph, tag_k, issued, acc, det, ch, ph, k, n_done, na_r, nb_r, na_g, nb_g, na_b, nb_b, mant, plane_r_a, plane_r_b,
-            plane_r_c, plane_g_a, plane_g_b, plane_g_c, plane_b_a, plane_b_b, plane_b_c
-        );
-        clock!(self, clock, recip);
+        dff_setup!(self, clock, tok, cmd1, det1, det2, sh_ab1, sh_ab2, z_ab1, z_ab2, opab_m, cv1, cv2);
+        for j in 0..12 {
+            self.c_index[j].clock.next = self.clock.val();
+            self.c_index[j].d.next = self.c_index[j].q.val();
+            self.c_material[j].clock.next = self.clock.val();
+            self.c_material[j].d.next = self.c_material[j].q.val();
+            self.c_x0[j].clock.next = self.clock.val();
+            self.c_x0[j].d.next = self.c_x0[j].q.val();
+            self.c_y0[j].clock.next = self.clock.val();
+            self.c_y0[j].d.next = self.c_y0[j].q.val();
+            self.c_v0r[j].clock.next = self.clock.val();
+            self.c_v0r[j].d.next = self.c_v0r[j].q.val();
+            self.c_v0g[j].clock.next = self.clock.val();
+            self.c_v0g[j].d.next = self.c_v0g[j].q.val();
+            self.c_v0b[j].clock.next = self.clock.val();
+            self.c_v0b[j].d.next = self.c_v0b[j].q.val();
+            self.na_r[j].clock.next = self.clock.val();
+            self.na_r[j].d.next = self.na_r[j].q.val();
+            self.nb_r[j].clock.next = self.clock.val();
+            self.nb_r[j].d.next = self.nb_r[j].q.val();
+            self.na_g[j].clock.next = self.clock.val();
+            self.na_g[j].d.next = self.na_g[j].q.val();
+            self.nb_g[j].clock.next = self.clock.val();
+            self.nb_g[j].d.next = self.nb_g[j].q.val();
+            self.na_b[j].clock.next = self.clock.val();
+            self.na_b[j].d.next = self.na_b[j].q.val();
+            self.nb_b[j].clock.next = self.clock.val();
+            self.nb_b[j].d.next = self.nb_b[j].q.val();
+            self.rem[j].clock.next = self.clock.val();
+            self.rem[j].d.next = self.rem[j].q.val();
+            self.den[j].clock.next = self.clock.val();
+            self.den[j].d.next = self.den[j].q.val();
+            self.quo[j].clock.next = self.clock.val();
+            self.quo[j].d.next = self.quo[j].q.val();
+            self.shift[j].clock.next = self.clock.val();
+            self.shift[j].d.next = self.shift[j].q.val();
+            self.neg[j].clock.next = self.clock.val();
+            self.neg[j].d.next = self.neg[j].q.val();
+            self.zero[j].clock.next = self.clock.val();
+            self.zero[j].d.next = self.zero[j].q.val();
+            self.r_a[j].clock.next = self.clock.val();
+            self.r_a[j].d.next = self.r_a[j].q.val();
+            self.r_b[j].clock.next = self.clock.val();
+            self.r_b[j].d.next = self.r_b[j].q.val();
+            self.r_c[j].clock.next = self.clock.val();
+            self.r_c[j].d.next = self.r_c[j].q.val();
+            self.g_a[j].clock.next = self.clock.val();
+            self.g_a[j].d.next = self.g_a[j].q.val();
+            self.g_b[j].clock.next = self.clock.val();
+            self.g_b[j].d.next = self.g_b[j].q.val();
+            self.g_c[j].clock.next = self.clock.val();
+            self.g_c[j].d.next = self.g_c[j].q.val();
+            self.b_a[j].clock.next = self.clock.val();
+            self.b_a[j].d.next = self.b_a[j].q.val();
+            self.b_b[j].clock.next = self.clock.val();
+            self.b_b[j].d.next = self.b_b[j].q.val();
+            self.b_c[j].clock.next = self.clock.val();
+            self.b_c[j].d.next = self.b_c[j].q.val();
+        }
+        for u in 0..4 {
+            self.opn_a[u].clock.next = self.clock.val();
+            self.opn_a[u].d.next = self.opn_a[u].q.val();
+        }
+        for u in 0..4 {
+            self.opn_b[u].clock.next = self.clock.val();
+            self.opn_b[u].d.next = self.opn_b[u].q.val();
+        }
+        for u in 0..4 {
+            self.pn[u].clock.next = self.clock.val();
+            self.pn[u].d.next = self.pn[u].q.val();
+        }
+        for u in 0..2 {
+            self.opab_n[u].clock.next = self.clock.val();
+            self.opab_n[u].d.next = self.opab_n[u].q.val();
+        }
+        for u in 0..2 {
+            self.pab[u].clock.next = self.clock.val();
+            self.pab[u].d.next = self.pab[u].q.val();
+        }
+        for u in 0..2 {
+            self.opc_a[u].clock.next = self.clock.val();
+            self.opc_a[u].d.next = self.opc_a[u].q.val();
+        }
+        for u in 0..2 {
+            self.opc_o[u].clock.next = self.clock.val();
+            self.opc_o[u].d.next = self.opc_o[u].q.val();
+        }
+        for u in 0..2 {
+            self.pc[u].clock.next = self.clock.val();
+            self.pc[u].d.next = self.pc[u].q.val();
+        }
 
-        // Vertex deltas of the current vertex order (17 bits: differences of 16-bit values).
-        self.dx10.next = signed_bit_cast_safe::<17, 16>(self.x1.q.val()) - signed_bit_cast_safe::<17, 16>(self.x0.q.val());
-        self.dy10.next = signed_bit_cast_safe::<17, 16>(self.y1.q.val()) - signed_bit_cast_safe::<17, 16>(self.y0.q.val());
-        self.dx20.next = signed_bit_cast_safe::<17, 16>(self.x2.q.val()) - signed_bit_cast_safe::<17, 16>(self.x0.q.val());
-        self.dy20.next = signed_bit_cast_safe::<17, 16>(self.y2.q.val()) - signed_bit_cast_safe::<17, 16>(self.y0.q.val());
-        // The current channel's three vertex values.
-        self.cv0.next = self.v0r.q.val();
-        self.cv1.next = self.v1r.q.val();
-        self.cv2.next = self.v2r.q.val();
-        if self.ch.q.val() == self.k1_2.val() {
-            self.cv0.next = self.v0g.q.val();
-            self.cv1.next = self.v1g.q.val();
-            self.cv2.next = self.v2g.q.val();
+        // Tokens: bit o-1 of `tok` is set in cycle o of a command (cycle 0: taken).
+        self.ready.next = !(self.tok.q.val().get_bit(0) | self.tok.q.val().get_bit(1) | self.tok.q.val().get_bit(2));
+        self.accept.next = self.cmd.valid.val() & self.ready.val();
+        self.cmd.ready.next = self.ready.val();
+        self.tok.d.next = self.tok.q.val() << self.k1_tok.val();
+        if self.accept.val() {
+            self.tok.d.next = (self.tok.q.val() << self.k1_tok.val()) | self.k1_41.val();
         }
-        if self.ch.q.val() == self.k2_2.val() {
-            self.cv0.next = self.v0b.q.val();
-            self.cv1.next = self.v1b.q.val();
-            self.cv2.next = self.v2b.q.val();
-        }
-        self.tv0.next = self.v0r.q.val();
-        if self.tag_ch.q.val() == self.k1_2.val() {
-            self.tv0.next = self.v0g.q.val();
-        }
-        if self.tag_ch.q.val() == self.k2_2.val() {
-            self.tv0.next = self.v0b.q.val();
-        }
-        self.dv10.next = signed_bit_cast_safe::<17, 16>(self.cv1.val()) - signed_bit_cast_safe::<17, 16>(self.cv0.val());
-        self.dv20.next = signed_bit_cast_safe::<17, 16>(self.cv2.val()) - signed_bit_cast_safe::<17, 16>(self.cv0.val());
-        // |det| for the reciprocal (Norm).
-        self.det_abs.next = self.det.q.val();
-        if self.det.q.val().get_bit(35) {
-            self.det_abs.next = self.k0_36.val() - self.det.q.val();
-        }
+        self.busy.next = self.tok.q.val().any();
 
-        // The shared multiplier; its operands are chosen by the state below.
-        self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dx10.val());
-        self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy20.val());
-        self.prod.d.next = self.mul.p.val();
-        self.tag1_v.d.next = false;
-        self.tag_v.d.next = self.tag1_v.q.val();
-        self.tag_ch.d.next = self.tag1_ch.q.val();
-        self.tag_ph.d.next = self.tag1_ph.q.val();
-        self.tag_k.d.next = self.tag1_k.q.val();
-        self.diff.next = self.acc.q.val() - self.prod.q.val();
-
-        // A or B = sat40(round(n * mant / 2^(s+4))): add half, arithmetic shift (on Bits, through the
-        // one's complement for negative values), saturate.
-        self.n_sel.next = self.na_r.q.val();
-        if self.k.q.val() == self.k1_3.val() {
-            self.n_sel.next = self.nb_r.q.val();
-        }
-        if self.k.q.val() == self.k2_3.val() {
-            self.n_sel.next = self.na_g.q.val();
-        }
-        if self.k.q.val() == self.k3_3.val() {
-            self.n_sel.next = self.nb_g.q.val();
-        }
-        if self.k.q.val() == self.k4_3.val() {
-            self.n_sel.next = self.na_b.q.val();
-        }
-        if self.k.q.val() == self.k5_3.val() {
-            self.n_sel.next = self.nb_b.q.val();
-        }
-        self.mant26.next = signed_cast(bit_cast::<26, 25>(self.mant.q.val()));
-        // The shift and the rounding half depend only on the reciprocal's shift: formed from its result
-        // and registered with it (`sh_r`, `half_r`), so the plane path starts at a register.
-        self.sh_m1.next = bit_cast::<7, 6>(self.recip.result.data.val().shift) + self.k3_7.val();
-        self.sh.next = bit_cast::<7, 6>(self.recip.result.data.val().shift) + self.k4_7.val();
-        self.rs_half.next = self.k1_64.val() << self.sh_m1.val();
-        self.rs_y.next = self.prod.q.val() + signed_cast(self.half_r.q.val());
-        self.rs_yb.next = unsigned_cast(self.rs_y.val());
-        self.rs_sh.next = self.rs_yb.val() >> self.sh_r.q.val();
-        if self.rs_yb.val().get_bit(63) {
-            self.rs_sh.next = !((!self.rs_yb.val()) >> self.sh_r.q.val());
-        }
-        self.rs_top.next = self.rs_sh.val().get_bits::<25>(39);
-        self.ab40.next = self.rs_sh.val().get_bits::<40>(0);
-        if !(self.rs_top.val().all() | !self.rs_top.val().any()) {
-            if self.rs_sh.val().get_bit(63) {
-                self.ab40.next = self.kmin_40.val();
-            } else {
-                self.ab40.next = self.kmax_40.val();
+        // Station 1: the command; a flat one with its colour at every vertex and material 0.
+        self.fr16.next = bit_cast::<16, 8>(self.cmd.data.val().flat_r);
+        self.fg16.next = bit_cast::<16, 8>(self.cmd.data.val().flat_g);
+        self.fb16.next = bit_cast::<16, 8>(self.cmd.data.val().flat_b);
+        if self.accept.val() {
+            self.cmd1.d.next = self.cmd.data.val();
+            if self.cmd.data.val().flat {
+                self.cmd1.d.next.v0r = self.fr16.val();
+                self.cmd1.d.next.v1r = self.fr16.val();
+                self.cmd1.d.next.v2r = self.fr16.val();
+                self.cmd1.d.next.v0g = self.fg16.val();
+                self.cmd1.d.next.v1g = self.fg16.val();
+                self.cmd1.d.next.v2g = self.fg16.val();
+                self.cmd1.d.next.v0b = self.fb16.val();
+                self.cmd1.d.next.v1b = self.fb16.val();
+                self.cmd1.d.next.v2b = self.fb16.val();
+                self.cmd1.d.next.material = self.k0_16.val();
             }
         }
+        self.sx0.next = signed_cast(self.cmd1.q.val().x0);
+        self.sy0.next = signed_cast(self.cmd1.q.val().y0);
+        self.sx1.next = signed_cast(self.cmd1.q.val().x1);
+        self.sy1.next = signed_cast(self.cmd1.q.val().y1);
+        self.sx2.next = signed_cast(self.cmd1.q.val().x2);
+        self.sy2.next = signed_cast(self.cmd1.q.val().y2);
+        self.s0r.next = signed_cast(self.cmd1.q.val().v0r);
+        self.s0g.next = signed_cast(self.cmd1.q.val().v0g);
+        self.s0b.next = signed_cast(self.cmd1.q.val().v0b);
+        self.s1r.next = signed_cast(self.cmd1.q.val().v1r);
+        self.s1g.next = signed_cast(self.cmd1.q.val().v1g);
+        self.s1b.next = signed_cast(self.cmd1.q.val().v1b);
+        self.s2r.next = signed_cast(self.cmd1.q.val().v2r);
+        self.s2g.next = signed_cast(self.cmd1.q.val().v2g);
+        self.s2b.next = signed_cast(self.cmd1.q.val().v2b);
+        self.dx10.next = signed_bit_cast_safe::<18, 16>(self.sx1.val()) - signed_bit_cast_safe::<18, 16>(self.sx0.val());
+        self.dy10.next = signed_bit_cast_safe::<18, 16>(self.sy1.val()) - signed_bit_cast_safe::<18, 16>(self.sy0.val());
+        self.dx20.next = signed_bit_cast_safe::<18, 16>(self.sx2.val()) - signed_bit_cast_safe::<18, 16>(self.sx0.val());
+        self.dy20.next = signed_bit_cast_safe::<18, 16>(self.sy2.val()) - signed_bit_cast_safe::<18, 16>(self.sy0.val());
+        self.dv10r.next = signed_bit_cast_safe::<18, 16>(self.s1r.val()) - signed_bit_cast_safe::<18, 16>(self.s0r.val());
+        self.dv20r.next = signed_bit_cast_safe::<18, 16>(self.s2r.val()) - signed_bit_cast_safe::<18, 16>(self.s0r.val());
+        self.dv10g.next = signed_bit_cast_safe::<18, 16>(self.s1g.val()) - signed_bit_cast_safe::<18, 16>(self.s0g.val());
+        self.dv20g.next = signed_bit_cast_safe::<18, 16>(self.s2g.val()) - signed_bit_cast_safe::<18, 16>(self.s0g.val());
+        self.dv10b.next = signed_bit_cast_safe::<18, 16>(self.s1b.val()) - signed_bit_cast_safe::<18, 16>(self.s0b.val());
+        self.dv20b.next = signed_bit_cast_safe::<18, 16>(self.s2b.val()) - signed_bit_cast_safe::<18, 16>(self.s0b.val());
+        // The carried fields enter station 1 from the command register in cycle 1.
+        if self.tok.q.val().get_bit(0) {
+            self.c_index[1].d.next = self.cmd1.q.val().index;
+            self.c_material[1].d.next = self.cmd1.q.val().material;
+            self.c_x0[1].d.next = self.cmd1.q.val().x0;
+            self.c_y0[1].d.next = self.cmd1.q.val().y0;
+            self.c_v0r[1].d.next = self.cmd1.q.val().v0r;
+            self.c_v0g[1].d.next = self.cmd1.q.val().v0g;
+            self.c_v0b[1].d.next = self.cmd1.q.val().v0b;
+        }
 
-        // C = sat56(v0 * 2^16 + round((A*(8-x0) + B*(8-y0)) / 16)).
-        self.ca.next = self.plane_r_a.q.val();
-        self.cb.next = self.plane_r_b.q.val();
-        if self.ch.q.val() == self.k1_2.val() {
-            self.ca.next = self.plane_g_a.q.val();
-            self.cb.next = self.plane_g_b.q.val();
+        // Cycles 1-4: the 14 products of det and the numerators, operands and products registered.
+        for u in 0..4 {
+            self.opn_a[u].d.next = self.k0_18.val();
+            self.opn_b[u].d.next = self.k0_18.val();
         }
-        if self.ch.q.val() == self.k2_2.val() {
-            self.ca.next = self.plane_b_a.q.val();
-            self.cb.next = self.plane_b_b.q.val();
+        if self.tok.q.val().get_bit(0) {
+            self.opn_a[0].d.next = self.dx10.val();
+            self.opn_b[0].d.next = self.dy20.val();
+            self.opn_a[1].d.next = self.dx20.val();
+            self.opn_b[1].d.next = self.dy10.val();
+            self.opn_a[2].d.next = self.dv10r.val();
+            self.opn_b[2].d.next = self.dy20.val();
+            self.opn_a[3].d.next = self.dv20r.val();
+            self.opn_b[3].d.next = self.dy10.val();
         }
-        self.ox.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(self.x0.q.val());
-        self.oy.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(self.y0.q.val());
-        self.cx.next = self.acc.q.val() + self.prod.q.val();
+        if self.tok.q.val().get_bit(1) {
+            self.opn_a[0].d.next = self.dv20r.val();
+            self.opn_b[0].d.next = self.dx10.val();
+            self.opn_a[1].d.next = self.dv10r.val();
+            self.opn_b[1].d.next = self.dx20.val();
+            self.opn_a[2].d.next = self.dv10g.val();
+            self.opn_b[2].d.next = self.dy20.val();
+            self.opn_a[3].d.next = self.dv20g.val();
+            self.opn_b[3].d.next = self.dy10.val();
+        }
+        if self.tok.q.val().get_bit(2) {
+            self.opn_a[0].d.next = self.dv20g.val();
+            self.opn_b[0].d.next = self.dx10.val();
+            self.opn_a[1].d.next = self.dv10g.val();
+            self.opn_b[1].d.next = self.dx20.val();
+            self.opn_a[2].d.next = self.dv10b.val();
+            self.opn_b[2].d.next = self.dy20.val();
+            self.opn_a[3].d.next = self.dv20b.val();
+            self.opn_b[3].d.next = self.dy10.val();
+        }
+        if self.tok.q.val().get_bit(3) {
+            self.opn_a[0].d.next = self.dv20b.val();
+            self.opn_b[0].d.next = self.dx10.val();
+            self.opn_a[1].d.next = self.dv10b.val();
+            self.opn_b[1].d.next = self.dx20.val();
+        }
+        for u in 0..4 {
+            self.mn[u].a.next = self.opn_a[u].q.val();
+            self.mn[u].b.next = self.opn_b[u].q.val();
+            self.pn[u].d.next = self.mn[u].p.val();
+        }
+        self.d01.next = self.pn[0].q.val() - self.pn[1].q.val();
+        self.d23.next = self.pn[2].q.val() - self.pn[3].q.val();
+        self.d01u.next = unsigned_cast(self.d01.val());
+        self.d23u.next = unsigned_cast(self.d23.val());
+        self.n01.next = self.d01u.val().get_bits::<35>(0);
+        self.n23.next = self.d23u.val().get_bits::<35>(0);
+
+        // Station loads: station j from station j-1 at the end of cycle 4(j-1).
+        if self.tok.q.val().get_bit(3) {
+            self.c_index[2].d.next = self.c_index[1].q.val();
+            self.c_material[2].d.next = self.c_material[1].q.val();
+            self.c_x0[2].d.next = self.c_x0[1].q.val();
+            self.c_y0[2].d.next = self.c_y0[1].q.val();
+            self.c_v0r[2].d.next = self.c_v0r[1].q.val();
+            self.c_v0g[2].d.next = self.c_v0g[1].q.val();
+            self.c_v0b[2].d.next = self.c_v0b[1].q.val();
+            self.na_r[2].d.next = self.na_r[1].q.val();
+            self.nb_r[2].d.next = self.nb_r[1].q.val();
+            self.na_g[2].d.next = self.na_g[1].q.val();
+            self.nb_g[2].d.next = self.nb_g[1].q.val();
+            self.na_b[2].d.next = self.na_b[1].q.val();
+            self.nb_b[2].d.next = self.nb_b[1].q.val();
+        }
+        if self.tok.q.val().get_bit(7) {
+            self.c_index[3].d.next = self.c_index[2].q.val();
+            self.c_material[3].d.next = self.c_material[2].q.val();
+            self.c_x0[3].d.next = self.c_x0[2].q.val();
+            self.c_y0[3].d.next = self.c_y0[2].q.val();
+            self.c_v0r[3].d.next = self.c_v0r[2].q.val();
+            self.c_v0g[3].d.next = self.c_v0g[2].q.val();
+            self.c_v0b[3].d.next = self.c_v0b[2].q.val();
+            self.na_r[3].d.next = self.na_r[2].q.val();
+            self.nb_r[3].d.next = self.nb_r[2].q.val();
+            self.na_g[3].d.next = self.na_g[2].q.val();
+            self.nb_g[3].d.next = self.nb_g[2].q.val();
+            self.na_b[3].d.next = self.na_b[2].q.val();
+            self.nb_b[3].d.next = self.nb_b[2].q.val();
+            self.den[3].d.next = self.den[2].q.val();
+            self.shift[3].d.next = self.shift[2].q.val();
+            self.neg[3].d.next = self.neg[2].q.val();
+            self.zero[3].d.next = self.zero[2].q.val();
+            self.rem[3].d.next = self.step[2].rem_next.val();
+            self.quo[3].d.next = self.step[2].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(11) {
+            self.c_index[4].d.next = self.c_index[3].q.val();
+            self.c_material[4].d.next = self.c_material[3].q.val();
+            self.c_x0[4].d.next = self.c_x0[3].q.val();
+            self.c_y0[4].d.next = self.c_y0[3].q.val();
+            self.c_v0r[4].d.next = self.c_v0r[3].q.val();
+            self.c_v0g[4].d.next = self.c_v0g[3].q.val();
+            self.c_v0b[4].d.next = self.c_v0b[3].q.val();
+            self.na_r[4].d.next = self.na_r[3].q.val();
+            self.nb_r[4].d.next = self.nb_r[3].q.val();
+            self.na_g[4].d.next = self.na_g[3].q.val();
+            self.nb_g[4].d.next = self.nb_g[3].q.val();
+            self.na_b[4].d.next = self.na_b[3].q.val();
+            self.nb_b[4].d.next = self.nb_b[3].q.val();
+            self.den[4].d.next = self.den[3].q.val();
+            self.shift[4].d.next = self.shift[3].q.val();
+            self.neg[4].d.next = self.neg[3].q.val();
+            self.zero[4].d.next = self.zero[3].q.val();
+            self.rem[4].d.next = self.step[3].rem_next.val();
+            self.quo[4].d.next = self.step[3].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(15) {
+            self.c_index[5].d.next = self.c_index[4].q.val();
+            self.c_material[5].d.next = self.c_material[4].q.val();
+            self.c_x0[5].d.next = self.c_x0[4].q.val();
+            self.c_y0[5].d.next = self.c_y0[4].q.val();
+            self.c_v0r[5].d.next = self.c_v0r[4].q.val();
+            self.c_v0g[5].d.next = self.c_v0g[4].q.val();
+            self.c_v0b[5].d.next = self.c_v0b[4].q.val();
+            self.na_r[5].d.next = self.na_r[4].q.val();
+            self.nb_r[5].d.next = self.nb_r[4].q.val();
+            self.na_g[5].d.next = self.na_g[4].q.val();
+            self.nb_g[5].d.next = self.nb_g[4].q.val();
+            self.na_b[5].d.next = self.na_b[4].q.val();
+            self.nb_b[5].d.next = self.nb_b[4].q.val();
+            self.den[5].d.next = self.den[4].q.val();
+            self.shift[5].d.next = self.shift[4].q.val();
+            self.neg[5].d.next = self.neg[4].q.val();
+            self.zero[5].d.next = self.zero[4].q.val();
+            self.rem[5].d.next = self.step[4].rem_next.val();
+            self.quo[5].d.next = self.step[4].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(19) {
+            self.c_index[6].d.next = self.c_index[5].q.val();
+            self.c_material[6].d.next = self.c_material[5].q.val();
+            self.c_x0[6].d.next = self.c_x0[5].q.val();
+            self.c_y0[6].d.next = self.c_y0[5].q.val();
+            self.c_v0r[6].d.next = self.c_v0r[5].q.val();
+            self.c_v0g[6].d.next = self.c_v0g[5].q.val();
+            self.c_v0b[6].d.next = self.c_v0b[5].q.val();
+            self.na_r[6].d.next = self.na_r[5].q.val();
+            self.nb_r[6].d.next = self.nb_r[5].q.val();
+            self.na_g[6].d.next = self.na_g[5].q.val();
+            self.nb_g[6].d.next = self.nb_g[5].q.val();
+            self.na_b[6].d.next = self.na_b[5].q.val();
+            self.nb_b[6].d.next = self.nb_b[5].q.val();
+            self.den[6].d.next = self.den[5].q.val();
+            self.shift[6].d.next = self.shift[5].q.val();
+            self.neg[6].d.next = self.neg[5].q.val();
+            self.zero[6].d.next = self.zero[5].q.val();
+            self.rem[6].d.next = self.step[5].rem_next.val();
+            self.quo[6].d.next = self.step[5].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(23) {
+            self.c_index[7].d.next = self.c_index[6].q.val();
+            self.c_material[7].d.next = self.c_material[6].q.val();
+            self.c_x0[7].d.next = self.c_x0[6].q.val();
+            self.c_y0[7].d.next = self.c_y0[6].q.val();
+            self.c_v0r[7].d.next = self.c_v0r[6].q.val();
+            self.c_v0g[7].d.next = self.c_v0g[6].q.val();
+            self.c_v0b[7].d.next = self.c_v0b[6].q.val();
+            self.na_r[7].d.next = self.na_r[6].q.val();
+            self.nb_r[7].d.next = self.nb_r[6].q.val();
+            self.na_g[7].d.next = self.na_g[6].q.val();
+            self.nb_g[7].d.next = self.nb_g[6].q.val();
+            self.na_b[7].d.next = self.na_b[6].q.val();
+            self.nb_b[7].d.next = self.nb_b[6].q.val();
+            self.den[7].d.next = self.den[6].q.val();
+            self.shift[7].d.next = self.shift[6].q.val();
+            self.neg[7].d.next = self.neg[6].q.val();
+            self.zero[7].d.next = self.zero[6].q.val();
+            self.rem[7].d.next = self.step[6].rem_next.val();
+            self.quo[7].d.next = self.step[6].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(27) {
+            self.c_index[8].d.next = self.c_index[7].q.val();
+            self.c_material[8].d.next = self.c_material[7].q.val();
+            self.c_x0[8].d.next = self.c_x0[7].q.val();
+            self.c_y0[8].d.next = self.c_y0[7].q.val();
+            self.c_v0r[8].d.next = self.c_v0r[7].q.val();
+            self.c_v0g[8].d.next = self.c_v0g[7].q.val();
+            self.c_v0b[8].d.next = self.c_v0b[7].q.val();
+            self.na_r[8].d.next = self.na_r[7].q.val();
+            self.nb_r[8].d.next = self.nb_r[7].q.val();
+            self.na_g[8].d.next = self.na_g[7].q.val();
+            self.nb_g[8].d.next = self.nb_g[7].q.val();
+            self.na_b[8].d.next = self.na_b[7].q.val();
+            self.nb_b[8].d.next = self.nb_b[7].q.val();
+            self.den[8].d.next = self.den[7].q.val();
+            self.shift[8].d.next = self.shift[7].q.val();
+            self.neg[8].d.next = self.neg[7].q.val();
+            self.zero[8].d.next = self.zero[7].q.val();
+            self.rem[8].d.next = self.step[7].rem_next.val();
+            self.quo[8].d.next = self.step[7].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(31) {
+            self.c_index[9].d.next = self.c_index[8].q.val();
+            self.c_material[9].d.next = self.c_material[8].q.val();
+            self.c_x0[9].d.next = self.c_x0[8].q.val();
+            self.c_y0[9].d.next = self.c_y0[8].q.val();
+            self.c_v0r[9].d.next = self.c_v0r[8].q.val();
+            self.c_v0g[9].d.next = self.c_v0g[8].q.val();
+            self.c_v0b[9].d.next = self.c_v0b[8].q.val();
+            self.na_r[9].d.next = self.na_r[8].q.val();
+            self.nb_r[9].d.next = self.nb_r[8].q.val();
+            self.na_g[9].d.next = self.na_g[8].q.val();
+            self.nb_g[9].d.next = self.nb_g[8].q.val();
+            self.na_b[9].d.next = self.na_b[8].q.val();
+            self.nb_b[9].d.next = self.nb_b[8].q.val();
+            self.den[9].d.next = self.den[8].q.val();
+            self.shift[9].d.next = self.shift[8].q.val();
+            self.neg[9].d.next = self.neg[8].q.val();
+            self.zero[9].d.next = self.zero[8].q.val();
+            self.rem[9].d.next = self.rem[8].q.val();
+            self.quo[9].d.next = self.quo[8].q.val();
+        }
+        if self.tok.q.val().get_bit(35) {
+            self.c_index[10].d.next = self.c_index[9].q.val();
+            self.c_material[10].d.next = self.c_material[9].q.val();
+            self.c_x0[10].d.next = self.c_x0[9].q.val();
+            self.c_y0[10].d.next = self.c_y0[9].q.val();
+            self.c_v0r[10].d.next = self.c_v0r[9].q.val();
+            self.c_v0g[10].d.next = self.c_v0g[9].q.val();
+            self.c_v0b[10].d.next = self.c_v0b[9].q.val();
+            self.den[10].d.next = self.den[9].q.val();
+            self.shift[10].d.next = self.shift[9].q.val();
+            self.neg[10].d.next = self.neg[9].q.val();
+            self.zero[10].d.next = self.zero[9].q.val();
+            self.rem[10].d.next = self.rem[9].q.val();
+            self.quo[10].d.next = self.quo[9].q.val();
+            self.r_a[10].d.next = self.r_a[9].q.val();
+            self.r_b[10].d.next = self.r_b[9].q.val();
+            self.r_c[10].d.next = self.r_c[9].q.val();
+            self.g_a[10].d.next = self.g_a[9].q.val();
+            self.g_b[10].d.next = self.g_b[9].q.val();
+            self.g_c[10].d.next = self.g_c[9].q.val();
+            self.b_a[10].d.next = self.b_a[9].q.val();
+            self.b_b[10].d.next = self.b_b[9].q.val();
+            self.b_c[10].d.next = self.b_c[9].q.val();
+        }
+        if self.tok.q.val().get_bit(39) {
+            self.c_index[11].d.next = self.c_index[10].q.val();
+            self.c_material[11].d.next = self.c_material[10].q.val();
+            self.c_x0[11].d.next = self.c_x0[10].q.val();
+            self.c_y0[11].d.next = self.c_y0[10].q.val();
+            self.c_v0r[11].d.next = self.c_v0r[10].q.val();
+            self.c_v0g[11].d.next = self.c_v0g[10].q.val();
+            self.c_v0b[11].d.next = self.c_v0b[10].q.val();
+            self.r_a[11].d.next = self.r_a[10].q.val();
+            self.r_b[11].d.next = self.r_b[10].q.val();
+            self.r_c[11].d.next = self.r_c[10].q.val();
+            self.g_a[11].d.next = self.g_a[10].q.val();
+            self.g_b[11].d.next = self.g_b[10].q.val();
+            self.g_c[11].d.next = self.g_c[10].q.val();
+            self.b_a[11].d.next = self.b_a[10].q.val();
+            self.b_b[11].d.next = self.b_b[10].q.val();
+            self.b_c[11].d.next = self.b_c[10].q.val();
+        }
+        if self.tok.q.val().get_bit(3) {
+            self.det2.d.next = self.det1.q.val();
+        }
+        // The numerators and det into the station of the cycle after (cycles 3-6).
+        if self.tok.q.val().get_bit(2) {
+            self.det1.d.next = self.d01.val();
+            self.na_r[1].d.next = self.n23.val();
+        }
+        if self.tok.q.val().get_bit(3) {
+            self.nb_r[2].d.next = self.n01.val();
+            self.na_g[2].d.next = self.n23.val();
+        }
+        if self.tok.q.val().get_bit(4) {
+            self.nb_g[2].d.next = self.n01.val();
+            self.na_b[2].d.next = self.n23.val();
+        }
+        if self.tok.q.val().get_bit(5) {
+            self.nb_b[2].d.next = self.n01.val();
+        }
+
+        // Cycle 5: |det| and its leading one start the division.
+        self.det_abs.next = self.det2.q.val();
+        if self.det2.q.val().get_bit(35) {
+            self.det_abs.next = self.k0_36.val() - self.det2.q.val();
+        }
+        self.det_absu.next = unsigned_cast(self.det_abs.val());
+        self.lead.x.next = self.det_absu.val();
+        if self.tok.q.val().get_bit(4) {
+            self.rem[2].d.next = bit_cast::<37, 36>(self.lead.onehot.val());
+            self.den[2].d.next = bit_cast::<37, 36>(self.det_absu.val());
+            self.quo[2].d.next = self.k0_25.val();
+            self.shift[2].d.next = self.lead.index.val();
+            self.neg[2].d.next = self.det2.q.val().get_bit(35);
+            self.zero[2].d.next = self.det2.q.val() == self.k0_36.val();
+        }
+        // The division steps: station j's step in place in its window, into station j+1 at its end.
+        for j in 0..12 {
+            self.step[j].rem.next = self.rem[j].q.val();
+            self.step[j].den.next = self.den[j].q.val();
+            self.step[j].quo.next = self.quo[j].q.val();
+        }
+        if self.tok.q.val().get_bit(5) | self.tok.q.val().get_bit(6) {
+            self.rem[2].d.next = self.step[2].rem_next.val();
+            self.quo[2].d.next = self.step[2].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(8) | self.tok.q.val().get_bit(9) | self.tok.q.val().get_bit(10) {
+            self.rem[3].d.next = self.step[3].rem_next.val();
+            self.quo[3].d.next = self.step[3].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(12) | self.tok.q.val().get_bit(13) | self.tok.q.val().get_bit(14) {
+            self.rem[4].d.next = self.step[4].rem_next.val();
+            self.quo[4].d.next = self.step[4].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(16) | self.tok.q.val().get_bit(17) | self.tok.q.val().get_bit(18) {
+            self.rem[5].d.next = self.step[5].rem_next.val();
+            self.quo[5].d.next = self.step[5].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(20) | self.tok.q.val().get_bit(21) | self.tok.q.val().get_bit(22) {
+            self.rem[6].d.next = self.step[6].rem_next.val();
+            self.quo[6].d.next = self.step[6].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(24) | self.tok.q.val().get_bit(25) | self.tok.q.val().get_bit(26) {
+            self.rem[7].d.next = self.step[7].rem_next.val();
+            self.quo[7].d.next = self.step[7].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(28) | self.tok.q.val().get_bit(29) {
+            self.rem[8].d.next = self.step[8].rem_next.val();
+            self.quo[8].d.next = self.step[8].quo_next.val();
+        }
+
+        // Cycles 33-35: A and B of R, G, B: n (negated if det < 0) * mant on two multipliers.
+        self.n_a.next = self.na_r[9].q.val();
+        self.n_b.next = self.nb_r[9].q.val();
+        if self.tok.q.val().get_bit(33) {
+            self.n_a.next = self.na_g[9].q.val();
+            self.n_b.next = self.nb_g[9].q.val();
+        }
+        if self.tok.q.val().get_bit(34) {
+            self.n_a.next = self.na_b[9].q.val();
+            self.n_b.next = self.nb_b[9].q.val();
+        }
+        self.sn_a.next = signed_cast(self.n_a.val());
+        self.sn_b.next = signed_cast(self.n_b.val());
+        self.wn_a.next = signed_bit_cast_safe::<36, 35>(self.sn_a.val());
+        self.wn_b.next = signed_bit_cast_safe::<36, 35>(self.sn_b.val());
+        if self.neg[9].q.val() {
+            self.wn_a.next = self.k0_36s.val() - signed_bit_cast_safe::<36, 35>(self.sn_a.val());
+            self.wn_b.next = self.k0_36s.val() - signed_bit_cast_safe::<36, 35>(self.sn_b.val());
+        }
+        self.opab_n[0].d.next = self.wn_a.val();
+        self.opab_n[1].d.next = self.wn_b.val();
+        self.opab_m.d.next = signed_cast(bit_cast::<26, 25>(self.quo[9].q.val()));
+        self.sh_ab1.d.next = bit_cast::<7, 6>(self.shift[9].q.val()) + self.k4_7.val();
+        self.z_ab1.d.next = self.zero[9].q.val();
+        self.sh_ab2.d.next = self.sh_ab1.q.val();
+        self.z_ab2.d.next = self.z_ab1.q.val();
+        for u in 0..2 {
+            self.mab[u].a.next = self.opab_n[u].q.val();
+            self.mab[u].b.next = self.opab_m.q.val();
+            self.pab[u].d.next = self.mab[u].p.val();
+            self.round[u].p.next = self.pab[u].q.val();
+            self.round[u].sh.next = self.sh_ab2.q.val();
+        }
+        self.ab_a.next = self.round[0].out.val();
+        self.ab_b.next = self.round[1].out.val();
+        if self.z_ab2.q.val() {
+            self.ab_a.next = self.k0_40.val();
+            self.ab_b.next = self.k0_40.val();
+        }
+        if self.tok.q.val().get_bit(34) {
+            self.r_a[9].d.next = self.ab_a.val();
+            self.r_b[9].d.next = self.ab_b.val();
+        }
+        if self.tok.q.val().get_bit(35) {
+            self.g_a[10].d.next = self.ab_a.val();
+            self.g_b[10].d.next = self.ab_b.val();
+        }
+        if self.tok.q.val().get_bit(36) {
+            self.b_a[10].d.next = self.ab_a.val();
+            self.b_b[10].d.next = self.ab_b.val();
+        }
+
+        // Cycles 36-38: A*(8-x0) and B*(8-y0) of R, G, B; C two cycles later (38-40).
+        self.ca.next = self.r_a[9].q.val();
+        self.cb.next = self.r_b[9].q.val();
+        self.cx0.next = self.c_x0[9].q.val();
+        self.cy0.next = self.c_y0[9].q.val();
+        self.cv.next = self.c_v0r[9].q.val();
+        if self.tok.q.val().get_bit(36) {
+            self.ca.next = self.g_a[10].q.val();
+            self.cb.next = self.g_b[10].q.val();
+            self.cx0.next = self.c_x0[10].q.val();
+            self.cy0.next = self.c_y0[10].q.val();
+            self.cv.next = self.c_v0g[10].q.val();
+        }
+        if self.tok.q.val().get_bit(37) {
+            self.ca.next = self.b_a[10].q.val();
+            self.cb.next = self.b_b[10].q.val();
+            self.cx0.next = self.c_x0[10].q.val();
+            self.cy0.next = self.c_y0[10].q.val();
+            self.cv.next = self.c_v0b[10].q.val();
+        }
+        self.scx0.next = signed_cast(self.cx0.val());
+        self.scy0.next = signed_cast(self.cy0.val());
+        self.ox.next = self.k8_18.val() - signed_bit_cast_safe::<18, 16>(self.scx0.val());
+        self.oy.next = self.k8_18.val() - signed_bit_cast_safe::<18, 16>(self.scy0.val());
+        self.opc_a[0].d.next = signed_cast(self.ca.val());
+        self.opc_o[0].d.next = self.ox.val();
+        self.opc_a[1].d.next = signed_cast(self.cb.val());
+        self.opc_o[1].d.next = self.oy.val();
+        self.cv1.d.next = signed_cast(self.cv.val());
+        self.cv2.d.next = self.cv1.q.val();
+        for u in 0..2 {
+            self.mc[u].a.next = self.opc_a[u].q.val();
+            self.mc[u].b.next = self.opc_o[u].q.val();
+            self.pc[u].d.next = self.mc[u].p.val();
+        }
+        self.cx.next = self.pc[0].q.val() + self.pc[1].q.val();
         self.cx8.next = self.cx.val() + self.k8_64.val();
-        self.cxr.next = signed_bit_cast_safe::<64, 60>(self.cx8.val().get_bits::<60>(4));
-        self.v0w.next = signed_bit_cast_safe::<64, 16>(self.tv0.val());
+        self.cx8u.next = unsigned_cast(self.cx8.val());
+        self.cx60.next = self.cx8u.val().get_bits::<60>(4);
+        self.scx60.next = signed_cast(self.cx60.val());
+        self.cxr.next = signed_bit_cast_safe::<64, 60>(self.scx60.val());
+        self.v0w.next = signed_bit_cast_safe::<64, 16>(self.cv2.q.val());
         self.v0s.next = unsigned_cast(self.v0w.val()) << self.k16_7.val();
         self.csum.next = signed_cast(self.v0s.val()) + self.cxr.val();
-        self.c_top.next = unsigned_cast(self.csum.val().get_bits::<9>(55));
-        self.c56.next = unsigned_cast(self.csum.val().get_bits::<56>(0));
+        self.csumu.next = unsigned_cast(self.csum.val());
+        self.c_top.next = self.csumu.val().get_bits::<9>(55);
+        self.c56.next = self.csumu.val().get_bits::<56>(0);
         if !(self.c_top.val().all() | !self.c_top.val().any()) {
-            if self.csum.val().get_bit(63) {
+            if self.csumu.val().get_bit(63) {
                 self.c56.next = self.kmin_56.val();
             } else {
                 self.c56.next = self.kmax_56.val();
             }
         }
+        if self.tok.q.val().get_bit(37) {
+            self.r_c[10].d.next = self.c56.val();
+        }
+        if self.tok.q.val().get_bit(38) {
+            self.g_c[10].d.next = self.c56.val();
+        }
+        if self.tok.q.val().get_bit(39) {
+            self.b_c[11].d.next = self.c56.val();
+        }
 
-        // Defaults of the outputs and the reciprocal's handshake.
-        self.cmd.ready.next = false;
-        self.req_valid.next = false;
-        self.recip.request.data.next = unsigned_cast(self.det_abs.val());
-        self.res_ready.next = false;
+        // Cycle 41: the write.
         self.tdbs_write_enable.next = false;
         self.tdbs_write_address.next = self.k0_16.val();
         self.tdbs_write_data.next.r_a = self.k0_40.val();
@@ -484,271 +977,19 @@ impl Logic for ColourSetup {
         self.tdbs_write_data.next.b_b = self.k0_40.val();
         self.tdbs_write_data.next.b_c = self.k0_56.val();
         self.tdbs_write_data.next.material = self.k0_16.val();
-
-        match self.state.q.val() {
-            SetupState::Idle => {
-                self.cmd.ready.next = true;
-            }
-            SetupState::Det0 => {
-                self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dx10.val());
-                self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy20.val());
-                self.state.d.next = SetupState::Det1;
-            }
-            SetupState::Det1 => {
-                self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dx20.val());
-                self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy10.val());
-                self.state.d.next = SetupState::Det2;
-            }
-            SetupState::Det2 => {
-                self.acc.d.next = self.prod.q.val();
-                self.state.d.next = SetupState::Det3;
-            }
-            SetupState::Det3 => {
-                self.det.d.next = signed_bit_cast_safe::<36, 64>(self.diff.val());
-                self.state.d.next = SetupState::Norm;
-            }
-            SetupState::Norm => {
-                // Canonical order: swap vertices 1 and 2 when det < 0 (golden::raster::canonical_order).
-                if self.det.q.val().get_bit(35) {
-                    self.x1.d.next = self.x2.q.val();
-                    self.y1.d.next = self.y2.q.val();
-                    self.x2.d.next = self.x1.q.val();
-                    self.y2.d.next = self.y1.q.val();
-                    self.v1r.d.next = self.v2r.q.val();
-                    self.v1g.d.next = self.v2g.q.val();
-                    self.v1b.d.next = self.v2b.q.val();
-                    self.v2r.d.next = self.v1r.q.val();
-                    self.v2g.d.next = self.v1g.q.val();
-                    self.v2b.d.next = self.v1b.q.val();
-                }
-                self.ch.d.next = self.k0_2.val();
-                self.ph.d.next = self.k0_2.val();
-                self.n_done.d.next = false;
-                self.issued.d.next = false;
-                if self.det.q.val() == self.k0_36.val() {
-                    // Zero area (the RC never flags one visible): constant planes at vertex 0.
-                    self.plane_r_a.d.next = self.k0_40.val();
-                    self.plane_r_b.d.next = self.k0_40.val();
-                    self.plane_g_a.d.next = self.k0_40.val();
-                    self.plane_g_b.d.next = self.k0_40.val();
-                    self.plane_b_a.d.next = self.k0_40.val();
-                    self.plane_b_b.d.next = self.k0_40.val();
-                    self.state.d.next = SetupState::PlaneC;
-                } else {
-                    self.req_valid.next = true;
-                    if self.recip.request.ready.val() {
-                        self.state.d.next = SetupState::Div;
-                    }
-                }
-            }
-            SetupState::Div => {
-                // The six numerators, four products per channel, issued one per cycle and consumed from
-                // `prod` in the next: na = dv10*dy20 - dv20*dy10, nb = dv20*dx10 - dv10*dx20.
-                if !self.issued.q.val() {
-                    self.tag1_v.d.next = true;
-                    self.tag1_ch.d.next = self.ch.q.val();
-                    self.tag1_ph.d.next = self.ph.q.val();
-                    if self.ph.q.val() == self.k0_2.val() {
-                        self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dv10.val());
-                        self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy20.val());
-                    }
-                    if self.ph.q.val() == self.k1_2.val() {
-                        self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dv20.val());
-                        self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dy10.val());
-                    }
-                    if self.ph.q.val() == self.k2_2.val() {
-                        self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dv20.val());
-                        self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dx10.val());
-                    }
-                    if self.ph.q.val() == self.k3_2.val() {
-                        self.op_a.next = signed_bit_cast_safe::<40, 17>(self.dv10.val());
-                        self.op_b.next = signed_bit_cast_safe::<26, 17>(self.dx20.val());
-                        self.ch.d.next = self.ch.q.val() + self.k1_2.val();
-                        if self.ch.q.val() == self.k2_2.val() {
-                            self.issued.d.next = true;
-                        }
-                    }
-                    self.ph.d.next = self.ph.q.val() + self.k1_2.val();
-                }
-                if self.tag_v.q.val() {
-                    if (self.tag_ph.q.val() == self.k0_2.val()) | (self.tag_ph.q.val() == self.k2_2.val()) {
-                        self.acc.d.next = self.prod.q.val();
-                    }
-                    if self.tag_ph.q.val() == self.k1_2.val() {
-                        if self.tag_ch.q.val() == self.k0_2.val() {
-                            self.na_r.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
-                        }
-                        if self.tag_ch.q.val() == self.k1_2.val() {
-                            self.na_g.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
-                        }
-                        if self.tag_ch.q.val() == self.k2_2.val() {
-                            self.na_b.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
-                        }
-                    }
-                    if self.tag_ph.q.val() == self.k3_2.val() {
-                        if self.tag_ch.q.val() == self.k0_2.val() {
-                            self.nb_r.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
-                        }
-                        if self.tag_ch.q.val() == self.k1_2.val() {
-                            self.nb_g.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
-                        }
-                        if self.tag_ch.q.val() == self.k2_2.val() {
-                            self.nb_b.d.next = signed_bit_cast_safe::<35, 64>(self.diff.val());
-                            self.n_done.d.next = true;
-                        }
-                    }
-                }
-                if self.recip.result.valid.val() & self.n_done.q.val() {
-                    self.res_ready.next = true;
-                    self.mant.d.next = self.recip.result.data.val().mant;
-                    self.sh_r.d.next = self.sh.val();
-                    self.half_r.d.next = self.rs_half.val();
-                    self.k.d.next = self.k0_3.val();
-                    self.state.d.next = SetupState::PlaneAB;
-                }
-            }
-            SetupState::PlaneAB => {
-                // k = 0..5 issues n_k * mant; two cycles after, its rounded, shifted, saturated value is
-                // written (k = 6 and 7 only drain the last two).
-                if self.k.q.val() < self.k6_3.val() {
-                    self.op_a.next = signed_bit_cast_safe::<40, 35>(self.n_sel.val());
-                    self.op_b.next = self.mant26.val();
-                    self.tag1_v.d.next = true;
-                    self.tag1_k.d.next = self.k.q.val();
-                }
-                if self.tag_v.q.val() {
-                    if self.tag_k.q.val() == self.k0_3.val() {
-                        self.plane_r_a.d.next = self.ab40.val();
-                    }
-                    if self.tag_k.q.val() == self.k1_3.val() {
-                        self.plane_r_b.d.next = self.ab40.val();
-                    }
-                    if self.tag_k.q.val() == self.k2_3.val() {
-                        self.plane_g_a.d.next = self.ab40.val();
-                    }
-                    if self.tag_k.q.val() == self.k3_3.val() {
-                        self.plane_g_b.d.next = self.ab40.val();
-                    }
-                    if self.tag_k.q.val() == self.k4_3.val() {
-                        self.plane_b_a.d.next = self.ab40.val();
-                    }
-                    if self.tag_k.q.val() == self.k5_3.val() {
-                        self.plane_b_b.d.next = self.ab40.val();
-                    }
-                }
-                if self.k.q.val() == self.k7_3.val() {
-                    self.ch.d.next = self.k0_2.val();
-                    self.ph.d.next = self.k0_2.val();
-                    self.issued.d.next = false;
-                    self.state.d.next = SetupState::PlaneC;
-                }
-                self.k.d.next = self.k.q.val() + self.k1_3.val();
-            }
-            SetupState::PlaneC => {
-                // Per channel: A*(8-x0), then B*(8-y0); C is formed the cycle after the second product.
-                if !self.issued.q.val() {
-                    self.tag1_v.d.next = true;
-                    self.tag1_ch.d.next = self.ch.q.val();
-                    self.tag1_ph.d.next = self.ph.q.val();
-                    if self.ph.q.val() == self.k0_2.val() {
-                        self.op_a.next = signed_cast(self.ca.val());
-                        self.op_b.next = signed_bit_cast_safe::<26, 17>(self.ox.val());
-                        self.ph.d.next = self.k1_2.val();
-                    } else {
-                        self.op_a.next = signed_cast(self.cb.val());
-                        self.op_b.next = signed_bit_cast_safe::<26, 17>(self.oy.val());
-                        self.ph.d.next = self.k0_2.val();
-                        self.ch.d.next = self.ch.q.val() + self.k1_2.val();
-                        if self.ch.q.val() == self.k2_2.val() {
-                            self.issued.d.next = true;
-                        }
-                    }
-                }
-                if self.tag_v.q.val() {
-                    if self.tag_ph.q.val() == self.k0_2.val() {
-                        self.acc.d.next = self.prod.q.val();
-                    } else {
-                        if self.tag_ch.q.val() == self.k0_2.val() {
-                            self.plane_r_c.d.next = self.c56.val();
-                        }
-                        if self.tag_ch.q.val() == self.k1_2.val() {
-                            self.plane_g_c.d.next = self.c56.val();
-                        }
-                        if self.tag_ch.q.val() == self.k2_2.val() {
-                            self.plane_b_c.d.next = self.c56.val();
-                            self.state.d.next = SetupState::Write;
-                        }
-                    }
-                }
-            }
-            SetupState::Write => {
-                self.cmd.ready.next = true;
-                self.tdbs_write_enable.next = true;
-                self.tdbs_write_address.next = self.index.q.val();
-                self.tdbs_write_data.next.r_a = self.plane_r_a.q.val();
-                self.tdbs_write_data.next.r_b = self.plane_r_b.q.val();
-                self.tdbs_write_data.next.r_c = self.plane_r_c.q.val();
-                self.tdbs_write_data.next.g_a = self.plane_g_a.q.val();
-                self.tdbs_write_data.next.g_b = self.plane_g_b.q.val();
-                self.tdbs_write_data.next.g_c = self.plane_g_c.q.val();
-                self.tdbs_write_data.next.b_a = self.plane_b_a.q.val();
-                self.tdbs_write_data.next.b_b = self.plane_b_b.q.val();
-                self.tdbs_write_data.next.b_c = self.plane_b_c.q.val();
-                self.tdbs_write_data.next.material = self.material.q.val();
-                self.state.d.next = SetupState::Idle;
-            }
-            _ => {
-                self.state.d.next = SetupState::Idle;
-            }
+        if self.tok.q.val().get_bit(40) {
+            self.tdbs_write_enable.next = true;
+            self.tdbs_write_address.next = self.c_index[11].q.val();
+            self.tdbs_write_data.next.r_a = self.r_a[11].q.val();
+            self.tdbs_write_data.next.r_b = self.r_b[11].q.val();
+            self.tdbs_write_data.next.r_c = self.r_c[11].q.val();
+            self.tdbs_write_data.next.g_a = self.g_a[11].q.val();
+            self.tdbs_write_data.next.g_b = self.g_b[11].q.val();
+            self.tdbs_write_data.next.g_c = self.g_c[11].q.val();
+            self.tdbs_write_data.next.b_a = self.b_a[11].q.val();
+            self.tdbs_write_data.next.b_b = self.b_b[11].q.val();
+            self.tdbs_write_data.next.b_c = self.b_c[11].q.val();
+            self.tdbs_write_data.next.material = self.c_material[11].q.val();
         }
-
-        // Each multiplier and reciprocal input is driven exactly once per evaluation of this block: with a default
-        // followed by an override, an event-driven simulator (Icarus) re-evaluates the product on the
-        // intermediate value, re-runs this block, and never settles.
-        self.opa_r.d.next = self.op_a.val();
-        self.opb_r.d.next = self.op_b.val();
-        self.mul.a.next = self.opa_r.q.val();
-        self.mul.b.next = self.opb_r.q.val();
-        self.recip.request.valid.next = self.req_valid.val();
-        self.recip.result.ready.next = self.res_ready.val();
-
-        // Take a command (Idle or Write).
-        self.accept.next = self.cmd.ready.val() & self.cmd.valid.val();
-        if self.accept.val() {
-            self.index.d.next = self.cmd.data.val().index;
-            self.x0.d.next = signed_cast(self.cmd.data.val().x0);
-            self.y0.d.next = signed_cast(self.cmd.data.val().y0);
-            self.x1.d.next = signed_cast(self.cmd.data.val().x1);
-            self.y1.d.next = signed_cast(self.cmd.data.val().y1);
-            self.x2.d.next = signed_cast(self.cmd.data.val().x2);
-            self.y2.d.next = signed_cast(self.cmd.data.val().y2);
-            self.v0r.d.next = signed_cast(self.cmd.data.val().v0r);
-            self.v0g.d.next = signed_cast(self.cmd.data.val().v0g);
-            self.v0b.d.next = signed_cast(self.cmd.data.val().v0b);
-            self.v1r.d.next = signed_cast(self.cmd.data.val().v1r);
-            self.v1g.d.next = signed_cast(self.cmd.data.val().v1g);
-            self.v1b.d.next = signed_cast(self.cmd.data.val().v1b);
-            self.v2r.d.next = signed_cast(self.cmd.data.val().v2r);
-            self.v2g.d.next = signed_cast(self.cmd.data.val().v2g);
-            self.v2b.d.next = signed_cast(self.cmd.data.val().v2b);
-            if self.cmd.data.val().flat {
-                // golden::shade::flat_setup: constant planes, material 0.
-                self.material.d.next = self.k0_16.val();
-                self.plane_r_a.d.next = self.k0_40.val();
-                self.plane_r_b.d.next = self.k0_40.val();
-                self.plane_r_c.d.next = bit_cast::<56, 8>(self.cmd.data.val().flat_r) << self.k16_7.val();
-                self.plane_g_a.d.next = self.k0_40.val();
-                self.plane_g_b.d.next = self.k0_40.val();
-                self.plane_g_c.d.next = bit_cast::<56, 8>(self.cmd.data.val().flat_g) << self.k16_7.val();
-                self.plane_b_a.d.next = self.k0_40.val();
-                self.plane_b_b.d.next = self.k0_40.val();
-                self.plane_b_c.d.next = bit_cast::<56, 8>(self.cmd.data.val().flat_b) << self.k16_7.val();
-                self.state.d.next = SetupState::Write;
-            } else {
-                self.material.d.next = self.cmd.data.val().material;
-                self.state.d.next = SetupState::Det0;
-            }
-        }
-        self.busy.next = self.state.q.val() != SetupState::Idle;
     }
 }

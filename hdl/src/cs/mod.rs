@@ -12,12 +12,16 @@
 //!          AXI4-Stream video: tdata RGB888 {R,B,G}, tvalid/tready, tuser (SOF), tlast (EOL)
 //! ```
 //!
-//! * [`colour_setup::ColourSetup`] (top `colour_setup`): one command in, planes for R, G, B (or the
-//!   normal's x, y, z) with one reciprocal, one TdbS record written at the triangle's index.
+//! * [`colour_setup::ColourSetup`] (top `colour_setup`): a pipeline taking a command every 4 cycles;
+//!   planes for R, G, B (or the normal's x, y, z) with one reciprocal, one TdbS record written at the
+//!   triangle's index 41 cycles later.
 //! * [`color_shader::ColorShader`] (top `cs`): scan-out, one pixel per clock, lossless back-pressure.
-//! * [`video_fifo::VideoFifo`]: the CS's 8-deep output FIFO (the skid buffer).
+//! * [`video_fifo::VideoFifo`]: the CS's 32-deep output FIFO (the skid buffer).
 //!
-//! The reciprocal is the RC's [`crate::rc::reciprocal::Reciprocal`] (25-step restoring division).
+//! Colour setup has its own reciprocal: the 25 restoring steps of `golden::format::reciprocal` as a
+//! chain of [`crate::common::DivStep`]s, one step per cycle, so that a new triangle can start every 4
+//! cycles. The RC's [`crate::rc::reciprocal::Reciprocal`] computes the same quotient one triangle at a
+//! time (27 cycles each) and is busy with the RC's own triangles, so it is not shared.
 //!
 //! Both memories (TdbS: 2^16 records of 424 bits, and the screen-size buffers) are outside the blocks,
 //! behind ports, because they do not fit FPGA block RAM; the testbenches model them.
@@ -27,6 +31,7 @@ pub mod gloss_square;
 pub mod light_unit;
 pub mod normalizer;
 pub mod plane_mul;
+pub mod plane_round;
 pub mod colour_setup;
 pub mod video_fifo;
 

@@ -20,6 +20,7 @@
 //! request (the RC never sends it): it returns `mant = 2^25 - 1`, `shift = 0`.
 
 use crate::common::{StreamIn, StreamOut};
+use crate::common::{DivStep, LeadingOne36};
 use rust_hdl::prelude::*;
 
 /// The divider's answer: `1/det = mant * 2^-(shift + 24)`.
@@ -58,52 +59,19 @@ pub struct Reciprocal {
     quo: DFF<Bits<25>>,
     shift: DFF<Bits<6>>,
     count: DFF<Bits<5>>,
-    // Priority encoder: smear the top set bit down, isolate it, encode it with six masks.
-    smear1: Signal<Local, Bits<36>>,
-    smear2: Signal<Local, Bits<36>>,
-    smear4: Signal<Local, Bits<36>>,
-    smear8: Signal<Local, Bits<36>>,
-    smear16: Signal<Local, Bits<36>>,
-    smear32: Signal<Local, Bits<36>>,
-    onehot: Signal<Local, Bits<36>>,
-    enc0: Signal<Local, Bits<6>>,
-    enc1: Signal<Local, Bits<6>>,
-    enc2: Signal<Local, Bits<6>>,
-    enc3: Signal<Local, Bits<6>>,
-    enc4: Signal<Local, Bits<6>>,
-    enc5: Signal<Local, Bits<6>>,
-    // One division step.
-    diff: Signal<Local, Bits<37>>,
-    quo_shifted: Signal<Local, Bits<25>>,
+    /// Normalisation: the divisor's leading one (where the partial remainder starts) and its index.
+    lead: LeadingOne36,
+    /// One division step.
+    step: DivStep,
     take: Signal<Local, Bit>,
     out_valid: Signal<Local, Bit>,
     out_mant: Signal<Local, Bits<25>>,
     out_shift: Signal<Local, Bits<6>>,
-    mask0: Constant<Bits<36>>,
-    mask1: Constant<Bits<36>>,
-    mask2: Constant<Bits<36>>,
-    mask3: Constant<Bits<36>>,
-    mask4: Constant<Bits<36>>,
-    mask5: Constant<Bits<36>>,
-    k1_6: Constant<Bits<6>>,
-    k2_6: Constant<Bits<6>>,
-    k4_6: Constant<Bits<6>>,
-    k8_6: Constant<Bits<6>>,
-    k16_6: Constant<Bits<6>>,
-    k32_6: Constant<Bits<6>>,
     k0_6: Constant<Bits<6>>,
     k1_5: Constant<Bits<5>>,
     k0_5: Constant<Bits<5>>,
     k_last: Constant<Bits<5>>,
-    k1_25: Constant<Bits<25>>,
     k0_25: Constant<Bits<25>>,
-    k1_1: Constant<Bits<1>>,
-}
-
-/// Bit j of the mask is set where bit `bit` of j is set: the encoder's OR-planes.
-fn encoder_mask(bit: u32) -> Bits<36> {
-    let m: u64 = (0..36u64).filter(|j| j >> bit & 1 == 1).map(|j| 1u64 << j).sum();
-    Bits::<36>::from(m)
 }
 
 impl Default for Reciprocal {
@@ -118,44 +86,17 @@ impl Default for Reciprocal {
             quo: Default::default(),
             shift: Default::default(),
             count: Default::default(),
-            smear1: Default::default(),
-            smear2: Default::default(),
-            smear4: Default::default(),
-            smear8: Default::default(),
-            smear16: Default::default(),
-            smear32: Default::default(),
-            onehot: Default::default(),
-            enc0: Default::default(),
-            enc1: Default::default(),
-            enc2: Default::default(),
-            enc3: Default::default(),
-            enc4: Default::default(),
-            enc5: Default::default(),
-            diff: Default::default(),
-            quo_shifted: Default::default(),
+            lead: Default::default(),
+            step: Default::default(),
             take: Default::default(),
             out_valid: Default::default(),
             out_mant: Default::default(),
             out_shift: Default::default(),
-            mask0: Constant::new(encoder_mask(0)),
-            mask1: Constant::new(encoder_mask(1)),
-            mask2: Constant::new(encoder_mask(2)),
-            mask3: Constant::new(encoder_mask(3)),
-            mask4: Constant::new(encoder_mask(4)),
-            mask5: Constant::new(encoder_mask(5)),
-            k1_6: Constant::new(1.into()),
-            k2_6: Constant::new(2.into()),
-            k4_6: Constant::new(4.into()),
-            k8_6: Constant::new(8.into()),
-            k16_6: Constant::new(16.into()),
-            k32_6: Constant::new(32.into()),
             k0_6: Constant::new(0.into()),
             k1_5: Constant::new(1.into()),
             k0_5: Constant::new(0.into()),
             k_last: Constant::new((RECIP_STEPS - 1).into()),
-            k1_25: Constant::new(1.into()),
             k0_25: Constant::new(0.into()),
-            k1_1: Constant::new(1.into()),
         }
     }
 }
@@ -164,41 +105,11 @@ impl Logic for Reciprocal {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, state, rem, den, quo, shift, count);
-        // Normalisation of the incoming determinant (used when a request is accepted).
-        self.smear1.next = self.request.data.val() | (self.request.data.val() >> self.k1_1.val());
-        self.smear2.next = self.smear1.val() | (self.smear1.val() >> self.k2_6.val());
-        self.smear4.next = self.smear2.val() | (self.smear2.val() >> self.k4_6.val());
-        self.smear8.next = self.smear4.val() | (self.smear4.val() >> self.k8_6.val());
-        self.smear16.next = self.smear8.val() | (self.smear8.val() >> self.k16_6.val());
-        self.smear32.next = self.smear16.val() | (self.smear16.val() >> self.k32_6.val());
-        self.onehot.next = self.smear32.val() ^ (self.smear32.val() >> self.k1_1.val());
-        self.enc0.next = self.k0_6.val();
-        self.enc1.next = self.k0_6.val();
-        self.enc2.next = self.k0_6.val();
-        self.enc3.next = self.k0_6.val();
-        self.enc4.next = self.k0_6.val();
-        self.enc5.next = self.k0_6.val();
-        if (self.onehot.val() & self.mask0.val()).any() {
-            self.enc0.next = self.k1_6.val();
-        }
-        if (self.onehot.val() & self.mask1.val()).any() {
-            self.enc1.next = self.k2_6.val();
-        }
-        if (self.onehot.val() & self.mask2.val()).any() {
-            self.enc2.next = self.k4_6.val();
-        }
-        if (self.onehot.val() & self.mask3.val()).any() {
-            self.enc3.next = self.k8_6.val();
-        }
-        if (self.onehot.val() & self.mask4.val()).any() {
-            self.enc4.next = self.k16_6.val();
-        }
-        if (self.onehot.val() & self.mask5.val()).any() {
-            self.enc5.next = self.k32_6.val();
-        }
-        // One restoring step.
-        self.diff.next = self.rem.q.val() - self.den.q.val();
-        self.quo_shifted.next = self.quo.q.val() << self.k1_1.val();
+        // Normalisation of the incoming determinant (used when a request is accepted), and one step.
+        self.lead.x.next = self.request.data.val();
+        self.step.rem.next = self.rem.q.val();
+        self.step.den.next = self.den.q.val();
+        self.step.quo.next = self.quo.q.val();
 
         // Ports are driven once, after the state machine, from locals: a default-then-override write
         // to a port would wake the parent's logic twice in an event-driven simulator (Icarus), and a
@@ -212,22 +123,16 @@ impl Logic for Reciprocal {
                 self.take.next = true;
                 if self.request.valid.val() {
                     self.den.d.next = bit_cast::<37, 36>(self.request.data.val());
-                    self.rem.d.next = bit_cast::<37, 36>(self.onehot.val());
-                    self.shift.d.next =
-                        self.enc0.val() | self.enc1.val() | self.enc2.val() | self.enc3.val() | self.enc4.val() | self.enc5.val();
+                    self.rem.d.next = bit_cast::<37, 36>(self.lead.onehot.val());
+                    self.shift.d.next = self.lead.index.val();
                     self.quo.d.next = self.k0_25.val();
                     self.count.d.next = self.k0_5.val();
                     self.state.d.next = RecipState::Run;
                 }
             }
             RecipState::Run => {
-                if self.rem.q.val() >= self.den.q.val() {
-                    self.rem.d.next = self.diff.val() << self.k1_1.val();
-                    self.quo.d.next = self.quo_shifted.val() | self.k1_25.val();
-                } else {
-                    self.rem.d.next = self.rem.q.val() << self.k1_1.val();
-                    self.quo.d.next = self.quo_shifted.val();
-                }
+                self.rem.d.next = self.step.rem_next.val();
+                self.quo.d.next = self.step.quo_next.val();
                 self.count.d.next = self.count.q.val() + self.k1_5.val();
                 if self.count.q.val() == self.k_last.val() {
                     self.state.d.next = RecipState::Done;

@@ -7,7 +7,7 @@ use super::frames::record;
 use super::replay::{lint, replay_iverilog, synth_ice40};
 use crate::common::{require_tools, scratch_dir, Rng};
 use golden::cycle::color_shader::{phong_config, CsConfigWrite, CsMemories, CS_PIPELINE_CYCLES};
-use golden::cycle::colour_setup::{SetupCmd, FLAT_CYCLES, SHADED_CYCLES};
+use golden::cycle::colour_setup::{SetupCmd, SETUP_INTERVAL, SETUP_LATENCY};
 use golden::format::{Plane, DEPTH_MAX};
 use golden::scene::builtin;
 use golden::format::{CS_GLOSS_LOG2_MAX, CS_LIGHTS, CS_MATERIALS};
@@ -167,16 +167,22 @@ fn colour_setup_writes_the_golden_tdbs_of_every_builtin_scene() {
 }
 
 #[test]
-fn colour_setup_takes_48_cycles_per_shaded_triangle_and_1_per_flat_one() {
+fn colour_setup_takes_a_triangle_every_4_cycles_and_writes_it_41_cycles_later() {
     let f = record("castle", Shading::Gouraud, 160, 100).unwrap();
     let cmds: Vec<SetupCmd> = f.chip.setups.iter().take(50).map(|c| SetupCmd::from_command(c).unwrap()).collect();
-    let run = setb::run_rtl_vs_model("colour_setup_throughput", &cmds, SetupDrive { gap_percent: 0, seed: 1 }, false).unwrap();
-    // Commands back to back: the k-th write is in cycle SHADED_CYCLES*(k+1); the run ends one cycle after the last.
-    assert_eq!(run.cycles, SHADED_CYCLES * cmds.len() as u64 + 1);
-    println!("colour setup, shaded: {} cycles for {} triangles = {} cycles/triangle", run.cycles - 1, cmds.len(), (run.cycles - 1) / cmds.len() as u64);
     let flat: Vec<SetupCmd> = cmds.iter().map(|c| SetupCmd { flat: true, flat_rgb: [1, 2, 3], ..*c }).collect();
-    let run = setb::run_rtl_vs_model("colour_setup_throughput_flat", &flat, SetupDrive { gap_percent: 0, seed: 1 }, false).unwrap();
-    assert_eq!(run.cycles, FLAT_CYCLES * flat.len() as u64 + 1);
+    for (what, cmds) in [("shaded", &cmds), ("flat", &flat)] {
+        let run = setb::run_rtl_vs_model(&format!("colour_setup_throughput_{what}"), cmds, SetupDrive { gap_percent: 0, seed: 1 }, false).unwrap();
+        // Commands back to back: taken every SETUP_INTERVAL cycles, the last written SETUP_LATENCY
+        // cycles after it was taken; the run ends one cycle after the last write.
+        let n = cmds.len() as u64;
+        assert_eq!(run.cycles, SETUP_INTERVAL * (n - 1) + SETUP_LATENCY + 1);
+        println!(
+            "colour setup, {what}: {} cycles for {n} triangles back to back = {:.2} cycles/triangle sustained, latency {SETUP_LATENCY}",
+            run.cycles - 1,
+            (run.cycles - 1 - SETUP_LATENCY) as f64 / (n - 1) as f64
+        );
+    }
 }
 
 // ------------------------------------------------------------------------------------------------
