@@ -80,6 +80,26 @@ impl PhaseCycles {
     }
 }
 
+/// How the host loop drives the streams: as fast as the chipset takes them (the default), or with
+/// random gaps before its commands (`rc_cmd`, `setup_cmd`) and random back-pressure on what it takes
+/// (`rc_result`, the video stream). Both RTL backends draw the same random numbers in the same order
+/// (xorshift64*, `common::Rng`), so their ports stay equal cycle for cycle.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct HostDrive {
+    pub seed: u64,
+    /// Percentage of cycles in which a command that could be offered is held back.
+    pub gap_percent: u64,
+    /// Percentage of cycles in which `rc_result.ready` and `video_tready` are low.
+    pub stall_percent: u64,
+}
+
+impl HostDrive {
+    /// Random gaps and stalls from `default_seed` (the `SEED` environment variable overrides it).
+    pub fn random(gap_percent: u64, stall_percent: u64, default_seed: u64) -> HostDrive {
+        HostDrive { seed: crate::common::Rng::new(default_seed).seed(), gap_percent, stall_percent }
+    }
+}
+
 /// A progress report: phase name, done, total.
 pub type Progress = Box<dyn FnMut(&str, u64, u64)>;
 
@@ -108,6 +128,8 @@ pub struct RtlChipset {
     vcd: Option<VCDProbe<BufWriter<File>>>,
     progress: Option<Progress>,
     vcd_scope: VcdScope,
+    /// How the host loop drives the streams.
+    pub drive: HostDrive,
 }
 
 /// What a VCD of the chipset holds.
@@ -230,12 +252,19 @@ impl RtlChipset {
             vcd,
             progress: None,
             vcd_scope: scope,
+            drive: HostDrive::default(),
         })
     }
 
     /// Close the VCD (flushing it); it is also closed when the simulation is dropped.
     pub fn finish_vcd(&mut self) {
         self.vcd = None;
+    }
+
+    /// Drive the streams with random gaps and back-pressure.
+    pub fn with_drive(mut self, d: HostDrive) -> RtlChipset {
+        self.drive = d;
+        self
     }
 
     /// Report progress through `f(phase, done, total)`.
@@ -477,18 +506,34 @@ impl Chipset for RtlChipset {
         let mut scan = ScanState::Wait;
         let mut pixels = 0usize;
         let work: u64 = jobs.iter().map(|j| self.screen.pixels() as u64 + 128 * j.tris.len() as u64).sum();
-        let (start, limit) = (self.cycle, self.cycle + self.budget(work));
+        let (start, limit) = (self.cycle, self.cycle + self.budget(work) * (1 + self.drive.gap_percent.max(self.drive.stall_percent) / 10));
+        let d = self.drive;
+        let mut rng = crate::common::Rng::new(d.seed);
+        let (mut rc_presenting, mut setup_presenting) = (false, false);
         while scan_f < nf {
             self.idle_inputs();
+            // Random gaps and stalls, drawn in this order every cycle (the Verilator harness does the same).
+            let rc_can = rc_f < nf && rc_next < frames[rc_f].words.len() && (rc_f == 0 || frames[rc_f - 1].scan_taken.is_some());
+            if rc_can && !rc_presenting {
+                rc_presenting = !(d.gap_percent > 0 && rng.chance(d.gap_percent));
+            }
+            if !queue.is_empty() && !setup_presenting {
+                setup_presenting = !(d.gap_percent > 0 && rng.chance(d.gap_percent));
+            }
+            let res_ready = !(d.stall_percent > 0 && rng.chance(d.stall_percent));
+            let video_ready = !(d.stall_percent > 0 && rng.chance(d.stall_percent));
+            self.uut.rc_result.ready.next = res_ready;
+            self.uut.video_tready.next = video_ready;
             // Upper pipeline: frame rc_f's commands, once the previous frame's scan-out has started.
-            let rc_offer = rc_f < nf && rc_next < frames[rc_f].words.len() && (rc_f == 0 || frames[rc_f - 1].scan_taken.is_some());
+            let rc_offer = rc_can && rc_presenting;
             if rc_offer {
                 self.uut.rc_cmd.valid.next = true;
                 self.uut.rc_cmd.data.next = frames[rc_f].words[rc_next];
                 frames[rc_f].start.get_or_insert(self.cycle);
             }
             // Lower pipeline: the queued colour-setup commands.
-            if let Some((f, c)) = queue.front() {
+            let setup_offer = !queue.is_empty() && setup_presenting;
+            if let (true, Some((f, c))) = (setup_offer, queue.front()) {
                 self.uut.setup_cmd.valid.next = true;
                 self.uut.setup_cmd.data.next = *c;
                 frames[*f].setup_first.get_or_insert(self.cycle);
@@ -510,7 +555,7 @@ impl Chipset for RtlChipset {
             self.low()?;
             let u = &self.uut;
             let rc_taken = rc_offer && u.rc_cmd.ready.val();
-            let setup_taken = !queue.is_empty() && u.setup_cmd.ready.val();
+            let setup_taken = setup_offer && u.setup_cmd.ready.val();
             let setup_busy = u.setup_busy.val() || u.t_we.val();
             let start_taken = scan == ScanState::Start && !u.scan_busy.val();
             let scan_busy = u.scan_busy.val();
@@ -518,8 +563,8 @@ impl Chipset for RtlChipset {
                 frames[res_f].z_reads += u.z_re.val() as u64;
                 frames[res_f].clear_writes += (u.id_we.val() && u.id_wr_data.val().to_u64() == 0) as u64;
             }
-            let result = u.rc_result.valid.val().then(|| u.rc_result.data.val());
-            let beat = if u.video_tvalid.val() {
+            let result = (u.rc_result.valid.val() && res_ready).then(|| u.rc_result.data.val());
+            let beat = if u.video_tvalid.val() && video_ready {
                 let (x, y) = (pixels % w, pixels / w);
                 if u.video_tuser.val() != (pixels == 0) {
                     return Err(format!("chipset: tuser is {} on pixel ({x},{y})", u.video_tuser.val()));
@@ -549,6 +594,7 @@ impl Chipset for RtlChipset {
             self.high()?;
             let now = self.cycle;
             if rc_taken {
+                rc_presenting = false;
                 let fr = &mut frames[rc_f];
                 if rc_next == 1 {
                     fr.first_tri_taken = Some(now - 1);
@@ -561,6 +607,7 @@ impl Chipset for RtlChipset {
             }
             if setup_taken {
                 queue.pop_front();
+                setup_presenting = false;
             }
             if eof {
                 let fr = &mut frames[res_f];

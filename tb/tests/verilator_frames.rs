@@ -8,7 +8,7 @@ use golden::format::Screen;
 use golden::render::{render, render_frames_with, render_with, Frame, RenderOptions};
 use golden::scene::builtin;
 use golden::shade::Shading;
-use tb::chipset::RtlChipset;
+use tb::chipset::{HostDrive, RtlChipset};
 use tb::common::{require_tools, vcd_path};
 use tb::verilator::VerilatorChipset;
 
@@ -125,13 +125,10 @@ fn polyhedron_cycles_per_phase_through_verilator_equal_the_rusthdl_simulations()
     }
 }
 
-#[test]
-fn five_verilated_frames_of_four_scenes_back_to_back_equal_golden_and_the_rusthdl_run_cycle_for_cycle() {
-    if verilator_missing("frames back to back through Verilator") {
-        return;
-    }
-    // The scenes of chipset_frames.rs's back-to-back test: each frame equals its golden frame, and
-    // every frame's cycle accounting equals the RustHDL run's.
+/// Five frames of four scenes and all three shadings back to back through the Verilated chipset, driven
+/// with `drive`: each frame equals its golden frame, and every frame's cycle accounting equals the
+/// RustHDL run's (the scenes of chipset_frames.rs's back-to-back test).
+fn five_frames_back_to_back(drive: HostDrive) {
     let screen = Screen::new(96, 64).unwrap();
     let scene = |n: &str| builtin::scene(n).unwrap();
     let jobs: Vec<(golden::scene::Mesh, RenderOptions)> =
@@ -143,18 +140,38 @@ fn five_verilated_frames_of_four_scenes_back_to_back_equal_golden_and_the_rusthd
             })
             .collect();
     let refs: Vec<(&golden::scene::Mesh, &RenderOptions)> = jobs.iter().map(|(m, o)| (m, o)).collect();
-    let mut vl = VerilatorChipset::new(screen, None).unwrap();
+    let mut vl = VerilatorChipset::new(screen, None).unwrap().with_drive(drive);
     let frames = render_frames_with(&refs, &mut vl).unwrap();
     for (k, ((mesh, opts), f)) in jobs.iter().zip(&frames).enumerate() {
         if let Some(d) = first_difference(&render(mesh, opts).unwrap(), f) {
-            panic!("frame {} ({} {:?}) through Verilator (golden vs Verilator): {d}", k + 1, mesh.name, opts.shading);
+            panic!("frame {} ({} {:?}) through Verilator (golden vs Verilator), {drive:?}: {d}", k + 1, mesh.name, opts.shading);
         }
     }
-    let mut rtl = RtlChipset::new(screen, None).unwrap();
+    let mut rtl = RtlChipset::new(screen, None).unwrap().with_drive(drive);
     render_frames_with(&refs, &mut rtl).unwrap();
-    assert_eq!(rtl.frame_phases, vl.frame_phases, "cycles per phase of every frame: RustHDL (left) vs Verilator (right)");
+    assert_eq!(rtl.frame_phases, vl.frame_phases, "cycles per phase of every frame, {drive:?}: RustHDL (left) vs Verilator (right)");
     assert_eq!(rtl.cycle, vl.cycle);
     assert_eq!(vl.frame_phases[2].clear, 0, "frame 3 needs no clear");
+    eprintln!("{drive:?}: {} cycles for five frames", vl.cycle);
+}
+
+#[test]
+fn five_verilated_frames_of_four_scenes_back_to_back_equal_golden_and_the_rusthdl_run_cycle_for_cycle() {
+    if verilator_missing("frames back to back through Verilator") {
+        return;
+    }
+    five_frames_back_to_back(HostDrive::default());
+}
+
+/// The same with random gaps before every command (RC and colour setup) and random back-pressure on
+/// every stream the host takes (RC results, video): the two pipelines and the scan-out then overlap in
+/// ever other ways, and the CS's output FIFO fills.
+#[test]
+fn five_frames_back_to_back_with_random_gaps_and_back_pressure_on_every_stream_equal_golden_in_both_simulations() {
+    if verilator_missing("frames back to back with random gaps") {
+        return;
+    }
+    five_frames_back_to_back(HostDrive::random(30, 40, 0xb2b));
 }
 
 #[test]
@@ -268,10 +285,12 @@ fn the_verilated_chipsets_port_waveforms_equal_the_rusthdl_simulations_at_every_
     let opts = RenderOptions::for_scene(&mesh, screen, Shading::Phong);
     let jobs = [(&mesh, &opts), (&mesh, &opts), (&mesh, &opts)];
     let (pr, pv) = (vcd_path("chipset_verilator", "polyhedron_16x8_rusthdl"), vcd_path("chipset_verilator", "polyhedron_16x8_verilator"));
-    let mut rtl = RtlChipset::new(screen, Some(pr.clone())).unwrap();
+    // Random gaps and back-pressure, so that every handshake's both sides show on the ports.
+    let drive = HostDrive::random(25, 25, 0x5eed);
+    let mut rtl = RtlChipset::new(screen, Some(pr.clone())).unwrap().with_drive(drive);
     render_frames_with(&jobs, &mut rtl).unwrap();
     rtl.finish_vcd();
-    let mut vl = VerilatorChipset::new(screen, Some(pv.clone())).unwrap();
+    let mut vl = VerilatorChipset::new(screen, Some(pv.clone())).unwrap().with_drive(drive);
     render_frames_with(&jobs, &mut vl).unwrap();
     vl.finish_vcd();
     let (a, b) = (parse_vcd(&std::fs::read_to_string(&pr).unwrap()), parse_vcd(&std::fs::read_to_string(&pv).unwrap()));

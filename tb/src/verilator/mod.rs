@@ -30,7 +30,7 @@
 //! (whose scope is `uut` and whose streams are sub-scopes `rc_cmd` with `data`, `valid`, `ready`), for
 //! a `vcd-diff` of the two. [`VcdScope::Full`] builds without the depth limit (every signal).
 
-use crate::chipset::{PhaseCycles, Progress, VcdScope};
+use crate::chipset::{HostDrive, PhaseCycles, Progress, VcdScope};
 use crate::common::workspace_target;
 use crate::cs::pack::{command_of, rgb_of};
 use crate::chipset::FrameRun;
@@ -197,6 +197,8 @@ pub struct VerilatorChipset {
     pub frame_phases: Vec<PhaseCycles>,
     /// Frames started since reset: frames 0 and 1 clear their bank, later ones find it cleared.
     frames_started: u64,
+    /// How the host loop drives the streams (as `RtlChipset`'s).
+    pub drive: HostDrive,
     ibuf_after_raster: Vec<u32>,
     zbuf_after_raster: Vec<u32>,
     vcd_open: bool,
@@ -267,6 +269,7 @@ impl VerilatorChipset {
             stderr,
             frame_phases: Vec::new(),
             frames_started: 0,
+            drive: HostDrive::default(),
             ibuf_after_raster: Vec::new(),
             zbuf_after_raster: Vec::new(),
             vcd_open: vcd.is_some(),
@@ -274,6 +277,12 @@ impl VerilatorChipset {
         };
         c.expect("READY")?;
         Ok(c)
+    }
+
+    /// Drive the streams with random gaps and back-pressure (the same as `RtlChipset::with_drive`).
+    pub fn with_drive(mut self, d: HostDrive) -> VerilatorChipset {
+        self.drive = d;
+        self
     }
 
     /// Report progress through `f(phase, done, total)`.
@@ -440,7 +449,10 @@ impl Chipset for VerilatorChipset {
         let n = self.screen.pixels();
         let work: u64 = jobs.iter().map(|j| n as u64 + 128 * j.tris.len() as u64).sum();
         let visible_bit = 1u32 << RcResult::default().get_my_offset_visible();
-        self.send(format!("run {} {visible_bit}\n", self.budget(work)).as_bytes(), &[])?;
+        let d = self.drive;
+        let seed = crate::common::Rng::new(d.seed).seed();
+        let budget = self.budget(work) * (1 + d.gap_percent.max(d.stall_percent) / 10);
+        self.send(format!("run {budget} {visible_bit} {seed} {} {}\n", d.gap_percent, d.stall_percent).as_bytes(), &[])?;
         let mut outs: Vec<Option<FrameOut>> = vec![None; nf];
         let mut host_error: Option<String> = None;
         loop {

@@ -22,7 +22,9 @@
 //   frame <n> <tdata> <phong> <c>\n + n RC command words of 6 x u32 (190 bits), then c Phong-constant
 //                           writes of 6 x u32 (kind 0 = light, 1 = material; address; slot; 96 data
 //                           bits): queue a frame (background tdata, Phong scan-out if set)
-//   run <budget>\n          run the queued frames back to back (the host loop of `RtlChipset::run`)
+//   run <budget> <visible_bit> <seed> <gap> <stall>\n
+//                           run the queued frames back to back (the host loop of `RtlChipset::run`,
+//                           with its random gaps and stalls: `HostDrive`, xorshift64* from `seed`)
 //   vcd_close\n             flush and close the VCD
 //   quit\n                  exit
 // During `run`, the harness asks for the host's lower pipeline: it writes `Q <frame> <position>\n` and
@@ -135,6 +137,18 @@ class Bench {
 
     // The host loop of RtlChipset::run (tb/src/chipset.rs), line by line.
     void run(uint64_t budget);
+    // HostDrive: random gaps before commands and stalls on what the host takes (percent), and the
+    // xorshift64* state of tb::common::Rng.
+    uint64_t rng = 1, gap = 0, stall = 0;
+    uint64_t next_random() {
+        uint64_t x = rng;
+        x ^= x >> 12;
+        x ^= x << 25;
+        x ^= x >> 27;
+        rng = x;
+        return x * 0x2545F4914F6CDD1Dull;
+    }
+    bool chance(uint64_t percent) { return next_random() % 100 < percent; }
 
   private:
     const uint32_t width, height;
@@ -269,18 +283,28 @@ void Bench::run(uint64_t budget) {
     tdata.reserve(w * h);
     Scan scan = Scan::Wait;
     const uint64_t start = cycle, limit = cycle + budget;
+    bool rc_presenting = false, setup_presenting = false;
     while (scan_f < nf) {
         idle_inputs();
+        // Random gaps and stalls, drawn in RtlChipset::run's order.
+        const bool rc_can = rc_f < nf && rc_next < frames[rc_f].words.size() / RC_WORDS &&
+                            (rc_f == 0 || frames[rc_f - 1].scan_taken >= 0);
+        if (rc_can && !rc_presenting) rc_presenting = !(gap > 0 && chance(gap));
+        if (!queue.empty() && !setup_presenting) setup_presenting = !(gap > 0 && chance(gap));
+        const bool res_ready = !(stall > 0 && chance(stall));
+        const bool video_ready = !(stall > 0 && chance(stall));
+        top->rc_result__024ready = res_ready;
+        top->video_tready = video_ready;
         // Upper pipeline: frame rc_f's commands, once the previous frame's scan-out has started.
-        const bool rc_offer = rc_f < nf && rc_next < frames[rc_f].words.size() / RC_WORDS &&
-                              (rc_f == 0 || frames[rc_f - 1].scan_taken >= 0);
+        const bool rc_offer = rc_can && rc_presenting;
         if (rc_offer) {
             top->rc_cmd__024valid = 1;
             for (int k = 0; k < RC_WORDS; k++) top->rc_cmd__024data[k] = frames[rc_f].words[rc_next * RC_WORDS + k];
             if (frames[rc_f].start < 0) frames[rc_f].start = (long long)cycle;
         }
         // Lower pipeline: the queued colour-setup commands.
-        if (!queue.empty()) {
+        const bool setup_offer = !queue.empty() && setup_presenting;
+        if (setup_offer) {
             top->setup_cmd__024valid = 1;
             for (int k = 0; k < SETUP_WORDS; k++) top->setup_cmd__024data[k] = queue.front().word[k];
             if (frames[queue.front().frame].setup_first < 0) frames[queue.front().frame].setup_first = (long long)cycle;
@@ -299,7 +323,7 @@ void Bench::run(uint64_t budget) {
         if (scan == Scan::Start) top->scan_start = 1;
         low();
         const bool rc_taken = rc_offer && top->rc_cmd__024ready;
-        const bool setup_taken = !queue.empty() && top->setup_cmd__024ready;
+        const bool setup_taken = setup_offer && top->setup_cmd__024ready;
         const bool setup_busy = top->setup_busy || top->t_we;
         const bool start_taken = scan == Scan::Start && !top->scan_busy;
         const bool scan_busy = top->scan_busy;
@@ -307,11 +331,11 @@ void Bench::run(uint64_t budget) {
             frames[res_f].z_reads += top->z_re ? 1 : 0;
             frames[res_f].clear_writes += (top->id_we && top->id_wr_data == 0) ? 1 : 0;
         }
-        const bool result = top->rc_result__024valid;
+        const bool result = top->rc_result__024valid && res_ready;
         const uint32_t r = top->rc_result__024data;
         bool beat = false;
         uint32_t word = 0;
-        if (top->video_tvalid) {
+        if (top->video_tvalid && video_ready) {
             const size_t x = pixels % w, y = pixels / w;
             if (bool(top->video_tuser) != (pixels == 0)) {
                 throw Failure{std::string("chipset: tuser is ") + (top->video_tuser ? "true" : "false") + " on pixel (" +
@@ -349,6 +373,7 @@ void Bench::run(uint64_t budget) {
         high();
         const long long now = (long long)cycle;
         if (rc_taken) {
+            rc_presenting = false;
             Frame& fr = frames[rc_f];
             if (rc_next == 1) fr.first_tri_taken = now - 1;
             fr.last_cmd_taken = now;
@@ -358,7 +383,10 @@ void Bench::run(uint64_t budget) {
                 rc_next = 0;
             }
         }
-        if (setup_taken) queue.pop_front();
+        if (setup_taken) {
+            queue.pop_front();
+            setup_presenting = false;
+        }
         if (eof) {
             Frame& fr = frames[res_f];
             fr.eof = now;
@@ -453,8 +481,8 @@ int main(int argc, char** argv) {
     std::vector<uint32_t> words;
     while (fgets(line, sizeof line, stdin)) {
         char cmd[32] = {0};
-        unsigned long long a = 0, b = 0, c = 0, d = 0;
-        const int got = sscanf(line, "%31s %llu %llu %llu %llu", cmd, &a, &b, &c, &d);
+        unsigned long long a = 0, b = 0, c = 0, d = 0, e = 0;
+        const int got = sscanf(line, "%31s %llu %llu %llu %llu %llu", cmd, &a, &b, &c, &d, &e);
         try {
             if (got == 5 && !strcmp(cmd, "frame")) {
                 Bench::Frame f;
@@ -463,8 +491,11 @@ int main(int argc, char** argv) {
                 f.background = uint32_t(b);
                 f.phong = c != 0;
                 bench.frames.push_back(std::move(f));
-            } else if (got == 3 && !strcmp(cmd, "run")) {
+            } else if (got == 6 && !strcmp(cmd, "run")) {
                 bench.visible_bit = uint32_t(b);
+                bench.rng = c ? c : 1;
+                bench.gap = d;
+                bench.stall = e;
                 bench.results_of.assign(bench.frames.size(), {});
                 try {
                     bench.run(a);
