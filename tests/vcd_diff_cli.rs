@@ -51,7 +51,7 @@ fn vcd_diff(a: &Path, b: &Path, extra: &[&str]) -> (i32, String) {
 /// The ports of `rc` (every one must be compared).
 const RC_PORTS: &[&str] = &[
     "cmd$data", "cmd$valid", "cmd$ready", "result$data", "result$valid", "result$ready", "z_re", "z_rd_addr", "z_we", "z_wr_addr", "z_wr_data",
-    "z_rd_data", "i_we", "i_wr_addr", "i_wr_data",
+    "z_rd_data", "i_we", "i_wr_addr", "i_wr_data", "i_rd_data",
 ];
 
 #[test]

@@ -1,34 +1,38 @@
 //! The Verilator backend: the generated Verilog of the `chipset` top (`hdl::chipset::verilog`),
 //! compiled by Verilator with the C++ harness `tb/verilator/chipset/harness.cpp`, behind
 //! `golden::render::Chipset`, so that the host program of the golden model drives the Verilog through
-//! seed 001's dual pipeline, as it drives the RustHDL simulation in [`crate::chipset::RtlChipset`].
+//! seed 001's two pipelines, frames back to back, as it drives the RustHDL simulation in
+//! [`crate::chipset::RtlChipset`].
 //!
 //! ```text
-//!   golden::render::render_with (host)                      verilated process (Vchipset)
-//!   +------------------------------+   stdin: commands    +------------------------------------+
-//!   | VerilatorChipset             |--------------------->| harness.cpp: phase loops, memories |
-//!   |  rasterize / colour_setup /  |   "raster n budget"  |  Z (W*H x 24), I (W*H x 16),       |
-//!   |  scanout                     |   + command words    |  TdbS (2^16 x 424, VlWide<14>)     |
-//!   |                              |<---------------------|   <-> chipset.v (top `chipset`)    |
-//!   +------------------------------+  stdout: results,    +------------------------------------+
-//!                                     buffers, pixels, cycles, progress
+//!   golden::render::render_frames_with (host)              verilated process (Vchipset)
+//!   +------------------------------+  stdin: "frame ..." + +-------------------------------------+
+//!   | VerilatorChipset::run        |  RC words, Phong      | harness.cpp: the host loop of       |
+//!   |   queues every frame, "run"  |  constants; "run"     | RtlChipset::run, memories:          |
+//!   |   answers "Q f p" with the   |--------------------->|  Z (W*H x 24), I (2 x W*H x 16),     |
+//!   |   host's setup command       |<---------------------|  TdbS (2 x 2^16 x 424, VlWide<14>)  |
+//!   |   (LowerPipeline::visible)   |  stdout: Q, results  |   <-> chipset.v (top `chipset`)     |
+//!   +------------------------------+  + buffers (R), pixels (O), cycle stamps (F), D, progress  |
+//!                                                         +-------------------------------------+
 //! ```
 //!
-//! The harness runs each phase's loop in C++ (one pipe round trip per phase, not per cycle) with the
-//! same command words (`crate::rc::bench::command_word`, `crate::cs::pack::command_of`), the same
-//! handshakes, the same memory model (synchronous, latency 1, read-before-write; the same garbage after
-//! reset) and the same cycle accounting as `RtlChipset`, so [`PhaseCycles`] of both backends are equal
-//! for the same frame (tested on `polyhedron`).
+//! The harness runs the whole clock loop in C++; it stops only to ask Rust for the colour-setup
+//! command of a triangle the RC reported visible (one pipe round trip per visible triangle), so the
+//! host's lower pipeline is the golden host program itself. It drives the same handshakes, in the same
+//! cycles, with the same random gaps and stalls ([`HostDrive`]), the same memory model (synchronous,
+//! latency 1, read-before-write; the same garbage after reset) and the same cycle stamps as
+//! `RtlChipset`, so [`PhaseCycles`] of both backends are equal for the same frames (tested).
 //!
 //! The executable is built once per screen size and trace kind into
 //! `target/verilator/chipset_<W>x<H>[_trace|_trace_full]/` and reused while the hash of the Verilog,
 //! the harness, the Verilator flags and `verilator --version` is unchanged (written in `hash` there).
 //!
 //! VCD: with a path, the harness is built with `--trace --trace-depth 1` (and [`PORTS_VLT`]) and dumps
-//! the 46 top-level ports only (scope `uut`, `$` in port names as in the Verilog: `rc_cmd$data`), at time 10*cycle with the clock
-//! low and 10*cycle + 5 after the rising edge: the same instants as `RtlChipset`'s VCD of the same ports
-//! (whose scope is `uut` and whose streams are sub-scopes `rc_cmd` with `data`, `valid`, `ready`), for
-//! a `vcd-diff` of the two. [`VcdScope::Full`] builds without the depth limit (every signal).
+//! the 53 top-level ports only (scope `uut`, `$` in port names as in the Verilog: `rc_cmd$data`), at
+//! time 10*cycle with the clock low and 10*cycle + 5 after the rising edge: the same instants as
+//! `RtlChipset`'s VCD of the same ports (whose scope is `uut` and whose streams are sub-scopes `rc_cmd`
+//! with `data`, `valid`, `ready`), for a `vcd-diff` of the two. [`VcdScope::Full`] builds without the
+//! depth limit (every signal).
 
 use crate::chipset::{HostDrive, PhaseCycles, Progress, VcdScope};
 use crate::common::workspace_target;
