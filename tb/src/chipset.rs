@@ -100,6 +100,23 @@ impl HostDrive {
     }
 }
 
+/// Five frames of four built-in scenes in all three shadings, for runs back to back: castle Gouraud,
+/// dolphins flat, the teapot (grid 4) Phong, the polyhedron Gouraud, castle Phong. A frame that read the
+/// other bank, a TdbS record of the frame before (the same index is another triangle in another scene),
+/// a pixel the clear-behind missed or a stale depth taken for a valid one would differ from its golden
+/// frame.
+pub fn mixed_frames(screen: Screen) -> Vec<(golden::scene::Mesh, golden::render::RenderOptions)> {
+    use golden::scene::builtin;
+    let scene = |n: &str| builtin::scene(n).expect("a built-in scene");
+    [(scene("castle"), Shading::Gouraud), (scene("dolphins"), Shading::Flat), (builtin::teapot(4), Shading::Phong), (builtin::polyhedron(), Shading::Gouraud), (scene("castle"), Shading::Phong)]
+        .into_iter()
+        .map(|(m, s)| {
+            let o = golden::render::RenderOptions::for_scene(&m, screen, s);
+            (m, o)
+        })
+        .collect()
+}
+
 /// A progress report: phase name, done, total.
 pub type Progress = Box<dyn FnMut(&str, u64, u64)>;
 

@@ -7,7 +7,7 @@ use golden::render::{render, render_frames_with, render_with, Frame, RenderOptio
 use golden::scene::{builtin, Mesh};
 use golden::format::Screen;
 use golden::shade::Shading;
-use tb::chipset::RtlChipset;
+use tb::chipset::{mixed_frames, RtlChipset};
 
 fn first_difference(what: &str, a: &[u32], b: &[u32], w: u32) -> Option<String> {
     let i = (0..a.len()).find(|&i| a[i] != b[i])?;
@@ -87,26 +87,13 @@ fn a_flat_shaded_frame_through_the_rtl_chipset_equals_the_golden_frame() {
     assert_rtl_frame_equals_golden(&builtin::teapot(4), Shading::Flat);
 }
 
-/// Five frames of four different scenes and all three shadings back to back in one run on one
-/// chipset: the RC draws each frame into one I-buffer and TdbS bank while the CS scans the previous
-/// frame out of the other. A frame that read the other bank, a TdbS entry of the frame before (the
-/// same index is another triangle in another scene), a pixel the clear-behind missed or a stale depth
-/// taken for a valid one would make a frame differ from its golden frame.
-pub fn back_to_back_frames(screen: Screen) -> Vec<(Mesh, RenderOptions)> {
-    let scene = |n: &str| builtin::scene(n).unwrap();
-    [(scene("castle"), Shading::Gouraud), (scene("dolphins"), Shading::Flat), (builtin::teapot(4), Shading::Phong), (builtin::polyhedron(), Shading::Gouraud), (scene("castle"), Shading::Phong)]
-        .into_iter()
-        .map(|(m, s)| {
-            let o = RenderOptions::for_scene(&m, screen, s);
-            (m, o)
-        })
-        .collect()
-}
-
+/// Five frames of four scenes back to back in one run on one chipset (`tb::chipset::mixed_frames`): the
+/// RC draws each frame into one I-buffer and TdbS bank while the CS scans the previous frame out of the
+/// other.
 #[test]
 fn five_frames_of_four_scenes_back_to_back_each_equal_their_golden_frame() {
     let screen = Screen::new(96, 64).unwrap();
-    let jobs = back_to_back_frames(screen);
+    let jobs = mixed_frames(screen);
     let refs: Vec<(&Mesh, &RenderOptions)> = jobs.iter().map(|(m, o)| (m, o)).collect();
     let mut chip = RtlChipset::new(screen, None).unwrap();
     let frames = render_frames_with(&refs, &mut chip).unwrap();

@@ -8,7 +8,7 @@ use golden::format::Screen;
 use golden::render::{render, render_frames_with, render_with, Frame, RenderOptions};
 use golden::scene::builtin;
 use golden::shade::Shading;
-use tb::chipset::{HostDrive, RtlChipset};
+use tb::chipset::{mixed_frames, HostDrive, RtlChipset};
 use tb::common::{require_tools, vcd_path};
 use tb::verilator::VerilatorChipset;
 
@@ -127,18 +127,10 @@ fn polyhedron_cycles_per_phase_through_verilator_equal_the_rusthdl_simulations()
 
 /// Five frames of four scenes and all three shadings back to back through the Verilated chipset, driven
 /// with `drive`: each frame equals its golden frame, and every frame's cycle accounting equals the
-/// RustHDL run's (the scenes of chipset_frames.rs's back-to-back test).
+/// RustHDL run's (`tb::chipset::mixed_frames`).
 fn five_frames_back_to_back(drive: HostDrive) {
     let screen = Screen::new(96, 64).unwrap();
-    let scene = |n: &str| builtin::scene(n).unwrap();
-    let jobs: Vec<(golden::scene::Mesh, RenderOptions)> =
-        [(scene("castle"), Shading::Gouraud), (scene("dolphins"), Shading::Flat), (builtin::teapot(4), Shading::Phong), (builtin::polyhedron(), Shading::Gouraud), (scene("castle"), Shading::Phong)]
-            .into_iter()
-            .map(|(m, s)| {
-                let o = RenderOptions::for_scene(&m, screen, s);
-                (m, o)
-            })
-            .collect();
+    let jobs = mixed_frames(screen);
     let refs: Vec<(&golden::scene::Mesh, &RenderOptions)> = jobs.iter().map(|(m, o)| (m, o)).collect();
     let mut vl = VerilatorChipset::new(screen, None).unwrap().with_drive(drive);
     let frames = render_frames_with(&refs, &mut vl).unwrap();
