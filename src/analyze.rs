@@ -22,13 +22,7 @@ use std::ffi::OsString;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-/// Print a line to stdout; a closed pipe (`| head`) ends the output quietly instead of panicking.
-macro_rules! say {
-    ($($t:tt)*) => {{
-        use std::io::Write as _;
-        let _ = writeln!(std::io::stdout(), $($t)*);
-    }};
-}
+use crate::say;
 
 #[derive(clap::Args, Debug)]
 pub struct AnalyzeArgs {

@@ -2,7 +2,7 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use golden::format::{Screen, INDEX_BITS_DEFAULT};
-use golden::host::Camera;
+use golden::host::{Camera, CAMERA_RANGE};
 use golden::raster::{CullMode, FrontFace};
 use golden::render::RenderOptions;
 use golden::scene::{builtin, obj, Mesh, Winding};
@@ -78,9 +78,9 @@ pub struct RenderArgs {
     /// A Wavefront OBJ file to render instead of a built-in scene.
     #[arg(long)]
     pub obj: Option<PathBuf>,
-    /// Teapot tessellation (GLUT's grid; 14 as glutSolidTeapot).
-    #[arg(long, default_value_t = 14)]
-    pub grid: u32,
+    /// Teapot tessellation (GLUT's grid, 1..=64; default 14 as glutSolidTeapot). Only with --scene teapot.
+    #[arg(long)]
+    pub grid: Option<u32>,
     /// Image size WxH (each 1..=1024).
     #[arg(long, default_value = "320x200")]
     pub size: String,
@@ -110,21 +110,21 @@ pub struct RenderArgs {
     /// Front-face winding. Default: the scene's own (ccw; cw for GLUT's teapot, which GLUT emits clockwise).
     #[arg(long, value_enum)]
     pub front_face: Option<FrontArg>,
-    /// Triangle-index width in bits (0 is reserved for background).
-    #[arg(long, default_value_t = INDEX_BITS_DEFAULT)]
-    pub index_bits: u32,
+    /// Triangle-index width in bits (0 is reserved for background; default 16). Only with --arch index.
+    #[arg(long)]
+    pub index_bits: Option<u32>,
     /// Output directory.
     #[arg(long, default_value = "out")]
     pub out: PathBuf,
     /// PROOF: object processors in the OPP (default: as many as the frame needs with OP reuse).
     #[arg(long)]
     pub ops: Option<usize>,
-    /// PROOF: FIFO depth of each object processor, in list slots.
-    #[arg(long, default_value_t = 1)]
-    pub fifo_depth: usize,
+    /// PROOF: FIFO depth of each object processor, in list slots (default 1).
+    #[arg(long)]
+    pub fifo_depth: Option<usize>,
     /// PROOF: filter area, 1x1 (default) or 2x2 pixels.
-    #[arg(long, default_value = "1x1")]
-    pub filter: String,
+    #[arg(long)]
+    pub filter: Option<String>,
     /// Rendering architecture.
     #[arg(long, value_enum, default_value_t = ArchArg::Index)]
     pub arch: ArchArg,
@@ -171,13 +171,16 @@ fn parse_vec3(name: &str, s: &str) -> Result<[f64; 3], String> {
 /// Load the scene the arguments name.
 pub fn load_scene(args: &RenderArgs) -> Result<Mesh, String> {
     match (&args.scene, &args.obj) {
+        (_, Some(path)) if args.grid.is_some() => Err(format!("--grid applies to --scene teapot only (GLUT's tessellation), not to {}", path.display())),
         (_, Some(path)) => obj::load_obj(path),
         (Some(name), None) if name == "teapot" => {
-            if !(1..=64).contains(&args.grid) {
-                return Err(format!("--grid {} is not in 1..=64", args.grid));
+            let grid = args.grid.unwrap_or(builtin::TEAPOT_GRID);
+            if !(1..=64).contains(&grid) {
+                return Err(format!("--grid {grid} is not in 1..=64"));
             }
-            Ok(builtin::teapot(args.grid))
+            Ok(builtin::teapot(grid))
         }
+        (Some(name), None) if args.grid.is_some() => Err(format!("--grid applies to --scene teapot only (GLUT's tessellation); {name} has its own triangles")),
         (Some(name), None) => builtin::scene(name),
         (None, None) => Err(format!("say what to render: --scene NAME (one of {}) or --obj FILE", builtin::SCENES.join(", "))),
     }
@@ -187,13 +190,30 @@ pub fn load_scene(args: &RenderArgs) -> Result<Mesh, String> {
 pub fn render_options(args: &RenderArgs, mesh: &Mesh) -> Result<RenderOptions, String> {
     let screen = parse_size(&args.size)?;
     let up = parse_vec3("up", &args.up)?;
+    if !(args.fovy.is_finite() && args.fovy > 0.0 && args.fovy < 180.0) {
+        return Err(format!("--fovy {:?}: the vertical field of view must be in (0, 180) degrees", args.fovy));
+    }
     let mut camera = Camera::framing_aspect(mesh, [0.3, 0.45, 1.0], args.fovy, screen.width as f64 / screen.height as f64);
     camera.up = up;
+    let in_range = |name: &str, p: [f64; 3]| -> Result<[f64; 3], String> {
+        match p.iter().find(|v| v.abs() > CAMERA_RANGE) {
+            Some(v) => Err(format!("--{name} {}: {v:e} is outside +-{CAMERA_RANGE:e}, the range of camera positions", p.map(|c| format!("{c:?}")).join(","))),
+            None => Ok(p),
+        }
+    };
     if let Some(c) = &args.center {
-        camera.center = parse_vec3("center", c)?;
+        camera.center = in_range("center", parse_vec3("center", c)?)?;
+    }
+    if args.eye.is_none() && camera.eye.iter().any(|v| v.abs() > CAMERA_RANGE) {
+        return Err(format!(
+            "--fovy {:?}: the default view would put the eye {:.3e} away to frame the whole model in so narrow a field; \
+             camera positions are limited to +-{CAMERA_RANGE:e}: use a wider --fovy or give --eye",
+            args.fovy,
+            camera.eye.iter().fold(0.0f64, |m, v| m.max(v.abs()))
+        ));
     }
     if let Some(e) = &args.eye {
-        camera.eye = parse_vec3("eye", e)?;
+        camera.eye = in_range("eye", parse_vec3("eye", e)?)?;
         let (n, f) = Camera::near_far_for(mesh, camera.eye);
         camera.near = n;
         camera.far = f;
@@ -226,7 +246,7 @@ pub fn render_options(args: &RenderArgs, mesh: &Mesh) -> Result<RenderOptions, S
             CullArg::None => CullMode::None,
         },
         front,
-        index_bits: args.index_bits,
+        index_bits: args.index_bits.unwrap_or(INDEX_BITS_DEFAULT),
         ..RenderOptions::for_scene(mesh, screen, shading)
     })
 }
@@ -245,7 +265,13 @@ pub fn run(cli: Cli) -> Result<(), String> {
 fn run_render(args: &RenderArgs) -> Result<(), String> {
     let mesh = load_scene(args)?;
     let opts = render_options(args, &mesh)?;
+    let proof_only = [("--ops", args.ops.is_some()), ("--fifo-depth", args.fifo_depth.is_some()), ("--filter", args.filter.is_some())];
     match args.arch {
+        ArchArg::Index if proof_only.iter().any(|o| o.1) => {
+            let given: Vec<&str> = proof_only.iter().filter(|o| o.1).map(|o| o.0).collect();
+            Err(format!("{} applies to --arch proof only", given.join(", ")))
+        }
+        ArchArg::Proof if args.index_bits.is_some() => Err("--index-bits applies to --arch index only (PROOF keeps no triangle index)".into()),
         ArchArg::Proof if args.frames != 1 => Err("--frames applies to --arch index (the chipset); PROOF renders one frame".into()),
         ArchArg::Proof => crate::proof::run_render(args, &mesh, &opts),
         ArchArg::Index => crate::render::run_render(args, &mesh, &opts),

@@ -589,6 +589,22 @@ pub fn run(args: &FpgaArgs) -> Result<(), String> {
     if args.timeout == 0 {
         return Err("--timeout must be at least 1 second".into());
     }
+    // The output is checked before an hour of synthesis: a Markdown name (the JSON goes beside it with
+    // the extension .json), in a folder that can be created and written.
+    let (dir, name) = match (args.out.parent(), args.out.file_name()) {
+        (Some(d), Some(n)) => (if d.as_os_str().is_empty() { Path::new(".") } else { d }, n.to_string_lossy().to_string()),
+        _ => return Err(format!("--out {} is not a file path", args.out.display())),
+    };
+    if Path::new(&name).extension().and_then(|e| e.to_str()) != Some("md") {
+        return Err(format!(
+            "--out {}: name the Markdown file (ending in .md); the JSON is written beside it with the extension .json",
+            args.out.display()
+        ));
+    }
+    std::fs::create_dir_all(dir).map_err(|e| format!("--out {}: cannot create {}: {e}", args.out.display(), dir.display()))?;
+    let probe = dir.join(format!(".fpga-report-probe-{}", std::process::id()));
+    std::fs::write(&probe, b"").map_err(|e| format!("--out {}: cannot write in {}: {e}", args.out.display(), dir.display()))?;
+    let _ = std::fs::remove_file(&probe);
     let devices = if args.device.is_empty() { vec![Device::Up5k, Device::Hx8k, Device::Ecp5_45k] } else { args.device.clone() };
     let tools = PnrTools::find(&devices)?;
     let t0 = Instant::now();
@@ -599,11 +615,6 @@ pub fn run(args: &FpgaArgs) -> Result<(), String> {
         rows.extend(report_top(top, &devices, &tools, args, &dir)?);
     }
     let md = markdown(&rows, &tools, args, t0.elapsed().as_secs_f64());
-    let (dir, name) = match (args.out.parent(), args.out.file_name()) {
-        (Some(d), Some(n)) => (if d.as_os_str().is_empty() { Path::new(".") } else { d }, n.to_string_lossy().to_string()),
-        _ => return Err(format!("--out {} is not a file path", args.out.display())),
-    };
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let path = crate::output::write_atomic(dir, &name, md.as_bytes())?;
     let json_name = Path::new(&name).with_extension("json").to_string_lossy().to_string();
     let jpath = crate::output::write_atomic(dir, &json_name, json(&rows).as_bytes())?;

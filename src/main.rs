@@ -15,20 +15,43 @@ mod vcd_diff;
 mod verilog;
 
 use clap::Parser;
+use std::io::Write as _;
+use std::sync::Mutex;
 
-/// Print a line to stdout; a closed pipe (e.g. `| head`) is not an error worth a panic.
+/// The first error in writing standard output, reported when the command ends. A closed pipe (e.g.
+/// `| head`) is not an error: the reader wanted no more.
+static STDOUT_ERROR: Mutex<Option<String>> = Mutex::new(None);
+
+/// Keep the first error of a write to standard output (see [`STDOUT_ERROR`]).
+pub fn note_stdout(r: std::io::Result<()>) {
+    if let Err(e) = r {
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            let mut first = STDOUT_ERROR.lock().unwrap_or_else(|p| p.into_inner());
+            first.get_or_insert_with(|| e.to_string());
+        }
+    }
+}
+
+/// Print a line to stdout; a failed write makes the command fail at its end (a full disk behind a
+/// redirection must not look like success), a closed pipe does not.
 #[macro_export]
 macro_rules! say {
     ($($t:tt)*) => {{
         use std::io::Write;
-        let _ = writeln!(std::io::stdout(), $($t)*);
+        $crate::note_stdout(writeln!(std::io::stdout(), $($t)*));
     }};
 }
 
 fn main() {
     let args = cli::Cli::parse();
-    if let Err(e) = cli::run(args) {
+    let result = cli::run(args);
+    note_stdout(std::io::stdout().flush());
+    if let Err(e) = result {
         eprintln!("error: {e}");
+        std::process::exit(1);
+    }
+    if let Some(e) = STDOUT_ERROR.lock().unwrap_or_else(|p| p.into_inner()).take() {
+        eprintln!("error: cannot write to standard output: {e}");
         std::process::exit(1);
     }
 }

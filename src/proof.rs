@@ -29,9 +29,10 @@ fn parse_filter(s: &str) -> Result<FilterArea, String> {
 }
 
 pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<(), String> {
-    let area = parse_filter(&args.filter)?;
-    if !(1..=64).contains(&args.fifo_depth) {
-        return Err(format!("--fifo-depth {} is not in 1..=64", args.fifo_depth));
+    let area = parse_filter(args.filter.as_deref().unwrap_or("1x1"))?;
+    let fifo_depth = args.fifo_depth.unwrap_or(1);
+    if !(1..=64).contains(&fifo_depth) {
+        return Err(format!("--fifo-depth {fifo_depth} is not in 1..=64"));
     }
     if args.vcd && args.backend != BackendArg::Rtl {
         return Err("--vcd needs --backend rtl".into());
@@ -55,7 +56,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     let (lists, cycles, backend, image, stage_cycles) = match args.backend {
         BackendArg::Golden => {
             let lists = object_lists(scene.screen, &scene.objects);
-            let run = run_opp(scene.screen, &scene.objects, n_ops, args.fifo_depth, None)?;
+            let run = run_opp(scene.screen, &scene.objects, n_ops, fifo_depth, None)?;
             if run.lists != lists {
                 return Err("internal error: the OPP cycle model's lists differ from the algorithmic model's".into());
             }
@@ -70,7 +71,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
                 std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create output directory {}: {e}", args.out.display()))?;
                 Ok(Some(args.out.join(name)))
             };
-            let (lists, run) = tb::proof::backend::opp_lists_rtl(&scene, n_ops, args.fifo_depth, vcd_of("frame.vcd")?.as_deref())?;
+            let (lists, run) = tb::proof::backend::opp_lists_rtl(&scene, n_ops, fifo_depth, vcd_of("frame.vcd")?.as_deref())?;
             let (shaded, shade_cycles) = tb::proof::backend::shade_slots_rtl(&scene, &lists, vcd_of("shade.vcd")?.as_deref())?;
             let filter_vcd = vcd_of("filter.vcd")?;
             let (rgb, covered, filter_cycles) = match area {
@@ -118,7 +119,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     ];
     crate::say!(
         "{} (PROOF, {backend}): {}x{}, {} objects, {} OPs needed with reuse, OPP of {} OPs with FIFO depth {}: {} cycles for {} pixels",
-        mesh.name, w, h, stats.setup.objects, stats.ops_needed, n_ops, args.fifo_depth, cycles.cycles, cycles.pixels
+        mesh.name, w, h, stats.setup.objects, stats.ops_needed, n_ops, fifo_depth, cycles.cycles, cycles.pixels
     );
     crate::say!(
         "  {} list entries, longest list {}, {} pixels anti-aliased; {:.3} s",

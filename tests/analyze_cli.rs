@@ -126,3 +126,30 @@ fn bad_arguments_give_errors_naming_the_problem() {
     std::fs::write(&file, b"x").unwrap();
     assert_clean_error(&["analyze", "--scene", "polyhedron", "--level", "low", "--out", file.to_str().unwrap()], "cannot create");
 }
+
+/// A failed write to standard output is an error (issue 18: `analyze --json > /dev/full` exited 0); a
+/// reader that stops early (`| head`) is not.
+#[test]
+fn a_full_disk_behind_standard_output_is_an_error_and_a_closed_pipe_is_not() {
+    let full = std::fs::OpenOptions::new().write(true).open("/dev/full").expect("/dev/full (Linux)");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_idxrender"))
+        .args(["analyze", "--scene", "polyhedron", "--json"])
+        .stdout(full)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success(), "exit 0 although nothing could be written");
+    assert!(err.contains("cannot write to standard output") && !err.contains("panicked"), "{err}");
+    // The reader closes the pipe after the first bytes: the command still succeeds.
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_idxrender"))
+        .args(["analyze", "--scene", "polyhedron", "--json"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 1];
+    std::io::Read::read_exact(child.stdout.as_mut().unwrap(), &mut first).unwrap();
+    drop(child.stdout.take());
+    let o = child.wait_with_output().unwrap();
+    assert!(o.status.success(), "a closed pipe made the command fail: {}", String::from_utf8_lossy(&o.stderr));
+}

@@ -94,6 +94,35 @@ fn bad_arguments_give_errors_naming_the_problem() {
     assert_clean_error(&["render", "--scene", "teapot", "--bogus"], "bogus");
 }
 
+/// Camera values that used to be reported as something else (issue 18): a zero or vanishing field of
+/// view, and positions whose squares overflow f64.
+#[test]
+fn camera_errors_name_the_argument_at_fault() {
+    let o = temp_dir("camera");
+    let o = o.to_str().unwrap();
+    // Was "must be finite numbers" (the default view divided by tan(0)).
+    assert_clean_error(&["render", "--scene", "teapot", "--fovy", "0", "--out", o], "--fovy 0.0: the vertical field of view must be in (0, 180)");
+    // Was "up is zero or parallel to the viewing direction".
+    assert_clean_error(&["render", "--scene", "teapot", "--fovy", "1e-300", "--out", o], "--fovy 1e-300: the default view would put the eye");
+    // Was "must be finite numbers" (the far plane overflowed).
+    assert_clean_error(&["render", "--scene", "teapot", "--eye", "1e200,0,0", "--out", o], "--eye 1e200,0.0,0.0: 1e200 is outside +-1e15");
+    assert_clean_error(&["render", "--scene", "teapot", "--center", "0,-2e16,0", "--out", o], "--center");
+}
+
+/// Options that do not apply to what is rendered are errors, not ignored in silence (issue 18).
+#[test]
+fn options_that_do_not_apply_are_errors() {
+    let o = temp_dir("apply");
+    let o = o.to_str().unwrap();
+    assert_clean_error(&["render", "--scene", "castle", "--grid", "3", "--out", o], "--grid applies to --scene teapot only");
+    assert_clean_error(&["render", "--scene", "polyhedron", "--ops", "4", "--out", o], "--ops applies to --arch proof only");
+    assert_clean_error(&["render", "--scene", "polyhedron", "--fifo-depth", "2", "--filter", "2x2", "--out", o], "--fifo-depth, --filter applies to --arch proof only");
+    assert_clean_error(&["render", "--scene", "polyhedron", "--arch", "proof", "--index-bits", "12", "--out", o], "--index-bits applies to --arch index only");
+    // The defaults still apply where the option belongs.
+    let (ok, _, err) = run(&["render", "--scene", "teapot", "--grid", "2", "--size", "32x20", "--out", o]);
+    assert!(ok, "{err}");
+}
+
 #[test]
 fn more_triangles_than_the_index_width_allows_is_an_error() {
     let o = temp_dir("index");

@@ -65,3 +65,21 @@ fn fpga_report_rejects_an_unknown_block() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("unknown block 'nosuch'"), "{err}");
 }
+
+/// `--out` is checked before any synthesis (issue 18: `--out report.json` used to write the JSON over the
+/// Markdown name, and a bad folder was found only after the tools had run).
+#[test]
+fn fpga_report_checks_its_output_path_before_any_synthesis() {
+    let dir = scratch("fpga_report_out");
+    let run = |out: &std::path::Path| {
+        let o = Command::new(env!("CARGO_BIN_EXE_idxrender")).args(["fpga-report", "--block", "chipset", "--out"]).arg(out).output().unwrap();
+        (o.status.success(), String::from_utf8_lossy(&o.stderr).to_string())
+    };
+    let (ok, err) = run(&dir.join("report.json"));
+    assert!(!ok && err.contains("name the Markdown file (ending in .md)"), "{err}");
+    assert!(!dir.join("report.json").exists() && !dir.join("report.md").exists());
+    let file = dir.join("a-file");
+    std::fs::write(&file, "not a folder").unwrap();
+    let (ok, err) = run(&file.join("r.md"));
+    assert!(!ok && err.contains("--out") && err.contains("cannot create"), "{err}");
+}

@@ -92,10 +92,22 @@ impl Camera {
     }
 
     /// Reject cameras that make no image (the CLI reports these as argument errors).
+    /// Positions beyond [`CAMERA_RANGE`] are refused: their squared distances overflow f64.
     pub fn validate(&self) -> Result<(), String> {
         let all = [self.eye, self.center, self.up].concat();
         if all.iter().any(|v| !v.is_finite()) || !self.near.is_finite() || !self.far.is_finite() || !self.fovy_deg.is_finite() {
             return Err("camera: eye, center, up, near, far and fovy must be finite numbers".into());
+        }
+        if !(self.fovy_deg > 0.0 && self.fovy_deg < 180.0) {
+            return Err(format!("camera: fovy {} is not in (0, 180) degrees", self.fovy_deg));
+        }
+        for (what, p) in [("eye", self.eye), ("center", self.center)] {
+            if p.iter().any(|v| v.abs() > CAMERA_RANGE) {
+                return Err(format!(
+                    "camera: {what} ({}, {}, {}) is outside +-{CAMERA_RANGE:e}: f64 cannot resolve the view from there",
+                    p[0], p[1], p[2]
+                ));
+            }
         }
         let f = sub(self.center, self.eye);
         if dot(f, f) == 0.0 {
@@ -104,9 +116,6 @@ impl Camera {
         let s = cross(normalize(f), normalize(self.up));
         if dot(self.up, self.up) == 0.0 || dot(s, s) < 1e-12 {
             return Err("camera: up is zero or parallel to the viewing direction".into());
-        }
-        if !(self.fovy_deg > 0.0 && self.fovy_deg < 180.0) {
-            return Err(format!("camera: fovy {} is not in (0, 180) degrees", self.fovy_deg));
         }
         if !(self.near > 0.0 && self.far > self.near) {
             return Err(format!("camera: need 0 < near < far, got near {} far {}", self.near, self.far));
@@ -126,6 +135,10 @@ impl Camera {
         ]
     }
 }
+
+/// The largest camera coordinate accepted (`Camera::validate`): squares of differences stay far below
+/// f64's range, and a scene of ordinary size is still resolved from that far.
+pub const CAMERA_RANGE: f64 = 1e15;
 
 /// One directional light, its direction given in eye space (towards the light) and its intensity.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
