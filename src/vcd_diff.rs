@@ -18,8 +18,11 @@
 //! interface scopes below it (no sub-scopes, no clock: the port structs), not those of child blocks.
 //! A flat trace (Icarus `$dumpvars(1, dut)`, Verilator) cannot tell ports from the top module's
 //! nets, so with two flat traces every common name is compared. With `--signals`, exactly those.
-//! Exit status: 0 when equal, 1 with a report of the first difference (cycle, time in each file,
-//! signal, both values), 2 when a trace cannot be read or a named signal is missing.
+//! A port of one trace missing from the other is a difference (for two flat traces, any name in one
+//! only); real-valued signals are compared by their values. Exit status: 0 when equal, 1 with a
+//! report of the first difference (cycle, time in each file, signal, both values) or of the missing
+//! ports, 2 when a trace cannot be read, a named signal is missing, or neither trace has a rising edge
+//! of the clock (nothing to compare).
 
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::fs::File;
@@ -302,6 +305,8 @@ pub fn compare(args: &VcdDiffArgs) -> Result<Outcome, String> {
     // The names to compare: those asked for, or every name of either trace that resolves in both.
     let mut pairs: BTreeMap<String, (Sig, Sig)> = BTreeMap::new();
     let mut notes = Vec::new();
+    let mut missing: Vec<String> = Vec::new();
+    let mut only_in: [Vec<(String, Sig)>; 2] = [Vec::new(), Vec::new()];
     if !args.signals.is_empty() {
         for name in &args.signals {
             let name = name.trim();
@@ -328,7 +333,7 @@ pub fn compare(args: &VcdDiffArgs) -> Result<Outcome, String> {
             }
         }
         let mut covered: HashSet<IdCode> = HashSet::new();
-        let (mut only_a, mut only_b) = (Vec::<String>::new(), Vec::<String>::new());
+        let (mut only_a, mut only_b) = (Vec::<(String, Sig)>::new(), Vec::<(String, Sig)>::new());
         let mut textual: Vec<String> = Vec::new();
         for n in &names {
             if n == &args.clock {
@@ -341,13 +346,13 @@ pub fn compare(args: &VcdDiffArgs) -> Result<Outcome, String> {
                     (Some(a), Some(b)) => (a, b),
                     (Some(a), None) => {
                         if !a.parts.iter().all(|l| covered.contains(&l.code)) {
-                            only_a.push(n.clone());
+                            only_a.push((n.clone(), a));
                         }
                         continue;
                     }
                     (None, Some(b)) => {
                         if !b.parts.iter().all(|l| covered.contains(&l.code)) {
-                            only_b.push(n.clone());
+                            only_b.push((n.clone(), b));
                         }
                         continue;
                     }
@@ -373,19 +378,7 @@ pub fn compare(args: &VcdDiffArgs) -> Result<Outcome, String> {
             }
             pairs.insert(n.clone(), (sa, sb));
         }
-        let list = |v: &[String]| {
-            let mut s = v.iter().take(8).cloned().collect::<Vec<_>>().join(", ");
-            if v.len() > 8 {
-                s.push_str(&format!(", ... ({} more)", v.len() - 8));
-            }
-            s
-        };
-        if !only_a.is_empty() {
-            notes.push(format!("not compared, only in A: {}", list(&only_a)));
-        }
-        if !only_b.is_empty() {
-            notes.push(format!("not compared, only in B: {}", list(&only_b)));
-        }
+        only_in = [only_a, only_b];
         if !textual.is_empty() {
             notes.push(format!("not compared (enum states written as text): {}", textual.join(", ")));
         }
@@ -398,10 +391,54 @@ pub fn compare(args: &VcdDiffArgs) -> Result<Outcome, String> {
             return Ok(Outcome { equal: false, report: format!("signal {name} is {} bits wide in A and {} bits in B", sa.width(), sb.width()) });
         }
     }
-    let want_a: HashSet<IdCode> = pairs.values().flat_map(|(a, _)| a.parts.iter().map(|l| l.code)).collect();
-    let want_b: HashSet<IdCode> = pairs.values().flat_map(|(_, b)| b.parts.iter().map(|l| l.code)).collect();
+    let mut want_a: HashSet<IdCode> = pairs.values().flat_map(|(a, _)| a.parts.iter().map(|l| l.code)).collect();
+    let mut want_b: HashSet<IdCode> = pairs.values().flat_map(|(_, b)| b.parts.iter().map(|l| l.code)).collect();
+    want_a.extend(only_in[0].iter().flat_map(|(_, s)| s.parts.iter().map(|l| l.code)));
+    want_b.extend(only_in[1].iter().flat_map(|(_, s)| s.parts.iter().map(|l| l.code)));
     let sa = sample(&ta, pa, &want_a)?;
     let sb = sample(&tb, pb, &want_b)?;
+    // A signal of one trace that the other lacks is a difference when the trace says it is a port and
+    // the other trace should show ports too: two structured traces (RustHDL's), two flat ones (the same
+    // kind of Verilog dump), or a structured trace's port that changes against a flat trace. What a
+    // flat trace has beyond a structured one may be nets, and a structured trace's variable that never
+    // changes may be a constant of the top: those are listed, not counted.
+    let list = |v: &[&str]| {
+        let mut s = v.iter().take(8).cloned().collect::<Vec<_>>().join(", ");
+        if v.len() > 8 {
+            s.push_str(&format!(", ... ({} more)", v.len() - 8));
+        }
+        s
+    };
+    for (k, (this, other, t, o, smp)) in [("A", "B", &ta, &tb, &sa), ("B", "A", &tb, &ta, &sb)].into_iter().enumerate() {
+        let (mut counted, mut listed) = (Vec::new(), Vec::new());
+        let names: Vec<&str> = only_in[k].iter().map(|(n, _)| n.as_str()).collect();
+        for (name, sig) in &only_in[k] {
+            // A struct's name stands for its fields, which are listed themselves.
+            if names.iter().any(|m| m.len() > name.len() && m.starts_with(name.as_str()) && m.as_bytes()[name.len()] == b'$') {
+                continue;
+            }
+            let changes = sig.parts.iter().any(|l| smp.runs.get(&l.code).is_some_and(|r| r.len() > 1));
+            if t.structured == o.structured || (t.structured && changes) {
+                counted.push(name.as_str());
+            } else {
+                listed.push(name.as_str());
+            }
+        }
+        if !counted.is_empty() {
+            missing.push(format!("{} of {this} missing from {other}: {}", if t.structured { "ports" } else { "signals" }, list(&counted)));
+        }
+        if !listed.is_empty() {
+            notes.push(format!("not compared, only in {this} (nets or constants, not known to be ports): {}", list(&listed)));
+        }
+    }
+    if sa.edges.is_empty() && sb.edges.is_empty() {
+        return Err(format!(
+            "neither {} nor {} has a rising edge of `{}`: no cycle to compare",
+            ta.path.display(),
+            tb.path.display(),
+            args.clock
+        ));
+    }
     let cycles = sa.edges.len().min(sb.edges.len());
     // Per pair, the first cycle where the values differ (checked only where one of them changes).
     let mut first: Option<(usize, String, Val, Val)> = None;
@@ -451,6 +488,10 @@ pub fn compare(args: &VcdDiffArgs) -> Result<Outcome, String> {
                 args.clock,
                 sb.edges.len()
             ));
+            false
+        }
+        None if !missing.is_empty() => {
+            report.push_str(&format!("the compared signals agree for {cycles} cycles, but {}\n", missing.join("; ")));
             false
         }
         None => {

@@ -164,3 +164,64 @@ fn a_trace_with_one_value_changed_is_reported_at_that_cycle_and_signal() {
     let b_val = u64::from_str_radix(first.rsplit("B = 0x").next().unwrap().trim(), 16).unwrap();
     assert_eq!(b_val, u64::from_str_radix(flipped.trim_start_matches('b'), 2).unwrap(), "{out}");
 }
+
+/// A two-cycle flat trace with a 4-bit `x` and, if `real` is given, a real-valued `r` that takes that
+/// value in the second cycle.
+fn small_trace(dir: &Path, name: &str, real: Option<&str>, edges: bool) -> PathBuf {
+    let mut v = String::from("$timescale 1ns $end\n$scope module top $end\n$var wire 1 ! clock $end\n$var wire 4 \" x $end\n");
+    if real.is_some() {
+        v.push_str("$var real 1 # r $end\n");
+    }
+    v.push_str("$upscope $end\n$enddefinitions $end\n#0\n0!\nb0000 \"\n");
+    if real.is_some() {
+        v.push_str("r1.5 #\n");
+    }
+    if edges {
+        v.push_str("#5\n1!\n#10\n0!\n");
+        if let Some(r) = real {
+            v.push_str(&format!("r{r} #\n"));
+        }
+        v.push_str("#15\n1!\n#20\n0!\n");
+    }
+    let p = dir.join(name);
+    std::fs::write(&p, v).unwrap();
+    p
+}
+
+/// Issue 18: vcd-diff called two traces equal when a signal was missing from one, and when neither
+/// had a cycle; real-valued signals are compared by value.
+#[test]
+fn a_missing_signal_or_no_cycle_at_all_is_not_equal_and_reals_are_compared() {
+    let dir = std::env::temp_dir().join(format!("idxrender-vcd-small-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (a, b) = (small_trace(&dir, "a.vcd", Some("2.5"), true), small_trace(&dir, "b.vcd", Some("3.5"), true));
+    let (code, out) = vcd_diff(&a, &b, &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("signal r: A = \"2.5\", B = \"3.5\""), "{out}");
+    let plain = small_trace(&dir, "plain.vcd", None, true);
+    let (code, out) = vcd_diff(&a, &plain, &[]);
+    assert_eq!(code, 1, "a signal only in A made the traces equal:\n{out}");
+    assert!(out.contains("missing from B: r"), "{out}");
+    let still = small_trace(&dir, "still.vcd", None, false);
+    let (code, out) = vcd_diff(&still, &still, &[]);
+    assert_eq!(code, 2, "{out}");
+    assert!(out.contains("no cycle to compare"), "{out}");
+}
+
+/// A structured trace (RustHDL's: ports in sub-scopes) whose port `cmd$valid` changes, against a flat
+/// trace without it: a missing port, not equal. A variable of the top that never changes (a constant
+/// such as rust-hdl's `k0_20`) is only listed.
+#[test]
+fn a_changing_port_missing_from_a_flat_trace_is_a_difference() {
+    let dir = std::env::temp_dir().join(format!("idxrender-vcd-port-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let structured = "$timescale 1ns $end\n$scope module uut $end\n$var wire 1 ! clock $end\n$var wire 4 \" x $end\n$var wire 2 $ k0 $end\n\
+        $scope module cmd $end\n$var wire 1 # valid $end\n$upscope $end\n$upscope $end\n$enddefinitions $end\n\
+        #0\n0!\nb0000 \"\nb10 $\n0#\n#5\n1!\n#10\n0!\n1#\n#15\n1!\n#20\n0!\n";
+    let a = dir.join("structured.vcd");
+    std::fs::write(&a, structured).unwrap();
+    let b = small_trace(&dir, "flat.vcd", None, true);
+    let (code, out) = vcd_diff(&a, &b, &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("ports of A missing from B: cmd$valid") && out.contains("only in A (nets or constants, not known to be ports): k0"), "{out}");
+}
