@@ -172,7 +172,13 @@ fn parse_vec3(name: &str, s: &str) -> Result<[f64; 3], String> {
 pub fn load_scene(args: &RenderArgs) -> Result<Mesh, String> {
     match (&args.scene, &args.obj) {
         (_, Some(path)) if args.grid.is_some() => Err(format!("--grid applies to --scene teapot only (GLUT's tessellation), not to {}", path.display())),
-        (_, Some(path)) => obj::load_obj(path),
+        (_, Some(path)) => {
+            let (mesh, warnings) = obj::load_obj_with_warnings(path)?;
+            for w in warnings {
+                eprintln!("warning: {w}");
+            }
+            Ok(mesh)
+        }
         (Some(name), None) if name == "teapot" => {
             let grid = args.grid.unwrap_or(builtin::TEAPOT_GRID);
             if !(1..=64).contains(&grid) {

@@ -1,10 +1,12 @@
 //! Wavefront OBJ loading (with its MTL materials) into a [`Mesh`].
 //!
-//! tobj does the grouping, the fan triangulation of polygons and the MTL parsing, but it is lenient
-//! (it silently accepts NaN, and its errors name neither file nor line), while a user who points the
-//! program at a broken file must be told where it is broken. So the text is first checked line by
-//! line here, and tobj only ever sees lines that passed: any error names the file and the line,
-//! and no input makes the loader panic.
+//! tobj does the grouping and the MTL parsing (with its `use_f64` feature: coordinates stay f64, so a
+//! small model far from the origin keeps its shape), but it is lenient (it silently accepts NaN, and its
+//! errors name neither file nor line), while a user who points the program at a broken file must be
+//! told where it is broken. So the text is first checked line by line here, and tobj only ever sees
+//! lines that passed: any error names the file and the line, and no input makes the loader panic.
+//! Polygons are triangulated here by ear clipping (tobj's fan is wrong for concave polygons), a UTF-8
+//! byte-order mark is skipped, and a material library that cannot be read is a warning, not silence.
 
 use std::path::Path;
 
@@ -35,14 +37,27 @@ fn face_normal(a: V3, b: V3, c: V3) -> V3 {
     unit(cross(sub(b, a), sub(c, a))).unwrap_or([0.0, 0.0, 1.0])
 }
 
+/// The largest |coordinate| accepted in an OBJ file (the camera's range, `host::CAMERA_RANGE`).
+pub const OBJ_COORDINATE_RANGE: f64 = crate::host::CAMERA_RANGE;
+
 /// Load an OBJ file (and the MTL files it names) as one mesh named after the file stem.
 ///
-/// Polygons are fanned into triangles. File normals are used when every face gives them (and made
-/// unit length); otherwise each triangle gets its flat counter-clockwise face normal. A missing or
-/// broken MTL file is not fatal: the faces get a grey plastic instead.
+/// Polygons are split into triangles by ear clipping. File normals are used when every face gives
+/// them (and made unit length); otherwise each triangle gets its flat counter-clockwise face normal. A
+/// missing or broken MTL file is not fatal: the faces get a grey plastic instead (see
+/// [`load_obj_with_warnings`] for the warning).
 pub fn load_obj(path: &Path) -> Result<Mesh, String> {
+    load_obj_with_warnings(path).map(|(m, _)| m)
+}
+
+/// [`load_obj`], with what the loader had to work around (an MTL file it could not read, a polygon
+/// it could not clip and fanned instead), one line each naming the file and line.
+pub fn load_obj_with_warnings(path: &Path) -> Result<(Mesh, Vec<String>), String> {
     let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read OBJ file: {}", path.display(), e))?;
-    let checked = prescan(path, &text)?;
+    // A UTF-8 byte-order mark is not part of the first statement.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+    let checked = prescan(path, text)?;
+    let mut warnings = checked.warnings.clone();
     if checked.faces == 0 {
         return Err(format!("{}: OBJ file has no faces", path.display()));
     }
@@ -52,8 +67,16 @@ pub fn load_obj(path: &Path) -> Result<Mesh, String> {
     let options =
         tobj::LoadOptions { triangulate: true, single_index: false, ignore_points: true, ignore_lines: true, ..Default::default() };
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let (models, materials) = tobj::load_obj_buf(&mut checked.text.as_bytes(), &options, |mtl| tobj::load_mtl(dir.join(mtl)))
-        .map_err(|e| format!("{}: {}", path.display(), e))?;
+    let mtl_problems = std::cell::RefCell::new(Vec::new());
+    let (models, materials) = tobj::load_obj_buf(&mut checked.text.as_bytes(), &options, |mtl| {
+        let r = tobj::load_mtl(dir.join(mtl));
+        if let Err(e) = &r {
+            mtl_problems.borrow_mut().push(format!("{}: material library {} cannot be used ({e}): its faces are grey plastic", path.display(), dir.join(mtl).display()));
+        }
+        r
+    })
+    .map_err(|e| format!("{}: {}", path.display(), e))?;
+    warnings.extend(mtl_problems.into_inner());
     // A missing MTL file leaves the faces without a material; they get the default below.
     let file_materials: Vec<Material> = materials.unwrap_or_default().iter().map(convert_material).collect();
 
@@ -69,7 +92,7 @@ pub fn load_obj(path: &Path) -> Result<Mesh, String> {
     for model in &models {
         let m = &model.mesh;
         let base = mesh.positions.len() as u32;
-        mesh.positions.extend(m.positions.chunks_exact(3).map(|p| [p[0] as f64, p[1] as f64, p[2] as f64]));
+        mesh.positions.extend(m.positions.chunks_exact(3).map(|p| [p[0], p[1], p[2]]));
         let material = match m.material_id {
             Some(i) if i < mesh.materials.len() => i as u32,
             _ => *default_material.get_or_insert_with(|| {
@@ -82,7 +105,7 @@ pub fn load_obj(path: &Path) -> Result<Mesh, String> {
         let use_file_normals = checked.all_faces_have_normals && m.normal_indices.len() == m.indices.len();
         let normal_base = mesh.normals.len() as u32;
         let file_normals: Vec<Option<V3>> = if use_file_normals {
-            m.normals.chunks_exact(3).map(|n| unit([n[0] as f64, n[1] as f64, n[2] as f64])).collect()
+            m.normals.chunks_exact(3).map(|n| unit([n[0], n[1], n[2]])).collect()
         } else {
             Vec::new()
         };
@@ -117,20 +140,18 @@ pub fn load_obj(path: &Path) -> Result<Mesh, String> {
         return Err(format!("{}: OBJ file has no faces", path.display()));
     }
     mesh.validate().map_err(|e| format!("{}: {}", path.display(), e))?;
-    Ok(mesh)
+    Ok((mesh, warnings))
 }
 
 /// An MTL material in our Phong model: Kd, Ka (Kd when missing or black, since a black ambient
 /// would leave unlit sides invisible), Ks and Ns rounded to a power of two in 1..=16.
 fn convert_material(m: &tobj::Material) -> Material {
-    let colour = |c: Option<[f32; 3]>| -> Option<V3> {
-        c.filter(|c| c.iter().all(|x| x.is_finite())).map(|c| c.map(|x| (x as f64).clamp(0.0, 1.0)))
-    };
+    let colour = |c: Option<[f64; 3]>| -> Option<V3> { c.filter(|c| c.iter().all(|x| x.is_finite())).map(|c| c.map(|x| x.clamp(0.0, 1.0))) };
     let diffuse = colour(m.diffuse).unwrap_or([0.7, 0.7, 0.7]);
     let ambient = colour(m.ambient).filter(|a| a.iter().any(|&x| x > 0.0)).unwrap_or(diffuse);
     let specular = colour(m.specular).unwrap_or([0.0; 3]);
     let gloss = match m.shininess {
-        Some(ns) if ns.is_finite() => gloss_from_ns(ns as f64),
+        Some(ns) if ns.is_finite() => gloss_from_ns(ns),
         _ => 16,
     };
     Material { ambient, diffuse, specular, gloss }
@@ -151,6 +172,7 @@ struct Checked {
     text: String,
     faces: usize,
     all_faces_have_normals: bool,
+    warnings: Vec<String>,
 }
 
 /// Check every line of an OBJ file; return the text reduced to the statements tobj needs.
@@ -162,6 +184,8 @@ fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
     let mut out = String::with_capacity(text.len());
     let mut faces = 0usize;
     let mut all_faces_have_normals = true;
+    let mut positions: Vec<V3> = Vec::new();
+    let mut warnings = Vec::new();
     for (number, raw) in text.lines().enumerate() {
         let err = |msg: String| format!("{}:{}: {}", path.display(), number + 1, msg);
         let line = raw.split('#').next().unwrap_or("").trim();
@@ -171,7 +195,8 @@ fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
         let numbers = |what: &str| -> Result<Vec<f64>, String> {
             args.iter()
                 .map(|w| match w.parse::<f64>() {
-                    Ok(x) if x.is_finite() => Ok(x),
+                    Ok(x) if x.is_finite() && x.abs() <= OBJ_COORDINATE_RANGE => Ok(x),
+                    Ok(x) if x.is_finite() => Err(err(format!("{} '{}' is outside +-{:e}, the range of coordinates", what, w, OBJ_COORDINATE_RANGE))),
                     Ok(_) => Err(err(format!("non-finite coordinate '{}'", w))),
                     Err(_) => Err(err(format!("malformed {}: '{}' is not a number", what, w))),
                 })
@@ -187,6 +212,8 @@ fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
                     4 => {}
                     n => return Err(err(format!("vertex needs 3 coordinates (and an optional w or r g b), found {} numbers", n))),
                 }
+                let w = if c.len() == 4 { c[3] } else { 1.0 };
+                positions.push([c[0] / w, c[1] / w, c[2] / w]);
                 nv += 1;
                 true
             }
@@ -227,16 +254,26 @@ fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
                 }
                 all_faces_have_normals &= refs.iter().all(|r| r.1.is_some());
                 faces += 1;
-                // Rewritten with absolute indices and without texture coordinates: tobj then sees
-                // exactly what was checked.
-                out.push('f');
-                for (v, vn) in refs {
-                    match vn {
-                        Some(n) => out.push_str(&format!(" {}//{}", v, n)),
-                        None => out.push_str(&format!(" {}", v)),
+                // Rewritten as triangles (ear clipping), with absolute indices and without texture
+                // coordinates: tobj then sees exactly what was checked.
+                let corners: Vec<V3> = refs.iter().map(|r| positions[r.0 as usize - 1]).collect();
+                let tris = match ear_clip(&corners) {
+                    Some(t) => t,
+                    None => {
+                        warnings.push(err(format!("the {}-gon is not a simple polygon: fanned from its first vertex", refs.len())));
+                        (1..refs.len() - 1).map(|k| [0, k, k + 1]).collect()
                     }
+                };
+                for t in tris {
+                    out.push('f');
+                    for k in t {
+                        match refs[k] {
+                            (v, Some(n)) => out.push_str(&format!(" {}//{}", v, n)),
+                            (v, None) => out.push_str(&format!(" {}", v)),
+                        }
+                    }
+                    out.push('\n');
                 }
-                out.push('\n');
                 continue;
             }
             "usemtl" | "mtllib" => {
@@ -253,7 +290,48 @@ fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
         }
         out.push('\n');
     }
-    Ok(Checked { text: out, faces, all_faces_have_normals })
+    Ok(Checked { text: out, faces, all_faces_have_normals, warnings })
+}
+
+/// Split a polygon (corners in order) into triangles by ear clipping, in the plane that its Newell
+/// normal is most perpendicular to; the triangles keep the polygon's winding. A triangle is itself.
+/// `None` when the polygon is not simple (no ear is left, e.g. it crosses itself) or has no area.
+fn ear_clip(p: &[V3]) -> Option<Vec<[usize; 3]>> {
+    let n = p.len();
+    if n == 3 {
+        return Some(vec![[0, 1, 2]]);
+    }
+    // Newell's normal, and the two axes of the plane to project on.
+    let mut nn = [0.0f64; 3];
+    for i in 0..n {
+        let (a, b) = (p[i], p[(i + 1) % n]);
+        nn[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        nn[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        nn[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    let k = (0..3).max_by(|&i, &j| nn[i].abs().total_cmp(&nn[j].abs()))?;
+    if !(nn[k].abs() > 0.0) {
+        return None;
+    }
+    let (u, v) = ((k + 1) % 3, (k + 2) % 3);
+    let sign = nn[k].signum();
+    let q: Vec<[f64; 2]> = p.iter().map(|c| [c[u], c[v]]).collect();
+    // Twice the signed area of (a, b, c) in the projection, positive for the polygon's winding.
+    let area = |a: usize, b: usize, c: usize| sign * ((q[b][0] - q[a][0]) * (q[c][1] - q[a][1]) - (q[c][0] - q[a][0]) * (q[b][1] - q[a][1]));
+    let inside = |x: usize, a: usize, b: usize, c: usize| area(a, b, x) >= 0.0 && area(b, c, x) >= 0.0 && area(c, a, x) >= 0.0;
+    let mut left: Vec<usize> = (0..n).collect();
+    let mut tris = Vec::with_capacity(n - 2);
+    while left.len() > 3 {
+        let m = left.len();
+        let ear = (0..m).find(|&i| {
+            let (a, b, c) = (left[(i + m - 1) % m], left[i], left[(i + 1) % m]);
+            area(a, b, c) > 0.0 && !left.iter().any(|&x| x != a && x != b && x != c && q[x] != q[a] && q[x] != q[b] && q[x] != q[c] && inside(x, a, b, c))
+        })?;
+        tris.push([left[(ear + m - 1) % m], left[ear], left[(ear + 1) % m]]);
+        left.remove(ear);
+    }
+    tris.push([left[0], left[1], left[2]]);
+    Some(tris)
 }
 
 /// A face vertex `i`, `i/j`, `i//k` or `i/j/k` as (i, j, k); `None` if it is none of these.
@@ -325,9 +403,83 @@ mod tests {
     }
 
     #[test]
-    fn a_pentagon_is_fanned_into_three_triangles() {
+    fn a_pentagon_is_split_into_three_triangles() {
         let (_, m) = load_text("penta.obj", "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nf 1 2 3 4 5\n");
         assert_eq!(m.unwrap().triangles.len(), 3);
+    }
+
+    /// Twice the signed area of a triangle in the z = 0 plane.
+    fn area2(m: &Mesh, t: &Triangle) -> f64 {
+        let [a, b, c] = t.v.map(|i| m.positions[i as usize]);
+        (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])
+    }
+
+    /// Issue 18: tobj's fan turned concave polygons into wrong shapes. An L-shaped hexagon (area 3)
+    /// whose fan from its first vertex would cover the notch: the triangles must tile exactly its area, all
+    /// counter-clockwise, and none may have its centroid in the notch.
+    #[test]
+    fn a_concave_polygon_is_split_by_ear_clipping_into_triangles_inside_it() {
+        // (0,0) (2,0) (2,1) (1,1) (1,2) (0,2): the notch is the square (1..2, 1..2). Listed from
+        // (2,1), whose fan's first triangle (2,1) (1,1) (1,2) lies in the notch.
+        let text = "v 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nf 1 2 3 4 5 6\n";
+        let (_, m) = load_text("ell.obj", text);
+        let m = m.unwrap();
+        assert_eq!(m.triangles.len(), 4);
+        let total: f64 = m.triangles.iter().map(|t| area2(&m, t)).sum();
+        assert!((total - 6.0).abs() < 1e-12, "twice the area {total}, expected 6");
+        for t in &m.triangles {
+            assert!(area2(&m, t) > 0.0, "a triangle turned clockwise: {t:?}");
+            let c = t.v.map(|i| m.positions[i as usize]);
+            let (x, y) = ((c[0][0] + c[1][0] + c[2][0]) / 3.0, (c[0][1] + c[1][1] + c[2][1]) / 3.0);
+            assert!(!(x > 1.0 && y > 1.0), "triangle {t:?} lies in the notch");
+        }
+    }
+
+    #[test]
+    fn a_self_crossing_polygon_is_fanned_with_a_warning_naming_the_line() {
+        let dir = temp_dir("bowtie");
+        let path = dir.join("bowtie.obj");
+        std::fs::write(&path, "v 0 0 0\nv 2 2 0\nv 2 0 0\nv 0 2 0\nf 1 2 3 4\n").unwrap();
+        let (m, w) = load_obj_with_warnings(&path).unwrap();
+        assert_eq!(m.triangles.len(), 2);
+        assert!(w.iter().any(|w| w.contains("bowtie.obj:5") && w.contains("not a simple polygon")), "{w:?}");
+    }
+
+    /// Issue 18: coordinates were rounded to f32, so a unit square at x = 1e8 collapsed.
+    #[test]
+    fn coordinates_keep_f64_precision_far_from_the_origin() {
+        let (_, m) = load_text("far.obj", "v 100000000 0 0\nv 100000001 0 0\nv 100000001 1 0\nv 100000000 1 0\nf 1 2 3 4\n");
+        let m = m.unwrap();
+        let xs = m.positions.iter().map(|p| p[0]);
+        let (lo, hi) = (xs.clone().fold(f64::MAX, f64::min), xs.fold(f64::MIN, f64::max));
+        assert_eq!(hi - lo, 1.0, "{:?}", m.positions);
+        assert!(m.triangles.iter().all(|t| area2(&m, t) > 0.0));
+    }
+
+    /// Issue 18: 1e39 became inf in f32 and was reported without its line.
+    #[test]
+    fn a_coordinate_beyond_the_range_is_an_error_naming_the_line() {
+        let (_, m) = load_text("huge.obj", "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n");
+        let e = m.unwrap_err();
+        assert!(e.contains("huge.obj:2") && e.contains("1e39") && e.contains("outside"), "{e}");
+    }
+
+    /// Issue 18: a UTF-8 byte-order mark made the first line vanish.
+    #[test]
+    fn a_byte_order_mark_does_not_hide_the_first_line() {
+        let (_, m) = load_text("bom.obj", "\u{feff}v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        assert_eq!(m.unwrap().triangles.len(), 1);
+    }
+
+    /// Issue 18: a missing material library gave no word.
+    #[test]
+    fn a_missing_material_library_is_a_warning() {
+        let dir = temp_dir("nomtl");
+        let path = dir.join("nomtl.obj");
+        std::fs::write(&path, "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n").unwrap();
+        let (m, w) = load_obj_with_warnings(&path).unwrap();
+        assert_eq!(m.triangles.len(), 1);
+        assert!(w.iter().any(|w| w.contains("gone.mtl") && w.contains("grey")), "{w:?}");
     }
 
     #[test]
@@ -443,8 +595,8 @@ mod tests {
         std::fs::write(&path, format!("mtllib m.mtl\n{SQUARE}usemtl dull\nf 1 2 3\nusemtl red\nf 1 3 4\n")).unwrap();
         let m = load_obj(&path).unwrap();
         let red = &m.materials[m.triangles[1].material as usize];
-        // tobj reads MTL numbers as f32.
-        assert_eq!(red.diffuse, [0.8f32, 0.1, 0.1].map(|x| x as f64));
+        // tobj (use_f64) reads MTL numbers as f64.
+        assert_eq!(red.diffuse, [0.8, 0.1, 0.1]);
         assert_eq!(red.ambient, red.diffuse, "black Ka falls back to Kd");
         assert_eq!(red.gloss, 16);
         let dull = &m.materials[m.triangles[0].material as usize];
