@@ -48,6 +48,12 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     if n_ops == 0 {
         return Err("--ops 0: the OPP needs at least one object processor".into());
     }
+    // Each object processor holds one object: more than the frame's objects are never used, and a
+    // huge count would only allocate (checked before any work).
+    let most = scene.objects.len().max(1);
+    if n_ops > most {
+        return Err(format!("--ops {n_ops}: the frame has {} objects, so at most {most} object processors can be used", scene.objects.len()));
+    }
     if n_ops < needed {
         return Err(format!(
             "the frame needs {needed} object processors with OP reuse, but --ops is {n_ops}: raise --ops or leave it out"

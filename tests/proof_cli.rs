@@ -87,6 +87,8 @@ fn proof_bad_options_are_clear_errors() {
         (vec!["--filter", "3x3"], "filter"),
         (vec!["--fifo-depth", "0"], "fifo-depth"),
         (vec!["--ops", "1"], "needs 2 object processors"),
+        // Issue 18: this count used to be allocated until the process was killed.
+        (vec!["--ops", "100000000"], "at most 2 object processors"),
         (vec!["--backend", "verilator"], "PROOF has --backend golden and rtl"),
     ] {
         let out = temp_dir("bad");
