@@ -43,6 +43,13 @@ macro_rules! say {
 }
 
 fn main() {
+    // A file-size limit (`ulimit -f`) should make a write fail with an error the program reports and
+    // cleans up after, not kill the process with SIGXFSZ halfway through a file.
+    #[cfg(unix)]
+    // SAFETY: setting a signal's disposition to SIG_IGN at start-up, before any thread exists.
+    unsafe {
+        libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
+    }
     let args = cli::Cli::parse();
     let result = cli::run(args);
     note_stdout(std::io::stdout().flush());

@@ -1,16 +1,124 @@
-//! Writing a frame's files: frame.png, index.bin, index.png, stats.json.
+//! Writing a run's files: frame.png, index.bin, index.png, stats.json, and the rest.
+//!
+//! A run's files are a unit ([`OutputDir`]): they are written into a hidden folder beside `--out` and
+//! moved into place together when the last one is written, so `--out` holds either the previous run's
+//! complete result or this run's, never a mix, never a half-written file, and no file of an earlier run
+//! that this run does not write (an RTL run's `cycles.json` after a golden run).
 
 use golden::render::Frame;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// The files a run of this program writes into `--out`: a folder holding only these (or nothing) may
+/// be replaced by a new run's.
+pub const KNOWN_OUTPUTS: &[&str] = &[
+    "frame.png", "index.bin", "index.png", "stats.json", "cycles.json", "chipset.v", "frame.vcd", "coverage.png", "shade.vcd", "filter.vcd",
+];
+
+/// Files written so far by this process (for the fault injection of `IDXRENDER_FAIL_AFTER_WRITES`).
+static WRITES: AtomicUsize = AtomicUsize::new(0);
 
 /// Write `bytes` to `dir/name` through a temporary file and a rename, so that a reader (or a failed
 /// run) never sees half a file.
+///
+/// Fault injection for the tests: with `IDXRENDER_FAIL_AFTER_WRITES=N`, the write after the N-th of
+/// the process stops halfway and fails, as a full disk would.
 pub fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<PathBuf, String> {
     let path = dir.join(name);
     let tmp = dir.join(format!(".{name}.tmp"));
+    let n = WRITES.fetch_add(1, Ordering::Relaxed);
+    if std::env::var("IDXRENDER_FAIL_AFTER_WRITES").ok().and_then(|v| v.parse::<usize>().ok()).is_some_and(|k| n >= k) {
+        let _ = std::fs::write(&tmp, &bytes[..bytes.len() / 2]);
+        return Err(format!("cannot write {}: injected fault after {n} files (IDXRENDER_FAIL_AFTER_WRITES)", tmp.display()));
+    }
     std::fs::write(&tmp, bytes).map_err(|e| format!("cannot write {}: {e}", tmp.display()))?;
     std::fs::rename(&tmp, &path).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     Ok(path)
+}
+
+/// The output folder of one run, staged: write into [`OutputDir::dir`], then [`OutputDir::commit`].
+/// Dropped without a commit (an error on the way), it removes what it staged and `--out` is as it was.
+pub struct OutputDir {
+    out: PathBuf,
+    stage: PathBuf,
+    parent: PathBuf,
+    name: String,
+    committed: bool,
+}
+
+impl OutputDir {
+    /// Check `out` (a folder holding nothing but this program's outputs, or nothing, or not there yet)
+    /// and make the staging folder beside it.
+    pub fn begin(out: &Path) -> Result<OutputDir, String> {
+        let name = out.file_name().map(|n| n.to_string_lossy().into_owned()).ok_or_else(|| format!("--out {}: not a folder name", out.display()))?;
+        let parent = match out.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        if out.exists() {
+            if !out.is_dir() {
+                return Err(format!("--out {}: exists and is not a folder", out.display()));
+            }
+            let entries = std::fs::read_dir(out).map_err(|e| format!("--out {}: cannot read it: {e}", out.display()))?;
+            let mut foreign: Vec<String> = entries
+                .filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .filter(|n| !KNOWN_OUTPUTS.contains(&n.as_str()) && !(n.starts_with('.') && n.ends_with(".tmp")))
+                .collect();
+            if !foreign.is_empty() {
+                foreign.sort();
+                return Err(format!(
+                    "--out {}: holds files this program does not write ({}); a run replaces the whole folder, so give a new or empty one",
+                    out.display(),
+                    foreign.join(", ")
+                ));
+            }
+        }
+        std::fs::create_dir_all(&parent).map_err(|e| format!("--out {}: cannot create {}: {e}", out.display(), parent.display()))?;
+        let stage = parent.join(format!(".{name}.new-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&stage);
+        std::fs::create_dir(&stage).map_err(|e| format!("--out {}: cannot create {}: {e}", out.display(), stage.display()))?;
+        Ok(OutputDir { out: out.to_path_buf(), stage, parent, name, committed: false })
+    }
+
+    /// Where this run's files go until the commit.
+    pub fn dir(&self) -> &Path {
+        &self.stage
+    }
+
+    /// The path a staged file will have in `--out`.
+    pub fn final_path(&self, staged: &Path) -> PathBuf {
+        staged.strip_prefix(&self.stage).map(|rel| self.out.join(rel)).unwrap_or_else(|_| staged.to_path_buf())
+    }
+
+    /// Put the staged folder in the place of `--out` (the previous one is removed after).
+    pub fn commit(mut self) -> Result<(), String> {
+        let old = self.parent.join(format!(".{}.old-{}", self.name, std::process::id()));
+        let had_old = self.out.exists();
+        if had_old {
+            let _ = std::fs::remove_dir_all(&old);
+            std::fs::rename(&self.out, &old).map_err(|e| format!("cannot replace {}: {e}", self.out.display()))?;
+        }
+        if let Err(e) = std::fs::rename(&self.stage, &self.out) {
+            if had_old {
+                let _ = std::fs::rename(&old, &self.out);
+            }
+            return Err(format!("cannot move the new files into {}: {e}", self.out.display()));
+        }
+        self.committed = true;
+        if had_old {
+            let _ = std::fs::remove_dir_all(&old);
+        }
+        Ok(())
+    }
+}
+
+impl Drop for OutputDir {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = std::fs::remove_dir_all(&self.stage);
+        }
+    }
 }
 
 pub fn png_bytes(width: u32, height: u32, rgb: &[u8]) -> Result<Vec<u8>, String> {
@@ -41,9 +149,8 @@ pub fn index_false_colour(index: &[u32]) -> Vec<u8> {
         .collect()
 }
 
-/// Create `dir` and write the four files of a frame.
+/// Write the four files of a frame into `dir`.
 pub fn write_frame(dir: &Path, frame: &Frame, stats_json: &serde_json::Value) -> Result<Vec<PathBuf>, String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create output directory {}: {e}", dir.display()))?;
     let (w, h) = (frame.screen.width, frame.screen.height);
     Ok(vec![
         write_atomic(dir, "frame.png", &png_bytes(w, h, &frame.rgb)?)?,

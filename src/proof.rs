@@ -43,6 +43,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     }
     let t0 = std::time::Instant::now();
     let scene = scene_setup(mesh, opts)?;
+    let od = crate::output::OutputDir::begin(&args.out)?;
     let needed = ops_needed(scene.screen, &scene.objects) as usize;
     let n_ops = args.ops.unwrap_or(needed.max(1));
     if n_ops == 0 {
@@ -74,8 +75,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
                 if !args.vcd {
                     return Ok(None);
                 }
-                std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create output directory {}: {e}", args.out.display()))?;
-                Ok(Some(args.out.join(name)))
+                Ok(Some(od.dir().join(name)))
             };
             let (lists, run) = tb::proof::backend::opp_lists_rtl(&scene, n_ops, fifo_depth, vcd_of("frame.vcd")?.as_deref())?;
             let (shaded, shade_cycles) = tb::proof::backend::shade_slots_rtl(&scene, &lists, vcd_of("shade.vcd")?.as_deref())?;
@@ -117,12 +117,13 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "rtl_stage_cycles": stage_cycles.map(|(s, f)| serde_json::json!({ "shading": s, "filter": f, "filter_backend": "rtl", "filter_top": filter_top })),
         "stats": stats,
     });
-    std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create output directory {}: {e}", args.out.display()))?;
-    let files = vec![
-        crate::output::write_atomic(&args.out, "frame.png", &crate::output::png_bytes(w, h, &rgb)?)?,
-        crate::output::write_atomic(&args.out, "coverage.png", &crate::output::png_bytes(w, h, &grey)?)?,
-        crate::output::write_atomic(&args.out, "stats.json", serde_json::to_string_pretty(&json).unwrap().as_bytes())?,
+    let staged = vec![
+        crate::output::write_atomic(od.dir(), "frame.png", &crate::output::png_bytes(w, h, &rgb)?)?,
+        crate::output::write_atomic(od.dir(), "coverage.png", &crate::output::png_bytes(w, h, &grey)?)?,
+        crate::output::write_atomic(od.dir(), "stats.json", serde_json::to_string_pretty(&json).unwrap().as_bytes())?,
     ];
+    let files: Vec<std::path::PathBuf> = staged.iter().map(|f| od.final_path(f)).collect();
+    od.commit()?;
     crate::say!(
         "{} (PROOF, {backend}): {}x{}, {} objects, {} OPs needed with reuse, OPP of {} OPs with FIFO depth {}: {} cycles for {} pixels",
         mesh.name, w, h, stats.setup.objects, stats.ops_needed, n_ops, fifo_depth, cycles.cycles, cycles.pixels

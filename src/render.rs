@@ -36,6 +36,8 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
                 .map_err(|e| format!("--shading phong through the RTL: {e}; use --backend golden"))?;
         }
     }
+    // The run's files are staged and moved into --out together at the end (crate::output::OutputDir).
+    let od = crate::output::OutputDir::begin(&args.out)?;
     let t0 = std::time::Instant::now();
     let golden_frame = render(mesh, opts)?;
     if args.backend == BackendArg::Golden {
@@ -48,7 +50,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     let (frame, rtl) = match args.backend {
         BackendArg::Golden => (golden_frame, None),
         BackendArg::Rtl | BackendArg::Verilator => {
-            let run = run_rtl(args, mesh, opts)?;
+            let run = run_rtl(args, mesh, opts, od.dir())?;
             // Every frame of the run against the golden frame (the scene is the same each time).
             let diff = run.frames.iter().enumerate().find_map(|(k, f)| compare(&golden_frame, f).map(|d| if run.frames.len() > 1 { format!("frame {} of {}: {d}", k + 1, run.frames.len()) } else { d }));
             (run.frame, Some((run.phases, run.cycles, run.secs, run.vcd, diff)))
@@ -65,7 +67,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "backend": match args.backend { BackendArg::Golden => "golden", BackendArg::Rtl => "rtl", BackendArg::Verilator => "verilator" },
         "stats": frame.stats,
     });
-    let mut files = crate::output::write_frame(&args.out, &frame, &stats)?;
+    let mut files = crate::output::write_frame(od.dir(), &frame, &stats)?;
     let s = &frame.stats;
     crate::say!(
         "{}: {}x{} {:?}, {} triangles in (a), {} after culling (b), {} flagged visible, {} visible in the image (c)",
@@ -83,6 +85,8 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     );
     let Some((phases, run_cycles, secs, vcd, diff)) = rtl else {
         crate::say!("  golden model: {golden_secs:.3} s");
+        let files: Vec<PathBuf> = files.iter().map(|f| od.final_path(f)).collect();
+        od.commit()?;
         for f in files {
             crate::say!("  wrote {}", f.display());
         }
@@ -105,10 +109,10 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     });
     stats["cycles"] = cycles.clone();
     // stats.json again, now with the cycle counts.
-    crate::output::write_atomic(&args.out, "stats.json", serde_json::to_string_pretty(&stats).unwrap().as_bytes())?;
-    files.push(crate::output::write_atomic(&args.out, "cycles.json", serde_json::to_string_pretty(&cycles).unwrap().as_bytes())?);
+    crate::output::write_atomic(od.dir(), "stats.json", serde_json::to_string_pretty(&stats).unwrap().as_bytes())?;
+    files.push(crate::output::write_atomic(od.dir(), "cycles.json", serde_json::to_string_pretty(&cycles).unwrap().as_bytes())?);
     let v = hdl::chipset::verilog(opts.screen.width, opts.screen.height)?;
-    files.push(crate::output::write_atomic(&args.out, "chipset.v", v.as_bytes())?);
+    files.push(crate::output::write_atomic(od.dir(), "chipset.v", v.as_bytes())?);
     if let Some(p) = vcd {
         files.push(p);
     }
@@ -127,6 +131,8 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         secs,
         run_cycles as f64 / secs.max(1e-9)
     );
+    let files: Vec<PathBuf> = files.iter().map(|f| od.final_path(f)).collect();
+    od.commit()?;
     for f in files {
         crate::say!("  wrote {}", f.display());
     }
@@ -150,10 +156,9 @@ struct RtlRun {
     vcd: Option<PathBuf>,
 }
 
-fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<RtlRun, String> {
-    std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create output directory {}: {e}", args.out.display()))?;
-    // The waveform streams into a temporary file, renamed when the frame is complete.
-    let vcd_tmp = args.out.join(".frame.vcd.tmp");
+fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions, dir: &std::path::Path) -> Result<RtlRun, String> {
+    // The waveform streams into the staged output folder (moved into --out only with the rest).
+    let vcd_path = dir.join("frame.vcd");
     let bar = ProgressBar::new(1);
     bar.set_style(
         ProgressStyle::with_template("{msg:>14} [{bar:40}] {pos}/{len} ({elapsed})")
@@ -169,7 +174,7 @@ fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<RtlRu
         b.set_length(total.max(1));
         b.set_position(done);
     });
-    let vcd_file = args.vcd.then(|| vcd_tmp.clone());
+    let vcd_file = args.vcd.then(|| vcd_path.clone());
     // --backend verilator: the same host program and memories around the generated Verilog (built
     // once per screen size into target/verilator/, see tb::verilator).
     let mut chip: Box<dyn tb::backend::CycleChipset> = match args.backend {
@@ -183,20 +188,8 @@ fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Result<RtlRu
     chip.finish_vcd();
     bar.finish_and_clear();
     let secs = t0.elapsed().as_secs_f64();
-    let frames = match result {
-        Ok(f) => f,
-        Err(e) => {
-            let _ = std::fs::remove_file(&vcd_tmp);
-            return Err(format!("RTL simulation: {e}"));
-        }
-    };
-    let vcd = if args.vcd {
-        let p = args.out.join("frame.vcd");
-        std::fs::rename(&vcd_tmp, &p).map_err(|e| format!("cannot write {}: {e}", p.display()))?;
-        Some(p)
-    } else {
-        None
-    };
+    let frames = result.map_err(|e| format!("RTL simulation: {e}"))?;
+    let vcd = args.vcd.then_some(vcd_path);
     let cycles = chip.cycles();
     Ok(RtlRun { frame: frames.last().cloned().ok_or("no frame")?, frames, phases: chip.phases(), cycles, secs, vcd })
 }

@@ -184,3 +184,76 @@ fn a_failed_run_leaves_the_previous_outputs_untouched() {
     let after: Vec<Vec<u8>> = ["frame.png", "index.bin", "index.png", "stats.json"].iter().map(|f| std::fs::read(out.join(f)).unwrap()).collect();
     assert!(before == after, "outputs changed by a failed run");
 }
+
+/// Every file of a folder, name and bytes, sorted.
+fn snapshot(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut v: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap())
+        .map(|e| (e.file_name().to_string_lossy().into_owned(), std::fs::read(e.path()).unwrap()))
+        .collect();
+    v.sort();
+    v
+}
+
+/// The folder holding `out`, without the staging folders of a run (`.NAME.new-PID`, `.NAME.old-PID`).
+fn leftovers(out: &Path) -> Vec<String> {
+    let parent = out.parent().unwrap();
+    std::fs::read_dir(parent).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).filter(|n| n.contains(".new-") || n.contains(".old-")).collect()
+}
+
+/// Issue 18: a run's files are one unit. A golden run into a folder that held an RTL run leaves no
+/// `cycles.json` or `chipset.v` of the RTL run behind.
+#[test]
+fn a_run_replaces_the_whole_output_folder_so_no_file_of_another_run_stays() {
+    let out = temp_dir("unit").join("out");
+    let o = out.to_str().unwrap();
+    let (ok, _, err) = run(&["render", "--scene", "polyhedron", "--size", "32x20", "--backend", "rtl", "--out", o]);
+    assert!(ok, "{err}");
+    assert!(out.join("cycles.json").exists());
+    let (ok, _, err) = run(&["render", "--scene", "castle", "--size", "32x20", "--out", o]);
+    assert!(ok, "{err}");
+    let names: Vec<String> = snapshot(&out).into_iter().map(|f| f.0).collect();
+    assert_eq!(names, ["frame.png", "index.bin", "index.png", "stats.json"], "stale files of the RTL run");
+    assert!(leftovers(&out).is_empty(), "{:?}", leftovers(&out));
+}
+
+/// Issue 18: faults in the middle of writing (a file-size limit, a write that stops halfway) leave the
+/// previous result whole and nothing half-written beside it.
+#[test]
+fn a_write_that_fails_halfway_keeps_the_previous_result_whole() {
+    let out = temp_dir("faults").join("out");
+    let o = out.to_str().unwrap();
+    let (ok, _, err) = run(&["render", "--scene", "polyhedron", "--size", "32x20", "--out", o]);
+    assert!(ok, "{err}");
+    let before = snapshot(&out);
+    // A file-size limit of 8 KiB: the 640x480 frame.png cannot be written.
+    let bin = env!("CARGO_BIN_EXE_idxrender");
+    let o2 = Command::new("sh").arg("-c").arg(format!("ulimit -f 8; exec '{bin}' render --scene teapot --size 640x480 --out '{o}'")).output().unwrap();
+    let err = String::from_utf8_lossy(&o2.stderr);
+    assert!(!o2.status.success() && err.contains("File too large") && !err.contains("panicked"), "{err}");
+    assert!(snapshot(&out) == before, "the previous result changed under a file-size limit");
+    assert!(leftovers(&out).is_empty(), "{:?}", leftovers(&out));
+    // The third file of the run stops halfway (as a full disk would).
+    let o3 = bin_with_fault(2).args(["render", "--scene", "castle", "--size", "32x20", "--out", o]).output().unwrap();
+    let err = String::from_utf8_lossy(&o3.stderr);
+    assert!(!o3.status.success() && err.contains("injected fault"), "{err}");
+    assert!(snapshot(&out) == before, "the previous result changed after a write failed halfway");
+    assert!(leftovers(&out).is_empty(), "{:?}", leftovers(&out));
+}
+
+fn bin_with_fault(after: usize) -> Command {
+    let mut c = bin();
+    c.env("IDXRENDER_FAIL_AFTER_WRITES", after.to_string());
+    c
+}
+
+/// A folder with files this program does not write is not replaced: its files could be the user's.
+#[test]
+fn a_folder_with_other_files_is_refused_and_left_as_it_was() {
+    let out = temp_dir("foreign");
+    std::fs::write(out.join("notes.txt"), "mine").unwrap();
+    assert_clean_error(&["render", "--scene", "polyhedron", "--size", "32x20", "--out", out.to_str().unwrap()], "notes.txt");
+    assert_eq!(std::fs::read_to_string(out.join("notes.txt")).unwrap(), "mine");
+    assert_eq!(snapshot(&out).len(), 1);
+}
