@@ -147,6 +147,15 @@ pub struct RtlChipset {
     vcd_scope: VcdScope,
     /// How the host loop drives the streams.
     pub drive: HostDrive,
+    /// Where the waveform goes, for the watchdog's message.
+    vcd_path: Option<PathBuf>,
+}
+
+/// Cycles without any activity at the ports (a command or result taken, a memory read or write, a
+/// pixel, a Phong constant written) after which a run is stopped as hung: more than any one triangle can
+/// need (a setup, then a bounding box of the whole screen with no covered pixel).
+pub fn watchdog_cycles(screen: Screen) -> u64 {
+    screen.pixels() as u64 + 1024
 }
 
 /// What a VCD of the chipset holds.
@@ -237,6 +246,7 @@ impl RtlChipset {
         let mut uut = Box::new(ChipsetRtl::new(screen.width, screen.height)?);
         uut.connect_all();
         check_all(uut.as_ref()).map_err(|e| format!("chipset: rust-hdl check failed: {e:?}"))?;
+        let vcd_path = vcd.clone();
         let vcd = match vcd {
             Some(p) => {
                 let f = File::create(&p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
@@ -270,6 +280,7 @@ impl RtlChipset {
             progress: None,
             vcd_scope: scope,
             drive: HostDrive::default(),
+            vcd_path,
         })
     }
 
@@ -527,6 +538,7 @@ impl Chipset for RtlChipset {
         let d = self.drive;
         let mut rng = crate::common::Rng::new(d.seed);
         let (mut rc_presenting, mut setup_presenting) = (false, false);
+        let (watchdog, mut last_activity) = (watchdog_cycles(self.screen), self.cycle);
         while scan_f < nf {
             self.idle_inputs();
             // Random gaps and stalls, drawn in this order every cycle (the Verilator harness does the same).
@@ -594,6 +606,17 @@ impl Chipset for RtlChipset {
                 None
             };
             let draw_bank = u.draw_bank.val() as usize;
+            let active = rc_taken
+                || setup_taken
+                || start_taken
+                || (u.rc_result.valid.val() && res_ready)
+                || (u.video_tvalid.val() && video_ready)
+                || u.z_re.val()
+                || u.z_we.val()
+                || u.id_we.val()
+                || u.is_we.val()
+                || u.t_we.val()
+                || matches!(scan, ScanState::Config(_));
             // The host answers a visible result at once (its command is offered from the next cycle).
             let mut eof = false;
             if let Some(r) = result {
@@ -674,6 +697,19 @@ impl Chipset for RtlChipset {
             if now % 4096 == 0 && res_f < nf {
                 let phase = if frames[res_f].first_tri_taken.is_none() { "clear" } else { "rasterization" };
                 self.report(phase, frames[res_f].results.len() as u64, frames[res_f].tris.len() as u64);
+            }
+            if active {
+                last_activity = now;
+            }
+            if now - last_activity > watchdog {
+                let phase = if res_f < nf { format!("frame {}'s rasterization", res_f + 1) } else { format!("frame {}'s scan-out", scan_f + 1) };
+                let wave = match &self.vcd_path {
+                    Some(p) => format!("the waveform is {}", p.display()),
+                    None => "run again with a VCD (render --vcd) to see why".to_string(),
+                };
+                return Err(format!(
+                    "chipset: no progress for {watchdog} cycles in {phase}, at cycle {now}: no command or result taken, no memory access, no pixel; {wave}"
+                ));
             }
             if now > limit {
                 return Err(format!(

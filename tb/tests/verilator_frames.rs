@@ -304,3 +304,28 @@ fn the_verilated_chipsets_port_waveforms_equal_the_rusthdl_simulations_at_every_
     assert_eq!(b.states.last().map(|s| s.0), Some(10 * (vl.cycle - 1) + 5), "last VCD time vs {} cycles", vl.cycle);
     eprintln!("{} ports equal at {} timestamps ({} cycles)", b.names.len(), b.states.len(), vl.cycle);
 }
+
+/// Issue 18: a run that stops making progress ends at once, naming the phase and the cycle, in both
+/// backends. Here the host never takes an RC result (back-pressure always on), so the RC stalls after
+/// its first triangle; the run stops one watchdog period later, not after the cycle budget.
+#[test]
+fn a_run_that_stops_making_progress_ends_at_once_naming_the_phase_and_cycle() {
+    if verilator_missing("watchdog") {
+        return;
+    }
+    let screen = Screen::new(32, 20).unwrap();
+    let mesh = builtin::polyhedron();
+    let opts = RenderOptions::for_scene(&mesh, screen, Shading::Gouraud);
+    let stuck = HostDrive { seed: 1, gap_percent: 0, stall_percent: 100 };
+    let watchdog = tb::chipset::watchdog_cycles(screen);
+    let mut rtl = RtlChipset::new(screen, None).unwrap().with_drive(stuck);
+    let e = render_with(&mesh, &opts, &mut rtl).err().expect("a stuck run must fail");
+    assert!(e.contains("no progress") && e.contains("frame 1's rasterization") && e.contains("render --vcd"), "{e}");
+    // The first frame's clear (W*H cycles of writes), the first triangle (at most W*H candidates), then
+    // one watchdog period of silence; the cycle budget would have been over a million.
+    assert!(rtl.cycle <= 2 * screen.pixels() as u64 + watchdog + 200, "stopped after {} cycles", rtl.cycle);
+    let mut vl = VerilatorChipset::new(screen, None).unwrap().with_drive(stuck);
+    let e2 = render_with(&mesh, &opts, &mut vl).err().expect("a stuck Verilator run must fail");
+    assert!(e2.contains("no progress") && e2.contains("frame 1's rasterization"), "{e2}");
+    assert_eq!(e.split("at cycle").nth(1).map(|t| t.split(':').next()), e2.split("at cycle").nth(1).map(|t| t.split(':').next()), "both stop in the same cycle");
+}

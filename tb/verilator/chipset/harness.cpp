@@ -79,7 +79,7 @@ struct Failure {
 
 class Bench {
   public:
-    Bench(uint32_t w, uint32_t h, const char* vcd) : width(w), height(h), n(size_t(w) * h) {
+    Bench(uint32_t w, uint32_t h, const char* vcd) : width(w), height(h), n(size_t(w) * h), vcd_name(vcd ? vcd : "") {
         ctx.reset(new VerilatedContext);
 #if VM_TRACE
         if (vcd) ctx->traceEverOn(true);
@@ -153,6 +153,7 @@ class Bench {
   private:
     const uint32_t width, height;
     const size_t n;
+    const std::string vcd_name;
     std::unique_ptr<VerilatedContext> ctx;
     std::unique_ptr<Vchipset> top;
 #if VM_TRACE
@@ -284,6 +285,9 @@ void Bench::run(uint64_t budget) {
     Scan scan = Scan::Wait;
     const uint64_t start = cycle, limit = cycle + budget;
     bool rc_presenting = false, setup_presenting = false;
+    // The watchdog of RtlChipset::run: no activity at the ports for longer than any triangle needs.
+    const uint64_t watchdog = uint64_t(n) + 1024;
+    uint64_t last_activity = cycle;
     while (scan_f < nf) {
         idle_inputs();
         // Random gaps and stalls, drawn in RtlChipset::run's order.
@@ -349,6 +353,9 @@ void Bench::run(uint64_t budget) {
             word = top->video_tdata;
         }
         const size_t draw_bank = top->draw_bank;
+        const bool active = rc_taken || setup_taken || start_taken || (top->rc_result__024valid && res_ready) ||
+                            (top->video_tvalid && video_ready) || top->z_re || top->z_we || top->id_we || top->is_we ||
+                            top->t_we || scan == Scan::Config;
         // The host answers a visible result at once (its command is offered from the next cycle).
         bool eof = false;
         if (result) {
@@ -430,6 +437,15 @@ void Bench::run(uint64_t budget) {
         if (cycle % PROGRESS_EVERY == 0 && res_f < nf) {
             const Frame& fr = frames[res_f];
             progress(fr.first_tri_taken < 0 ? "clear" : "rasterization", fr.results, fr.words.size() / RC_WORDS - 2);
+        }
+        if (active) last_activity = cycle;
+        if (cycle - last_activity > watchdog) {
+            const std::string phase = res_f < nf ? "frame " + std::to_string(res_f + 1) + "'s rasterization"
+                                                 : "frame " + std::to_string(scan_f + 1) + "'s scan-out";
+            const std::string wave = vcd_name.empty() ? "run again with a VCD (render --vcd) to see why"
+                                                      : "the waveform is " + vcd_name;
+            throw Failure{"chipset: no progress for " + std::to_string(watchdog) + " cycles in " + phase + ", at cycle " +
+                          std::to_string(cycle) + ": no command or result taken, no memory access, no pixel; " + wave};
         }
         if (cycle > limit) {
             throw Failure{"chipset: " + std::to_string(nf) + " frames not done after " + std::to_string(cycle - start) +
