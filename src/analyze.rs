@@ -9,9 +9,8 @@
 //! text uses the DejaVu Sans font compiled in from the `dejavu` crate (plotters' `ab_glyph` feature), so
 //! no system font is needed.
 
-use crate::cli::{Cli, Command, CullArg, RenderArgs};
+use crate::args::{CullArg, RenderArgs};
 use crate::output::{png_bytes, write_atomic};
-use clap::Parser;
 use golden::analysis::buffers::{Arch, Buffer};
 use golden::analysis::levels::{self, paper, HardwareLevel, TABLE_IV};
 use golden::analysis::measure::{measure, reorder, DrawOrder, Measured};
@@ -89,17 +88,20 @@ enum Source {
 /// line so that the camera, culling and front face are exactly `render`'s defaults. The index is made
 /// wide (24 bits): the analysis counts, it does not model an index width.
 fn render_args(src: &Source, (w, h): (u32, u32), cull: CullArg) -> Result<RenderArgs, String> {
-    let mut argv: Vec<OsString> = vec!["idxrender".into(), "render".into()];
+    let mut argv: Vec<OsString> = vec!["render".into()];
     match src {
         Source::Builtin(n) => argv.extend(["--scene".into(), n.into()]),
         Source::Obj(p) => argv.extend(["--obj".into(), p.clone().into_os_string()]),
     }
     argv.extend(["--size".into(), format!("{w}x{h}").into(), "--index-bits".into(), "24".into()]);
     argv.extend(["--cull".into(), cull_name(cull).into()]);
-    match Cli::try_parse_from(argv).map_err(|e| e.to_string())?.command {
-        Command::Render(a) => Ok(a),
-        _ => Err("internal error: the render arguments did not parse as `render`".into()),
+    // Parsed by the same definitions as `render`'s arguments.
+    #[derive(clap::Parser)]
+    struct RenderCommand {
+        #[command(flatten)]
+        args: RenderArgs,
     }
+    Ok(<RenderCommand as clap::Parser>::try_parse_from(argv).map_err(|e| e.to_string())?.args)
 }
 
 fn cull_name(c: CullArg) -> &'static str {
@@ -147,10 +149,10 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), String> {
     let mut names = Vec::new();
     for src in &sources {
         let first = render_args(src, sizes[0], args.cull)?;
-        let mesh = crate::cli::load_scene(&first)?;
+        let mesh = crate::args::load_scene(&first)?;
         names.push(mesh.name.clone());
         for &size in &sizes {
-            let opts = crate::cli::render_options(&render_args(src, size, args.cull)?, &mesh)?;
+            let opts = crate::args::render_options(&render_args(src, size, args.cull)?, &mesh)?;
             let ordered = reorder(&mesh, &opts.camera, args.order.golden());
             measured.push(measure(&ordered, &opts).map_err(|e| format!("{} at {}x{}: {e}", mesh.name, size.0, size.1))?);
         }

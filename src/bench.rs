@@ -20,7 +20,7 @@
 //! Arguments are checked (scenes, the FPGA report, the output path) before anything is measured, and
 //! the files are written only at the end, each through a rename: a failed run leaves earlier output.
 
-use crate::cli::{load_scene, render_options, RenderArgs};
+use crate::args::{load_scene, render_options, RenderArgs};
 use golden::analysis::levels::{HardwareLevel, TABLE_IV};
 use golden::format::Screen;
 use golden::raster::TriResult;

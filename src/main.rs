@@ -5,6 +5,7 @@
 //! what an earlier run produced intact.
 
 mod analyze;
+mod args;
 mod bench;
 mod cli;
 mod fpga;

@@ -11,7 +11,7 @@
 //! wide). `--vcd` writes `frame.vcd` (OPP), `shade.vcd` (shading stage) and `filter.vcd` (filter
 //! stage).
 
-use crate::cli::{BackendArg, RenderArgs};
+use crate::args::{BackendArg, RenderArgs};
 use golden::proof::cycle_opp::run_opp;
 use golden::proof::filter::FilterArea;
 use golden::proof::cycle_filter2x2::check_box_size;

@@ -8,7 +8,7 @@
 //! writes `cycles.json` (cycles per phase), `chipset.v` (the Verilog of the simulated top, for this
 //! screen size) and, with `--vcd`, `frame.vcd` (the top's ports; `--vcd-full`: every signal).
 
-use crate::cli::{BackendArg, RenderArgs};
+use crate::args::{BackendArg, RenderArgs};
 use golden::render::{render, render_frames_with, Frame, RenderOptions};
 use golden::scene::Mesh;
 use golden::shade::{PhongLights, Shading};

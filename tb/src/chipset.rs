@@ -31,7 +31,7 @@
 //! * `z_reads`: cycles in rasterization with a Z-buffer read, the fragments the RC Z-tested.
 
 use crate::cs::pack::{command_of, record_of, rgb_of, tdata_of};
-use crate::rc::bench::command_word;
+use crate::rc::pack::command_word;
 use golden::cycle::colour_setup::SetupCmd;
 use golden::cycle::rc::RcCmd;
 use golden::format::{Screen, DEPTH_MAX, INDEX_BACKGROUND};

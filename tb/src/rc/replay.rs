@@ -3,7 +3,7 @@
 //! `tb/verilator/rc/tb_rc.v`, under Icarus or Verilator. This is what shows that RustHDL's Verilog
 //! means what its simulation meant.
 
-use super::bench::command_word;
+use super::pack::command_word;
 use crate::common::scratch_dir;
 use golden::cycle::rc::{RcInputs, RcOutputs};
 use golden::format::Screen;

@@ -1,0 +1,237 @@
+//! The arguments of `render` (and of the commands that render the same frames: `analyze`, `bench`):
+//! their types, and the scene and render options they make. Below every command module, so that the
+//! commands use it without importing each other.
+
+use clap::ValueEnum;
+use golden::format::{Screen, INDEX_BITS_DEFAULT};
+use golden::host::{Camera, CAMERA_RANGE};
+use golden::raster::{CullMode, FrontFace};
+use golden::render::RenderOptions;
+use golden::scene::{builtin, obj, Mesh, Winding};
+use golden::shade::Shading;
+use std::path::PathBuf;
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ArchArg {
+    /// Index rendering: seed 001's RC + CS chipset.
+    Index,
+    /// PROOF's object-processor pipeline (seed 002), anti-aliased.
+    Proof,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum BackendArg {
+    /// The algorithmic golden model.
+    Golden,
+    /// The RustHDL simulation of the RTL.
+    Rtl,
+    /// The generated Verilog of chipset under Verilator.
+    Verilator,
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum)]
+pub enum ShadingArg {
+    Flat,
+    Gouraud,
+    Phong,
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum)]
+pub enum CullArg {
+    Back,
+    Front,
+    None,
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum)]
+pub enum FrontArg {
+    Ccw,
+    Cw,
+}
+
+#[derive(clap::Args, Debug)]
+pub struct RenderArgs {
+    /// A built-in scene: polyhedron, teapot, castle, dolphins.
+    #[arg(long, conflicts_with = "obj")]
+    pub scene: Option<String>,
+    /// A Wavefront OBJ file to render instead of a built-in scene.
+    #[arg(long)]
+    pub obj: Option<PathBuf>,
+    /// Teapot tessellation (GLUT's grid, 1..=64; default 14 as glutSolidTeapot). Only with --scene teapot.
+    #[arg(long)]
+    pub grid: Option<u32>,
+    /// Image size WxH (each 1..=1024).
+    #[arg(long, default_value = "320x200")]
+    pub size: String,
+    /// Eye position x,y,z (gluLookAt). Default: frames the whole model.
+    #[arg(long, allow_hyphen_values = true)]
+    pub eye: Option<String>,
+    /// Point looked at x,y,z. Default: the model's bounding-sphere centre.
+    #[arg(long, allow_hyphen_values = true)]
+    pub center: Option<String>,
+    /// Up vector x,y,z.
+    #[arg(long, default_value = "0,1,0", allow_hyphen_values = true)]
+    pub up: String,
+    /// Vertical field of view in degrees (gluPerspective).
+    #[arg(long, default_value_t = 40.0, allow_hyphen_values = true)]
+    pub fovy: f64,
+    /// Near plane distance. Default: from the bounding sphere.
+    #[arg(long, allow_hyphen_values = true)]
+    pub near: Option<f64>,
+    /// Far plane distance. Default: from the bounding sphere.
+    #[arg(long, allow_hyphen_values = true)]
+    pub far: Option<f64>,
+    #[arg(long, value_enum, default_value_t = ShadingArg::Gouraud)]
+    pub shading: ShadingArg,
+    /// Which faces to cull.
+    #[arg(long, value_enum, default_value_t = CullArg::Back)]
+    pub cull: CullArg,
+    /// Front-face winding. Default: the scene's own (ccw; cw for GLUT's teapot, which GLUT emits clockwise).
+    #[arg(long, value_enum)]
+    pub front_face: Option<FrontArg>,
+    /// Triangle-index width in bits (0 is reserved for background; default 16). Only with --arch index.
+    #[arg(long)]
+    pub index_bits: Option<u32>,
+    /// Output directory.
+    #[arg(long, default_value = "out")]
+    pub out: PathBuf,
+    /// PROOF: object processors in the OPP (default: as many as the frame needs with OP reuse).
+    #[arg(long)]
+    pub ops: Option<usize>,
+    /// PROOF: FIFO depth of each object processor, in list slots (default 1).
+    #[arg(long)]
+    pub fifo_depth: Option<usize>,
+    /// PROOF: filter area, 1x1 (default) or 2x2 pixels.
+    #[arg(long)]
+    pub filter: Option<String>,
+    /// Rendering architecture.
+    #[arg(long, value_enum, default_value_t = ArchArg::Index)]
+    pub arch: ArchArg,
+    /// What computes the frame.
+    #[arg(long, value_enum, default_value_t = BackendArg::Golden)]
+    pub backend: BackendArg,
+    /// Also write the simulation's waveform (frame.vcd) into --out (RTL backends): the top-level ports.
+    #[arg(long)]
+    pub vcd: bool,
+    /// With --vcd: every signal of every block instead of the top-level ports (hundreds of MB per frame).
+    #[arg(long, requires = "vcd")]
+    pub vcd_full: bool,
+    /// Render the scene this many times back to back (1..=64; RTL backends overlap the frames as the
+    /// chipset does) and write the last frame's files; every frame is compared with the golden one.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES as i64))]
+    pub frames: u32,
+}
+
+/// The most frames one `render --frames` run takes (each frame's host state is kept until the run ends).
+pub const MAX_FRAMES: u32 = 64;
+
+fn parse_size(s: &str) -> Result<Screen, String> {
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(|| format!("--size '{s}' is not WxH (e.g. 320x200)"))?;
+    let w: u32 = w.trim().parse().map_err(|_| format!("--size '{s}': width '{w}' is not a whole number"))?;
+    let h: u32 = h.trim().parse().map_err(|_| format!("--size '{s}': height '{h}' is not a whole number"))?;
+    Screen::new(w, h).map_err(|e| format!("--size: {e}"))
+}
+
+fn parse_vec3(name: &str, s: &str) -> Result<[f64; 3], String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    if parts.len() != 3 {
+        return Err(format!("--{name} '{s}' is not three comma-separated numbers x,y,z"));
+    }
+    let mut v = [0.0f64; 3];
+    for (k, p) in parts.iter().enumerate() {
+        v[k] = p.trim().parse().map_err(|_| format!("--{name} '{s}': '{p}' is not a number"))?;
+        if !v[k].is_finite() {
+            return Err(format!("--{name} '{s}': '{p}' is not a finite number"));
+        }
+    }
+    Ok(v)
+}
+
+/// Load the scene the arguments name.
+pub fn load_scene(args: &RenderArgs) -> Result<Mesh, String> {
+    match (&args.scene, &args.obj) {
+        (_, Some(path)) if args.grid.is_some() => Err(format!("--grid applies to --scene teapot only (GLUT's tessellation), not to {}", path.display())),
+        (_, Some(path)) => {
+            let (mesh, warnings) = obj::load_obj_with_warnings(path)?;
+            for w in warnings {
+                eprintln!("warning: {w}");
+            }
+            Ok(mesh)
+        }
+        (Some(name), None) if name == "teapot" => {
+            let grid = args.grid.unwrap_or(builtin::TEAPOT_GRID);
+            if !(1..=64).contains(&grid) {
+                return Err(format!("--grid {grid} is not in 1..=64"));
+            }
+            Ok(builtin::teapot(grid))
+        }
+        (Some(name), None) if args.grid.is_some() => Err(format!("--grid applies to --scene teapot only (GLUT's tessellation); {name} has its own triangles")),
+        (Some(name), None) => builtin::scene(name),
+        (None, None) => Err(format!("say what to render: --scene NAME (one of {}) or --obj FILE", builtin::SCENES.join(", "))),
+    }
+}
+
+/// Build the render options from the arguments and the scene.
+pub fn render_options(args: &RenderArgs, mesh: &Mesh) -> Result<RenderOptions, String> {
+    let screen = parse_size(&args.size)?;
+    let up = parse_vec3("up", &args.up)?;
+    if !(args.fovy.is_finite() && args.fovy > 0.0 && args.fovy < 180.0) {
+        return Err(format!("--fovy {:?}: the vertical field of view must be in (0, 180) degrees", args.fovy));
+    }
+    let mut camera = Camera::framing_aspect(mesh, [0.3, 0.45, 1.0], args.fovy, screen.width as f64 / screen.height as f64);
+    camera.up = up;
+    let in_range = |name: &str, p: [f64; 3]| -> Result<[f64; 3], String> {
+        match p.iter().find(|v| v.abs() > CAMERA_RANGE) {
+            Some(v) => Err(format!("--{name} {}: {v:e} is outside +-{CAMERA_RANGE:e}, the range of camera positions", p.map(|c| format!("{c:?}")).join(","))),
+            None => Ok(p),
+        }
+    };
+    if let Some(c) = &args.center {
+        camera.center = in_range("center", parse_vec3("center", c)?)?;
+    }
+    if args.eye.is_none() && camera.eye.iter().any(|v| v.abs() > CAMERA_RANGE) {
+        return Err(format!(
+            "--fovy {:?}: the default view would put the eye {:.3e} away to frame the whole model in so narrow a field; \
+             camera positions are limited to +-{CAMERA_RANGE:e}: use a wider --fovy or give --eye",
+            args.fovy,
+            camera.eye.iter().fold(0.0f64, |m, v| m.max(v.abs()))
+        ));
+    }
+    if let Some(e) = &args.eye {
+        camera.eye = in_range("eye", parse_vec3("eye", e)?)?;
+        let (n, f) = Camera::near_far_for(mesh, camera.eye);
+        camera.near = n;
+        camera.far = f;
+    }
+    if let Some(n) = args.near {
+        camera.near = n;
+    }
+    if let Some(f) = args.far {
+        camera.far = f;
+    }
+    camera.validate()?;
+    let front = match args.front_face {
+        Some(FrontArg::Ccw) => FrontFace::Ccw,
+        Some(FrontArg::Cw) => FrontFace::Cw,
+        None => match mesh.front_face {
+            Winding::Ccw => FrontFace::Ccw,
+            Winding::Cw => FrontFace::Cw,
+        },
+    };
+    let shading = match args.shading {
+        ShadingArg::Flat => Shading::Flat,
+        ShadingArg::Gouraud => Shading::Gouraud,
+        ShadingArg::Phong => Shading::Phong,
+    };
+    Ok(RenderOptions {
+        camera,
+        cull: match args.cull {
+            CullArg::Back => CullMode::Back,
+            CullArg::Front => CullMode::Front,
+            CullArg::None => CullMode::None,
+        },
+        front,
+        index_bits: args.index_bits.unwrap_or(INDEX_BITS_DEFAULT),
+        ..RenderOptions::for_scene(mesh, screen, shading)
+    })
+}
