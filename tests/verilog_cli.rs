@@ -17,16 +17,6 @@ fn scratch(name: &str) -> PathBuf {
     d
 }
 
-/// Verilator warnings waived, each for a reason in rust-hdl 0.46's code generator (the same list as
-/// tb/tests/rc_verilog.rs and tb/src/cs/replay.rs).
-const LINT_WAIVERS: &[(&str, &str)] = &[
-    ("-Wno-DECLFILENAME", "rust-hdl writes every module of the hierarchy into one file"),
-    ("-Wno-UNUSEDPARAM", "rust-hdl copies each block's localparams into every child DFF module"),
-    ("-Wno-WIDTH", "rust-hdl emits 32'h/64'h literals for enum values and struct field offsets"),
-    ("-Wno-UNUSEDSIGNAL", "slices drop bits on purpose; rust-hdl cannot slice a cast, so a slice reads a whole-width local"),
-    ("-Wno-UNOPTFLAT", "rust-hdl emits one always @(*) per module, so driving a child's inputs and reading its outputs looks circular to Verilator"),
-];
-
 /// (name, direction, width) of the ports of `module top(` in a Verilog text, read independently of
 /// the CLI's own parser.
 fn ports_of(v: &str, top: &str) -> Vec<(String, String, usize)> {
@@ -107,16 +97,10 @@ fn verilog_of_every_top_passes_verilator_lint_all_with_named_waivers() {
     }
     let dir = scratch("verilog_lint");
     generate(&dir);
+    // Each top with its waivers from the project's one list (`tb::lint::LINT_WAIVERS`).
     for (top, _) in hdl::TOPS {
-        let o = Command::new("verilator")
-            .current_dir(&dir)
-            .args(["--lint-only", "-Wall", "--top-module", top])
-            .args(LINT_WAIVERS.iter().map(|w| w.0))
-            .arg(format!("{top}.v"))
-            .output()
-            .unwrap();
-        let text = String::from_utf8_lossy(&o.stderr);
-        assert!(o.status.success() && !text.contains("%Warning") && !text.contains("%Error"), "verilator lint of {top}:\n{text}");
+        let text = std::fs::read_to_string(dir.join(format!("{top}.v"))).unwrap();
+        tb::lint::lint(&text, top, &dir.join("lint")).unwrap_or_else(|e| panic!("{e}"));
     }
 }
 

@@ -12,6 +12,7 @@
 pub mod chipset;
 pub mod common;
 pub mod cs;
+pub mod lint;
 pub mod rc;
 pub mod proof;
 pub mod verilator;

@@ -11,17 +11,6 @@ use tb::rc::bench::{run_model, Drive};
 use tb::rc::replay::{replay, write_rc_verilog, Simulator, VectorWriter};
 use tb::rc::stimulus::{frame, hand_made, hand_made_screen, scene_triangles};
 
-/// Verilator warnings waived, each for a reason that lies in rust-hdl 0.46's code generator, not in
-/// the design (GUIDE §4):
-const LINT_WAIVERS: &[(&str, &str)] = &[
-    ("-Wno-DECLFILENAME", "rust-hdl writes every module of the hierarchy into one file"),
-    ("-Wno-UNUSEDPARAM", "rust-hdl copies each block's localparams (enum states, constants) into every child DFF module"),
-    ("-Wno-WIDTH", "rust-hdl emits 32'h/64'h literals for enum values and struct field offsets"),
-    ("-Wno-UNUSEDSIGNAL", "slices drop bits on purpose (the 4 subpixel bits of >> 4, the product bits above a proven width, the 13-bit box values' high bits once clamped; the divider's request.ready, as the setup only starts it when it is idle); rust-hdl cannot slice a cast, so each slice reads a whole-width local"),
-    ("-Wno-UNOPTFLAT", "rust-hdl emits a block's combinational logic as one always @(*), so driving a child multiplier's inputs and reading its product in the same block looks circular to Verilator; there is no real loop (check_all finds none, and the simulations settle)"),
-];
-
-
 #[test]
 fn rc_verilog_has_the_top_module_rc() {
     let v = hdl::verilog_top("rc").unwrap();
@@ -37,14 +26,8 @@ fn rc_verilog_passes_verilator_lint_all_with_named_waivers() {
     }
     let dir = scratch_dir("rc_lint");
     let v = write_rc_verilog(Screen::new(320, 200).unwrap(), &dir).unwrap();
-    let o = Command::new("verilator")
-        .args(["--lint-only", "-Wall", "--top-module", "rc"])
-        .args(LINT_WAIVERS.iter().map(|w| w.0))
-        .arg(&v)
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success() && !text.contains("%Warning") && !text.contains("%Error"), "verilator lint:\n{text}");
+    let text = std::fs::read_to_string(&v).unwrap();
+    tb::lint::lint(&text, "rc", &dir).unwrap_or_else(|e| panic!("{e}"));
 }
 
 #[test]

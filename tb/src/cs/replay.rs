@@ -153,30 +153,6 @@ pub fn replay_iverilog(verilog: &str, top: &str, rec: &Recording, dir: &Path) ->
     Ok(ReplayReport { cycles: rec.cycles(), seconds })
 }
 
-/// Verilator warnings the generated Verilog of rust-hdl 0.46 cannot avoid, each with its reason.
-pub const LINT_WAIVERS: &[(&str, &str)] = &[
-    ("WIDTH", "rust-hdl emits `bit_cast` as `x & N'hmask` (wider than x), 64-bit struct-field offsets and 32-bit `index() == i` compares, whatever the operand widths"),
-    ("UNUSEDPARAM", "rust-hdl copies every enum localparam into each DFF module that holds the state"),
-    ("DECLFILENAME", "all modules of a top are emitted into one file"),
-    ("UNOPTFLAT", "colour_setup only: rust-hdl emits one always @(*) block per module, so a block that drives a child multiplier's or reciprocal's inputs and reads its outputs is one vertex on a cycle for Verilator, though no signal depends on itself (rust-hdl's check_all finds no logic loop and Icarus settles every cycle); a scheduling note, not a loop"),
-    ("UNUSEDSIGNAL", "intended: the CS does not read the record's material (Phong only) nor the FIFO's debug overflow flag; truncations (diff[63:36], the rounding shift's cx8[3:0], size-1 bit 10)"),
-];
-
-/// `verilator --lint-only -Wall` with [`LINT_WAIVERS`]; returns the log on failure.
-pub fn lint(verilog: &str, top: &str, dir: &Path) -> Result<(), String> {
-    std::fs::create_dir_all(dir).map_err(|e| e.to_string())?;
-    let file = dir.join(format!("{top}.v"));
-    std::fs::write(&file, verilog).map_err(|e| e.to_string())?;
-    let mut args = vec!["--lint-only".to_string(), "-Wall".to_string(), "--top-module".to_string(), top.to_string()];
-    args.extend(LINT_WAIVERS.iter().map(|w| format!("-Wno-{}", w.0)));
-    args.push(file.display().to_string());
-    let out = Command::new("verilator").args(&args).output().map_err(|e| format!("cannot run verilator: {e}"))?;
-    if !out.status.success() {
-        return Err(format!("verilator --lint-only -Wall on {top}:\n{}", String::from_utf8_lossy(&out.stderr)));
-    }
-    Ok(())
-}
-
 /// Cell counts of `yosys synth_ice40 -dsp`.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct SynthFigures {

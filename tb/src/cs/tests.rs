@@ -4,7 +4,7 @@
 use super::color_shader_bench::{self as csb, CsDrive, FrameSpec};
 use super::colour_setup_bench::{self as setb, SetupDrive};
 use super::frames::record;
-use super::replay::{lint, replay_iverilog, synth_ice40};
+use super::replay::{replay_iverilog, synth_ice40};
 use crate::common::{require_tools, scratch_dir, Rng};
 use golden::cycle::color_shader::{phong_config, CsConfigWrite, CsMemories, CS_PIPELINE_CYCLES};
 use golden::cycle::colour_setup::{SetupCmd, SETUP_INTERVAL, SETUP_LATENCY};
@@ -410,7 +410,7 @@ fn colour_setup_and_cs_pass_verilator_lint() {
     }
     for top in ["colour_setup", "cs"] {
         let v = hdl::verilog_top(top).unwrap();
-        lint(&v, top, &scratch_dir(&format!("cs/lint_{top}"))).unwrap();
+        crate::lint::lint(&v, top, &scratch_dir(&format!("cs/lint_{top}"))).unwrap_or_else(|e| panic!("{e}"));
     }
 }
 

@@ -149,19 +149,7 @@ fn filter_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_witho
     synth_without_latches(&dir, "proof_filter8", &v);
 }
 
-/// `verilator --lint-only -Wall` of a filter top, clean with the project's named waivers: WIDTH
-/// (rust-hdl's 32-bit literals and shift counts), DECLFILENAME (one file), UNUSEDSIGNAL (table address
-/// bits above the table size, the low bits of the subpixel distances: only the signs are used, the
-/// fraction bits the output drops).
+/// `verilator --lint-only -Wall` of a filter top, clean with the project's waivers (`crate::lint`).
 pub(super) fn lint_clean(dir: &std::path::Path, top: &str, v: &str) {
-    use std::process::Command;
-    let file = dir.join(format!("{top}.v"));
-    std::fs::write(&file, v).unwrap();
-    let o = Command::new("verilator")
-        .args(["--lint-only", "-Wall", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSEDSIGNAL", "--top-module", top])
-        .arg(&file)
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success() && !text.contains("%Warning") && !text.contains("%Error"), "verilator lint of {top}:\n{text}");
+    crate::lint::lint(v, top, dir).unwrap_or_else(|e| panic!("{e}"));
 }

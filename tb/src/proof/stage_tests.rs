@@ -108,7 +108,6 @@ fn two_light_shading_stage_with_every_gloss_matches_its_cycle_model_and_the_gold
 
 #[test]
 fn shading_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_without_latches() {
-    use std::process::Command;
     if !require_tools("shading_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_without_latches", &["iverilog", "verilator", "yosys"]) {
         return;
     }
@@ -129,18 +128,9 @@ fn shading_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_with
         println!("{sim}: {verdict}");
         assert!(verdict.contains(&cycles.to_string()));
     }
-    // Lint the top that `idxrender verilog --block proof_shade` writes. Waivers: WIDTH (rust-hdl's
-    // 32-bit literals), DECLFILENAME (one file), UNUSEDSIGNAL (table address bits above the table size,
-    // fraction bits the colour drops, slot fields the stage does not forward).
+    // Lint the top that `idxrender verilog --block proof_shade` writes, with the project's waivers.
     let top = hdl::verilog_top("proof_shade").unwrap();
-    std::fs::write(dir.join("proof_shade.v"), &top).unwrap();
-    let o = Command::new("verilator")
-        .args(["--lint-only", "-Wall", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSEDSIGNAL", "--top-module", "proof_shade"])
-        .arg(dir.join("proof_shade.v"))
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success() && !text.contains("%Warning") && !text.contains("%Error"), "verilator lint:\n{text}");
+    crate::lint::lint(&top, "proof_shade", &dir).unwrap_or_else(|e| panic!("{e}"));
     synth_without_latches(&dir, "proof_shade8", &v);
 }
 

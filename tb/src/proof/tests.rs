@@ -192,16 +192,7 @@ fn opp_verilog_lints_clean_with_named_waivers_and_synthesizes_for_ice40_without_
     // Lint the 8-OP top that `idxrender verilog --block opp` writes.
     let v8 = hdl::verilog_top("opp").unwrap();
     std::fs::write(dir.join("opp.v"), &v8).unwrap();
-    // Waivers: WIDTH (rust-hdl's 32-bit literals, GUIDE §4), DECLFILENAME (all modules in one file),
-    // UNUSEDSIGNAL (the start values in the parameter register are read only at load, and the fraction
-    // bits the entry drops).
-    let o = Command::new("verilator")
-        .args(["--lint-only", "-Wall", "-Wno-WIDTH", "-Wno-DECLFILENAME", "-Wno-UNUSEDSIGNAL", "--top-module", "opp"])
-        .arg(dir.join("opp.v"))
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success() && !text.contains("%Warning") && !text.contains("%Error"), "verilator lint:\n{text}");
+    crate::lint::lint(&v8, "opp", &dir).unwrap_or_else(|e| panic!("{e}"));
     // Synthesize a one-OP pipeline (the 8-OP figures in docs/proof.md come from the same flow on
     // `opp`; it takes minutes, too long for every test run).
     let v1 = hdl::proof::verilog_opp("opp1", 1, 1).unwrap();

@@ -54,12 +54,9 @@ use std::time::Instant;
 /// The harness source, compiled into this crate so that the cache key is what gets built.
 pub const HARNESS_CPP: &str = include_str!("../../verilator/chipset/harness.cpp");
 
-/// Verilator warnings on the generated Verilog that the build waives, each with its reason (the same
-/// reasons as `crate::cs::replay::LINT_WAIVERS`, which lists every waiver of `-Wall`).
-pub const BUILD_WAIVERS: &[(&str, &str)] = &[
-    ("WIDTH", "rust-hdl emits `bit_cast` as `x & N'hmask` (wider than x), 64-bit struct-field offsets and 32-bit `index() == i` compares, whatever the operand widths"),
-    ("UNOPTFLAT", "colour_setup: rust-hdl emits one always @(*) block per module, so a block that drives a child's inputs and reads its outputs is one vertex on a cycle for Verilator's scheduler, though no signal depends on itself; a scheduling note, not a loop"),
-];
+/// The Verilator warnings the build waives: those of `crate::lint::LINT_WAIVERS` that a build
+/// without `-Wall` still reports (each with its reason there).
+pub const BUILD_WAIVERS: &[&str] = &["WIDTH", "UNOPTFLAT"];
 
 /// Verilator configuration of the ports-only VCD: `--trace-depth 1` keeps the top-level ports (scope
 /// `uut`) but also the `chipset` module's own signals one level down; this switches those off.
@@ -102,7 +99,7 @@ fn fnv1a(parts: &[&[u8]]) -> u64 {
 
 fn verilator_flags(vcd: Option<VcdScope>) -> Vec<String> {
     let mut f: Vec<String> = ["--cc", "--exe", "--build", "-O3", "-j", "2", "--top-module", "chipset", "-o", "Vchipset"].iter().map(|s| s.to_string()).collect();
-    f.extend(BUILD_WAIVERS.iter().map(|w| format!("-Wno-{}", w.0)));
+    f.extend(BUILD_WAIVERS.iter().map(|w| format!("-Wno-{w}")));
     match vcd {
         None => {}
         Some(VcdScope::Ports) => f.extend(["--trace", "--trace-depth", "1"].iter().map(|s| s.to_string())),
