@@ -69,11 +69,19 @@ pub fn load_obj_with_warnings(path: &Path) -> Result<(Mesh, Vec<String>), String
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let mtl_problems = std::cell::RefCell::new(Vec::new());
     let (models, materials) = tobj::load_obj_buf(&mut checked.text.as_bytes(), &options, |mtl| {
-        let r = tobj::load_mtl(dir.join(mtl));
-        if let Err(e) = &r {
-            mtl_problems.borrow_mut().push(format!("{}: material library {} cannot be used ({e}): its faces are grey plastic", path.display(), dir.join(mtl).display()));
+        // The library is checked line by line first: tobj panics on a colour with fewer than three
+        // numbers (found by the loader's fuzzing, golden/tests/obj_fuzz.rs).
+        let file = dir.join(mtl);
+        let r = check_mtl(&file).map_err(|e| (e, tobj::LoadError::MaterialParseError)).and_then(|text| {
+            tobj::load_mtl_buf(&mut text.as_bytes()).map_err(|e| (e.to_string(), e))
+        });
+        match r {
+            Ok(m) => Ok(m),
+            Err((why, e)) => {
+                mtl_problems.borrow_mut().push(format!("{}: material library {} cannot be used ({why}): its faces are grey plastic", path.display(), file.display()));
+                Err(e)
+            }
         }
-        r
     })
     .map_err(|e| format!("{}: {}", path.display(), e))?;
     warnings.extend(mtl_problems.into_inner());
@@ -141,6 +149,29 @@ pub fn load_obj_with_warnings(path: &Path) -> Result<(Mesh, Vec<String>), String
     }
     mesh.validate().map_err(|e| format!("{}: {}", path.display(), e))?;
     Ok((mesh, warnings))
+}
+
+/// The text of an MTL library whose colour and number statements tobj can parse, or why not (with
+/// the line).
+fn check_mtl(path: &Path) -> Result<String, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| e.to_string())?;
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text).to_string();
+    for (number, raw) in text.lines().enumerate() {
+        let line = raw.split('#').next().unwrap_or("").trim();
+        let mut words = line.split_whitespace();
+        let keyword = words.next().unwrap_or("");
+        let args: Vec<&str> = words.collect();
+        let numbers_ok = |n: usize| args.len() >= n && args[..n].iter().all(|w| w.parse::<f64>().is_ok());
+        let ok = match keyword {
+            "Ka" | "Kd" | "Ks" | "Ke" => numbers_ok(3),
+            "Ns" | "Ni" | "d" => numbers_ok(1),
+            _ => true,
+        };
+        if !ok {
+            return Err(format!("line {}: `{keyword}` needs {} numbers", number + 1, if keyword.starts_with('K') { 3 } else { 1 }));
+        }
+    }
+    Ok(text)
 }
 
 /// An MTL material in our Phong model: Kd, Ka (Kd when missing or black, since a black ambient
@@ -469,6 +500,18 @@ mod tests {
     fn a_byte_order_mark_does_not_hide_the_first_line() {
         let (_, m) = load_text("bom.obj", "\u{feff}v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         assert_eq!(m.unwrap().triangles.len(), 1);
+    }
+
+    /// Found by the fuzzing harness: a colour with one number made tobj panic.
+    #[test]
+    fn a_material_colour_with_too_few_numbers_is_a_warning_naming_the_line() {
+        let dir = temp_dir("shortkd");
+        std::fs::write(dir.join("m.mtl"), "newmtl red\nKd 1\n").unwrap();
+        let path = dir.join("short.obj");
+        std::fs::write(&path, "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n").unwrap();
+        let (m, w) = load_obj_with_warnings(&path).unwrap();
+        assert_eq!(m.triangles.len(), 1);
+        assert!(w.iter().any(|w| w.contains("line 2") && w.contains("`Kd` needs 3 numbers")), "{w:?}");
     }
 
     /// Issue 18: a missing material library gave no word.
