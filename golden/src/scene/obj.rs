@@ -350,6 +350,11 @@ fn ear_clip(p: &[V3]) -> Option<Vec<[usize; 3]>> {
     // Twice the signed area of (a, b, c) in the projection, positive for the polygon's winding.
     let area = |a: usize, b: usize, c: usize| sign * ((q[b][0] - q[a][0]) * (q[c][1] - q[a][1]) - (q[c][0] - q[a][0]) * (q[b][1] - q[a][1]));
     let inside = |x: usize, a: usize, b: usize, c: usize| area(a, b, x) >= 0.0 && area(b, c, x) >= 0.0 && area(c, a, x) >= 0.0;
+    // A convex polygon (no corner turns the other way) is its own fan: linear time for the large
+    // polygons of scanned models, where clipping ears one by one would be quadratic or worse.
+    if (0..n).all(|i| area((i + n - 1) % n, i, (i + 1) % n) >= 0.0) {
+        return Some((1..n - 1).map(|k| [0, k, k + 1]).collect());
+    }
     let mut left: Vec<usize> = (0..n).collect();
     let mut tris = Vec::with_capacity(n - 2);
     while left.len() > 3 {
@@ -500,6 +505,26 @@ mod tests {
     fn a_byte_order_mark_does_not_hide_the_first_line() {
         let (_, m) = load_text("bom.obj", "\u{feff}v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         assert_eq!(m.unwrap().triangles.len(), 1);
+    }
+
+    /// A large convex polygon takes the fan's linear path: a 20 000-gon loads at once.
+    #[test]
+    fn a_large_convex_polygon_is_fanned_in_linear_time() {
+        let n = 20_000;
+        let mut text = String::new();
+        for k in 0..n {
+            let a = k as f64 * std::f64::consts::TAU / n as f64;
+            text.push_str(&format!("v {} {} 0\n", a.cos(), a.sin()));
+        }
+        text.push('f');
+        for k in 1..=n {
+            text.push_str(&format!(" {k}"));
+        }
+        text.push('\n');
+        let t0 = std::time::Instant::now();
+        let (_, m) = load_text("circle.obj", &text);
+        assert_eq!(m.unwrap().triangles.len(), n - 2);
+        eprintln!("20 000-gon loaded in {:.2} s", t0.elapsed().as_secs_f64());
     }
 
     /// Found by the fuzzing harness: a colour with one number made tobj panic.
