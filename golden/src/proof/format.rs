@@ -193,6 +193,37 @@ impl ObjectParams {
         x >= self.x0 && x <= self.x1 && y >= self.y0 && y <= self.y1
     }
 
+    /// The pixels of row `y` of the bounding box that may have an entry: those where no edge says
+    /// "none" (`d <= -t_none` at the centre), from each edge's distance, which is affine along the row
+    /// (`d0 + 2 cos a * i + 2 sin a * j`, exact integers inside the box). A superset, never fewer: the
+    /// caller still asks [`ObjectParams::entry_at`]. `None`: no pixel of the row. Where a distance
+    /// would wrap in its register along the row (it does not inside a box, see the formats table),
+    /// the whole row is returned.
+    pub fn row_span(&self, y: u16) -> Option<(u16, u16)> {
+        if y < self.y0 || y > self.y1 {
+            return None;
+        }
+        let (j, w) = (y as i64 - self.y0 as i64, self.x1 as i64 - self.x0 as i64);
+        let (mut lo, mut hi) = (0i64, w);
+        for e in &self.edges {
+            let f = e.interp();
+            let row = f.v0 + f.dy * j;
+            if [row, row + f.dx * w].iter().any(|&v| wrap(v, EDGE_BITS) != v) {
+                return Some((self.x0, self.x1));
+            }
+            // Possibly covered where row + dx * i > -t, i.e. dx * i > k.
+            let k = -(e.t_none as i64) - row;
+            if f.dx > 0 {
+                lo = lo.max(k.div_euclid(f.dx));
+            } else if f.dx < 0 {
+                hi = hi.min((-k).div_euclid(-f.dx) + 1);
+            } else if row <= -(e.t_none as i64) {
+                return None;
+            }
+        }
+        (lo <= hi).then(|| (self.x0 + lo as u16, self.x0 + hi as u16))
+    }
+
     /// The accumulator values at pixel (x, y) of the bounding box, by direct evaluation.
     pub fn accumulators_at(&self, x: u16, y: u16) -> ([i64; 3], i64, [i64; 3]) {
         let (i, j) = (x as i64 - self.x0 as i64, y as i64 - self.y0 as i64);
