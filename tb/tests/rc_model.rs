@@ -67,3 +67,17 @@ fn several_frames_in_one_stream_without_clear_keep_the_earlier_contents() {
     assert_eq!(run.results, r.results);
     assert!(run.zbuf == r.zbuf && run.ibuf == r.ibuf);
 }
+
+/// Issue 18: a bench that stops making progress ends within one watchdog period (W*H + 1024 cycles
+/// without a command or result taken or a memory access) with an error saying so, not after the
+/// cycle budget. Here the result consumer is never ready, so the RC stalls on its first result.
+#[test]
+fn a_bench_that_stops_making_progress_ends_at_once_with_a_clear_error() {
+    let screen = Screen::new(32, 20).unwrap();
+    let cmds = frame(true, scene_triangles("polyhedron", 6, screen).unwrap());
+    let drive = Drive { gap_percent: 0, stall_percent: 100, seed: 1, garbage: false, stale_depth: false };
+    let t0 = std::time::Instant::now();
+    let e = run_model(screen, &cmds, drive, None).unwrap_err();
+    assert!(e.contains("no progress for 1664 cycles") && e.contains("results"), "{e}");
+    eprintln!("stopped in {:.3} s: {e}", t0.elapsed().as_secs_f64());
+}

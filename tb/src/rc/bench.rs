@@ -198,6 +198,7 @@ fn run_inner(
     };
     let (mut results, mut z_reads, mut z_passes) = (Vec::new(), 0u64, 0u64);
     let start = std::time::Instant::now();
+    let (watchdog, mut last_activity) = (screen.pixels() as u64 + 1024, 0u64);
     for cycle in 0..max_cycles {
         let inp = driver.inputs(cmds, zmem.read_data(), imem.read_data());
         let expected = model.step(&inp);
@@ -225,6 +226,19 @@ fn run_inner(
         let taken = out.res_valid && inp.res_ready;
         if taken {
             results.push(out.res);
+        }
+        // Watchdog: no command or result taken and no memory access for longer than any one
+        // triangle can need (its setup, then a box of the whole screen with no covered pixel).
+        if taken || (inp.cmd_valid && out.cmd_ready) || out.z_re || out.z_we || out.i_we {
+            last_activity = cycle;
+        }
+        if cycle - last_activity > watchdog {
+            return Err(Stop::Error(format!(
+                "no progress for {watchdog} cycles at cycle {cycle}: no command or result taken, no memory access ({} of {} commands accepted, {} results); run with VCD=1 to see why",
+                driver.next,
+                cmds.len(),
+                results.len()
+            )));
         }
         if stop_after == Some(cycle) {
             break;
