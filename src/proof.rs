@@ -12,7 +12,7 @@
 //! stage).
 
 use crate::args::{BackendArg, RenderArgs};
-use golden::proof::cycle_opp::run_opp;
+use golden::proof::cycle_opp::run_opp_with_progress;
 use golden::proof::filter::FilterArea;
 use golden::proof::cycle_filter2x2::check_box_size;
 use golden::proof::render::{list_stats, object_lists, ops_needed, shade_and_filter};
@@ -63,7 +63,17 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     let (lists, cycles, backend, image, stage_cycles) = match args.backend {
         BackendArg::Golden => {
             let lists = object_lists(scene.screen, &scene.objects);
-            let run = run_opp(scene.screen, &scene.objects, n_ops, fifo_depth, None)?;
+            // The OPP's cycle model steps every processor in every cycle: show how far it is.
+            let bar = indicatif::ProgressBar::new(scene.screen.pixels() as u64);
+            bar.set_style(
+                indicatif::ProgressStyle::with_template("  OPP cycle model ({msg}) [{bar:40}] {pos}/{len} pixels ({elapsed})")
+                    .map_err(|e| format!("progress bar: {e}"))?
+                    .progress_chars("=> "),
+            );
+            bar.set_message(format!("{n_ops} OPs"));
+            let run = run_opp_with_progress(scene.screen, &scene.objects, n_ops, fifo_depth, None, &mut |done, _| bar.set_position(done));
+            bar.finish_and_clear();
+            let run = run?;
             if run.lists != lists {
                 return Err("internal error: the OPP cycle model's lists differ from the algorithmic model's".into());
             }

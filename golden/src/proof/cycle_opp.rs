@@ -237,6 +237,20 @@ pub struct OppRun {
 /// Run a frame of objects through the cycle model: `n_ops` OPs with FIFOs of `fifo_depth`, optional
 /// random gaps at both ends.
 pub fn run_opp(screen: Screen, objects: &[ObjectParams], n_ops: usize, fifo_depth: usize, gaps: Option<Gaps>) -> Result<OppRun, String> {
+    run_opp_with_progress(screen, objects, n_ops, fifo_depth, gaps, &mut |_, _| {})
+}
+
+/// [`run_opp`], reporting `progress(pixels done, pixels)` every 4096 cycles: the model steps every
+/// object processor in every cycle, so a frame costs about cycles x processors (a fan of 3000
+/// triangles around one pixel needs some 3000 processors: tens of seconds at 320x200).
+pub fn run_opp_with_progress(
+    screen: Screen,
+    objects: &[ObjectParams],
+    n_ops: usize,
+    fifo_depth: usize,
+    gaps: Option<Gaps>,
+    progress: &mut dyn FnMut(u64, u64),
+) -> Result<OppRun, String> {
     let needed = super::render::ops_needed(screen, objects) as usize;
     if n_ops < needed {
         return Err(format!("the frame needs {needed} object processors (with reuse), but the OPP has {n_ops}"));
@@ -248,10 +262,15 @@ pub fn run_opp(screen: Screen, objects: &[ObjectParams], n_ops: usize, fifo_dept
     let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, ..Default::default() };
     let mut idle = 0u64;
     let mut cycle = 0u64;
+    let mut free: Vec<bool> = Vec::with_capacity(n_ops);
     while sink.lists.len() < screen.pixels() {
+        if cycle % 4096 == 0 {
+            progress(sink.lists.len() as u64, screen.pixels() as u64);
+        }
         let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
         let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
-        let free: Vec<bool> = opp.ops.iter().map(|o| o.free()).collect();
+        free.clear();
+        free.extend(opp.ops.iter().map(|o| o.free()));
         let f = feeder.offer(&free, go);
         let inp = OppIn { up_valid: f.valid, up_data: f.data, down_ready, load: f.load.map(|(k, id)| (k, objects[id as usize])) };
         let out = opp.step(&inp)?;
