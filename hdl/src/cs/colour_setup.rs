@@ -125,7 +125,8 @@ pub struct ColourSetup {
     mab: [MulS<36, 26, 64>; 2],
     mc: [MulS<40, 18, 64>; 2],
     round: [PlaneRound; 2],
-    step: [DivStep; 12],
+    /// One division step per station 2..=8 (`step[k]` steps station k + 2).
+    step: [DivStep; 7],
     ready: Signal<Local, Bit>,
     accept: Signal<Local, Bit>,
     fr16: Signal<Local, Bits<16>>,
@@ -607,8 +608,8 @@ impl Logic for ColourSetup {
             self.shift[3].d.next = self.shift[2].q.val();
             self.neg[3].d.next = self.neg[2].q.val();
             self.zero[3].d.next = self.zero[2].q.val();
-            self.rem[3].d.next = self.step[2].rem_next.val();
-            self.quo[3].d.next = self.step[2].quo_next.val();
+            self.rem[3].d.next = self.step[0].rem_next.val();
+            self.quo[3].d.next = self.step[0].quo_next.val();
         }
         if self.tok.q.val().get_bit(11) {
             self.c_index[4].d.next = self.c_index[3].q.val();
@@ -628,8 +629,8 @@ impl Logic for ColourSetup {
             self.shift[4].d.next = self.shift[3].q.val();
             self.neg[4].d.next = self.neg[3].q.val();
             self.zero[4].d.next = self.zero[3].q.val();
-            self.rem[4].d.next = self.step[3].rem_next.val();
-            self.quo[4].d.next = self.step[3].quo_next.val();
+            self.rem[4].d.next = self.step[1].rem_next.val();
+            self.quo[4].d.next = self.step[1].quo_next.val();
         }
         if self.tok.q.val().get_bit(15) {
             self.c_index[5].d.next = self.c_index[4].q.val();
@@ -649,8 +650,8 @@ impl Logic for ColourSetup {
             self.shift[5].d.next = self.shift[4].q.val();
             self.neg[5].d.next = self.neg[4].q.val();
             self.zero[5].d.next = self.zero[4].q.val();
-            self.rem[5].d.next = self.step[4].rem_next.val();
-            self.quo[5].d.next = self.step[4].quo_next.val();
+            self.rem[5].d.next = self.step[2].rem_next.val();
+            self.quo[5].d.next = self.step[2].quo_next.val();
         }
         if self.tok.q.val().get_bit(19) {
             self.c_index[6].d.next = self.c_index[5].q.val();
@@ -670,8 +671,8 @@ impl Logic for ColourSetup {
             self.shift[6].d.next = self.shift[5].q.val();
             self.neg[6].d.next = self.neg[5].q.val();
             self.zero[6].d.next = self.zero[5].q.val();
-            self.rem[6].d.next = self.step[5].rem_next.val();
-            self.quo[6].d.next = self.step[5].quo_next.val();
+            self.rem[6].d.next = self.step[3].rem_next.val();
+            self.quo[6].d.next = self.step[3].quo_next.val();
         }
         if self.tok.q.val().get_bit(23) {
             self.c_index[7].d.next = self.c_index[6].q.val();
@@ -691,8 +692,8 @@ impl Logic for ColourSetup {
             self.shift[7].d.next = self.shift[6].q.val();
             self.neg[7].d.next = self.neg[6].q.val();
             self.zero[7].d.next = self.zero[6].q.val();
-            self.rem[7].d.next = self.step[6].rem_next.val();
-            self.quo[7].d.next = self.step[6].quo_next.val();
+            self.rem[7].d.next = self.step[4].rem_next.val();
+            self.quo[7].d.next = self.step[4].quo_next.val();
         }
         if self.tok.q.val().get_bit(27) {
             self.c_index[8].d.next = self.c_index[7].q.val();
@@ -712,8 +713,8 @@ impl Logic for ColourSetup {
             self.shift[8].d.next = self.shift[7].q.val();
             self.neg[8].d.next = self.neg[7].q.val();
             self.zero[8].d.next = self.zero[7].q.val();
-            self.rem[8].d.next = self.step[7].rem_next.val();
-            self.quo[8].d.next = self.step[7].quo_next.val();
+            self.rem[8].d.next = self.step[5].rem_next.val();
+            self.quo[8].d.next = self.step[5].quo_next.val();
         }
         if self.tok.q.val().get_bit(31) {
             self.c_index[9].d.next = self.c_index[8].q.val();
@@ -813,39 +814,40 @@ impl Logic for ColourSetup {
             self.neg[2].d.next = self.det2.q.val().get_bit(35);
             self.zero[2].d.next = self.det2.q.val() == self.k0_36.val();
         }
-        // The division steps: station j's step in place in its window, into station j+1 at its end.
-        for j in 0..12 {
-            self.step[j].rem.next = self.rem[j].q.val();
-            self.step[j].den.next = self.den[j].q.val();
-            self.step[j].quo.next = self.quo[j].q.val();
+        // The division steps of stations 2..=8: in place in the station's window, into the next
+        // station at its end.
+        for k in 0..7 {
+            self.step[k].rem.next = self.rem[k + 2].q.val();
+            self.step[k].den.next = self.den[k + 2].q.val();
+            self.step[k].quo.next = self.quo[k + 2].q.val();
         }
         if self.tok.q.val().get_bit(5) | self.tok.q.val().get_bit(6) {
-            self.rem[2].d.next = self.step[2].rem_next.val();
-            self.quo[2].d.next = self.step[2].quo_next.val();
+            self.rem[2].d.next = self.step[0].rem_next.val();
+            self.quo[2].d.next = self.step[0].quo_next.val();
         }
         if self.tok.q.val().get_bit(8) | self.tok.q.val().get_bit(9) | self.tok.q.val().get_bit(10) {
-            self.rem[3].d.next = self.step[3].rem_next.val();
-            self.quo[3].d.next = self.step[3].quo_next.val();
+            self.rem[3].d.next = self.step[1].rem_next.val();
+            self.quo[3].d.next = self.step[1].quo_next.val();
         }
         if self.tok.q.val().get_bit(12) | self.tok.q.val().get_bit(13) | self.tok.q.val().get_bit(14) {
-            self.rem[4].d.next = self.step[4].rem_next.val();
-            self.quo[4].d.next = self.step[4].quo_next.val();
+            self.rem[4].d.next = self.step[2].rem_next.val();
+            self.quo[4].d.next = self.step[2].quo_next.val();
         }
         if self.tok.q.val().get_bit(16) | self.tok.q.val().get_bit(17) | self.tok.q.val().get_bit(18) {
-            self.rem[5].d.next = self.step[5].rem_next.val();
-            self.quo[5].d.next = self.step[5].quo_next.val();
+            self.rem[5].d.next = self.step[3].rem_next.val();
+            self.quo[5].d.next = self.step[3].quo_next.val();
         }
         if self.tok.q.val().get_bit(20) | self.tok.q.val().get_bit(21) | self.tok.q.val().get_bit(22) {
-            self.rem[6].d.next = self.step[6].rem_next.val();
-            self.quo[6].d.next = self.step[6].quo_next.val();
+            self.rem[6].d.next = self.step[4].rem_next.val();
+            self.quo[6].d.next = self.step[4].quo_next.val();
         }
         if self.tok.q.val().get_bit(24) | self.tok.q.val().get_bit(25) | self.tok.q.val().get_bit(26) {
-            self.rem[7].d.next = self.step[7].rem_next.val();
-            self.quo[7].d.next = self.step[7].quo_next.val();
+            self.rem[7].d.next = self.step[5].rem_next.val();
+            self.quo[7].d.next = self.step[5].quo_next.val();
         }
         if self.tok.q.val().get_bit(28) | self.tok.q.val().get_bit(29) {
-            self.rem[8].d.next = self.step[8].rem_next.val();
-            self.quo[8].d.next = self.step[8].quo_next.val();
+            self.rem[8].d.next = self.step[6].rem_next.val();
+            self.quo[8].d.next = self.step[6].quo_next.val();
         }
 
         // Cycles 33-35: A and B of R, G, B: n (negated if det < 0) * mant on two multipliers.
