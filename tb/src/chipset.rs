@@ -140,8 +140,6 @@ pub struct RtlChipset {
     pub frame_phases: Vec<PhaseCycles>,
     /// Frames started since reset: frames 0 and 1 clear their bank, later ones find it cleared.
     frames_started: u64,
-    ibuf_after_raster: Vec<u32>,
-    zbuf_after_raster: Vec<u32>,
     vcd: Option<VCDProbe<BufWriter<File>>>,
     progress: Option<Progress>,
     vcd_scope: VcdScope,
@@ -274,8 +272,6 @@ impl RtlChipset {
             phases: PhaseCycles::default(),
             frame_phases: Vec::new(),
             frames_started: 0,
-            ibuf_after_raster: Vec::new(),
-            zbuf_after_raster: Vec::new(),
             vcd,
             progress: None,
             vcd_scope: scope,
@@ -392,12 +388,6 @@ impl RtlChipset {
         crate::cs::color_shader_bench::drive_config(&mut **u, None);
     }
 
-    /// The buffers as the RC left them at the end of the last rasterization (the Z-buffer as the RC
-    /// sees it: 2^24-1 where the I-buffer holds the background index).
-    pub fn buffers_after_raster(&self) -> (&[u32], &[u32]) {
-        (&self.ibuf_after_raster, &self.zbuf_after_raster)
-    }
-
     /// A cycle budget that no correct frame reaches: a hang is an error, not an endless loop.
     fn budget(&self, work: u64) -> u64 {
         1_000_000 + 64 * work
@@ -408,9 +398,15 @@ impl RtlChipset {
     fn snapshot(&self, b: usize) -> (Vec<u32>, Vec<u32>) {
         let n = self.zbuf.len();
         let ib = self.ibuf[b * n..(b + 1) * n].to_vec();
-        let zb = ib.iter().zip(&self.zbuf).map(|(&i, &z)| if i == INDEX_BACKGROUND { DEPTH_MAX } else { z }).collect();
+        let zb = depths_as_seen(&ib, &self.zbuf);
         (ib, zb)
     }
+}
+
+/// The Z-buffer as the RC sees it: 2^24-1 where the I-buffer holds the background index (a stale depth
+/// of an earlier frame), the stored depth elsewhere. What the frame is compared with golden on.
+pub fn depths_as_seen(ibuf: &[u32], zbuf: &[u32]) -> Vec<u32> {
+    ibuf.iter().zip(zbuf).map(|(&i, &z)| if i == INDEX_BACKGROUND { DEPTH_MAX } else { z }).collect()
 }
 
 /// One frame's work in the host loop, with the cycles at which things happened.
@@ -655,12 +651,10 @@ impl Chipset for RtlChipset {
                     return Err(format!("chipset: {} results for {} triangles", fr.results.len(), fr.tris.len()));
                 }
                 fr.eof = Some(now);
-                let (ib, zb) = self.snapshot(draw_bank);
-                self.ibuf_after_raster = ib;
-                self.zbuf_after_raster = zb;
+                let (ibuf, zbuf) = self.snapshot(draw_bank);
                 outs[res_f] = Some(FrameOut {
                     results: std::mem::take(&mut fr.results),
-                    scan: ScanOut { rgb: Vec::new(), ibuf: self.ibuf_after_raster.clone(), zbuf: self.zbuf_after_raster.clone() },
+                    scan: ScanOut { rgb: Vec::new(), ibuf, zbuf },
                     rc_counts: None,
                 });
                 res_f += 1;

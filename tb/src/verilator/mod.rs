@@ -37,10 +37,10 @@
 use crate::chipset::{HostDrive, PhaseCycles, Progress, VcdScope};
 use crate::common::workspace_target;
 use crate::cs::pack::{command_of, rgb_of};
-use crate::chipset::FrameRun;
+use crate::chipset::{depths_as_seen, FrameRun};
 use crate::cs::color_shader_bench::config_ports;
 use golden::cycle::colour_setup::SetupCmd;
-use golden::format::{Screen, DEPTH_MAX, INDEX_BACKGROUND};
+use golden::format::Screen;
 use golden::raster::{Culled, TriResult};
 use golden::render::{Chipset, FrameJob, FrameOut, LowerPipeline, ScanOut};
 use hdl::rc::{RcCommand, RcResult};
@@ -200,8 +200,6 @@ pub struct VerilatorChipset {
     frames_started: u64,
     /// How the host loop drives the streams (as `RtlChipset`'s).
     pub drive: HostDrive,
-    ibuf_after_raster: Vec<u32>,
-    zbuf_after_raster: Vec<u32>,
     vcd_open: bool,
     progress: Option<Progress>,
 }
@@ -271,8 +269,6 @@ impl VerilatorChipset {
             frame_phases: Vec::new(),
             frames_started: 0,
             drive: HostDrive::default(),
-            ibuf_after_raster: Vec::new(),
-            zbuf_after_raster: Vec::new(),
             vcd_open: vcd.is_some(),
             progress: None,
         };
@@ -300,11 +296,6 @@ impl VerilatorChipset {
                 let _ = self.expect("V");
             }
         }
-    }
-
-    /// The buffers as the RC left them at the end of the last rasterization.
-    pub fn buffers_after_raster(&self) -> (&[u32], &[u32]) {
-        (&self.ibuf_after_raster, &self.zbuf_after_raster)
     }
 
     /// A cycle budget that no correct frame reaches (as `RtlChipset`'s): a hang is an error.
@@ -492,9 +483,7 @@ impl Chipset for VerilatorChipset {
                     if fr.results.len() != fr.tris.len() {
                         return Err(format!("chipset: {} results for {} triangles", fr.results.len(), fr.tris.len()));
                     }
-                    let zb: Vec<u32> = ib.iter().zip(&zb).map(|(&i, &z)| if i == INDEX_BACKGROUND { DEPTH_MAX } else { z }).collect();
-                    self.ibuf_after_raster = ib.clone();
-                    self.zbuf_after_raster = zb.clone();
+                    let zb = depths_as_seen(&ib, &zb);
                     outs[fi] = Some(FrameOut { results: std::mem::take(&mut fr.results), scan: ScanOut { rgb: Vec::new(), ibuf: ib, zbuf: zb }, rc_counts: None });
                 }
                 "O" => {
