@@ -4,25 +4,66 @@
 //! both values. Optionally writes a VCD and records the vectors for the Verilog replay.
 
 use crate::common::Trace;
-use super::convert::{params_to_rtl, slot_from_rtl, slot_to_rtl};
-use super::replay::VectorWriter;
+use super::convert::{hex_of, params_to_rtl, slot_from_rtl, slot_to_rtl};
+use super::replay::{inp, out, Port, Recorder};
 use golden::proof::cycle_opp::{Feeder, GapRng, Gaps, OppIn, OppModel, OppOut, OppRun, Sink};
 use golden::proof::cycle_op::Action;
 use golden::proof::format::ObjectParams;
 use golden::format::Screen;
-use hdl::proof::Opp;
+use hdl::proof::{ObjParams, Opp, ProofSlot};
 use rust_hdl::prelude::*;
 use std::path::{Path, PathBuf};
 
 /// Iterations allowed for the combinational settling (the ready path crosses every OP).
 const SETTLE: usize = 100_000;
 
+/// The `opp` top's ports in the order of the recorded vectors' columns (inputs, then outputs). Every
+/// output is compared in every cycle: the OPP's registers are all reset, so none is don't-care.
+pub fn opp_ports() -> Vec<Port> {
+    vec![
+        inp("load", 1),
+        inp("load_op", 16),
+        inp("load_params", ObjParams::BITS),
+        inp("upstream$valid", 1),
+        inp("upstream$data", ProofSlot::BITS),
+        inp("downstream$ready", 1),
+        out("upstream$ready", 1, None),
+        out("downstream$valid", 1, None),
+        out("downstream$data", ProofSlot::BITS, None),
+        out("any_free", 1, None),
+        out("free_op", 16, None),
+    ]
+}
+
+/// One cycle's values in `opp_ports` order, as hex.
+fn opp_vector(inp: &OppIn, exp: &OppOut) -> Vec<String> {
+    let params: Bits<{ ObjParams::BITS }> = params_to_rtl(&inp.load.map(|l| l.1).unwrap_or_default()).into();
+    let up: Bits<{ ProofSlot::BITS }> = slot_to_rtl(&inp.up_data).into();
+    let down: Bits<{ ProofSlot::BITS }> = slot_to_rtl(&exp.down_data).into();
+    let any_free = exp.free.iter().any(|&f| f);
+    let free_op = exp.free.iter().rposition(|&f| f).unwrap_or(0);
+    let bit = |b: bool| (b as u8).to_string();
+    vec![
+        bit(inp.load.is_some()),
+        format!("{:04x}", inp.load.map(|l| l.0).unwrap_or(0)),
+        hex_of(params),
+        bit(inp.up_valid),
+        hex_of(up),
+        bit(inp.down_ready),
+        bit(exp.up_ready),
+        bit(exp.down_valid),
+        hex_of(down),
+        bit(any_free),
+        format!("{free_op:04x}"),
+    ]
+}
+
 pub struct OppBench {
     pub uut: Opp,
     pub model: OppModel,
     pub cycle: u64,
     trace: Trace,
-    pub vectors: Option<VectorWriter>,
+    pub vectors: Option<Recorder>,
 }
 
 impl OppBench {
@@ -36,7 +77,7 @@ impl OppBench {
             model: OppModel::new(n, fifo_depth)?,
             cycle: 0,
             trace,
-            vectors: vectors.map(VectorWriter::create).transpose()?,
+            vectors: vectors.map(|p| Recorder::create(p, &opp_ports())).transpose()?,
         })
     }
 
@@ -93,7 +134,7 @@ impl OppBench {
             )));
         }
         if let Some(w) = self.vectors.as_mut() {
-            w.cycle(inp, &exp)?;
+            w.cycle(&opp_vector(inp, &exp))?;
         }
         self.model.step(inp)?;
         let u = &mut self.uut;

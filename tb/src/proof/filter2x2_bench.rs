@@ -11,7 +11,7 @@ use crate::common::Trace;
 use super::convert::hex_of;
 use super::filter_bench::{check_tag, compare_front, drive_filter_inputs, filter_ports, filter_vector_row, pixel_from_rtl, pixel_to_rtl, run_filter_top, FilterRun, FilterTop};
 use super::shade_bench::StageGaps;
-use super::stage_replay::{inp, out, Port, Recorder};
+use super::replay::{inp, out, Port, Recorder};
 use golden::proof::cycle_filter::{FilterIn, FilterOut, FilteredPixel};
 use golden::proof::cycle_filter2x2::{BoxA, BoxH, BoxIn, BoxLine, BoxModel, BoxOut, BoxV, Filter2x2Model, QuadPixel};
 use golden::proof::cycle_opp::GapRng;

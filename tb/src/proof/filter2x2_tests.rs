@@ -148,11 +148,11 @@ fn filter2x2_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_wi
     let bv = hdl::proof::verilog_box2x2("box2x2_7x4", bw, bh).unwrap();
     for sim in ["iverilog", "verilator"] {
         let d = scratch_dir(&format!("proof_filter2x2_replay_{sim}"));
-        let verdict = super::stage_replay::replay(sim, &d, "proof_filter2x2_8", &filter_ports(), &v, &vp, cycles).unwrap_or_else(|e| panic!("{sim}: {e}"));
+        let verdict = super::replay::replay(sim, &d, "proof_filter2x2_8", &filter_ports(), &v, &vp, cycles).unwrap_or_else(|e| panic!("{sim}: {e}"));
         println!("{sim} stage: {verdict}");
         assert!(verdict.contains(&cycles.to_string()));
         let d = scratch_dir(&format!("proof_box2x2_replay_{sim}"));
-        let verdict = super::stage_replay::replay(sim, &d, "box2x2_7x4", &box_ports(), &bv, &bvp, bcycles).unwrap_or_else(|e| panic!("{sim}: {e}"));
+        let verdict = super::replay::replay(sim, &d, "box2x2_7x4", &box_ports(), &bv, &bvp, bcycles).unwrap_or_else(|e| panic!("{sim}: {e}"));
         println!("{sim} box: {verdict}");
         assert!(verdict.contains(&bcycles.to_string()));
     }

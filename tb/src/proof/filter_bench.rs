@@ -9,7 +9,7 @@
 use crate::common::Trace;
 use super::convert::hex_of;
 use super::shade_bench::{shaded_to_rtl, StageGaps};
-use super::stage_replay::{inp, out, Port, Recorder};
+use super::replay::{inp, out, Port, Recorder};
 use golden::proof::cycle_filter::{EdgeF1, EdgeF2, FilterFront as FrontModel, FilterIn, FilterModel, FilterOut, FilteredPixel, Tag};
 use golden::proof::cycle_opp::GapRng;
 use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};

@@ -140,7 +140,7 @@ fn filter_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_witho
     let v = hdl::proof::verilog_filter("proof_filter8", 8).unwrap();
     for sim in ["iverilog", "verilator"] {
         let d = scratch_dir(&format!("proof_filter_replay_{sim}"));
-        let verdict = super::stage_replay::replay(sim, &d, "proof_filter8", &filter_ports(), &v, &vp, cycles).unwrap_or_else(|e| panic!("{sim}: {e}"));
+        let verdict = super::replay::replay(sim, &d, "proof_filter8", &filter_ports(), &v, &vp, cycles).unwrap_or_else(|e| panic!("{sim}: {e}"));
         println!("{sim}: {verdict}");
         assert!(verdict.contains(&cycles.to_string()));
     }

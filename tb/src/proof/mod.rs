@@ -2,7 +2,7 @@
 //! * [`bench`]: every cycle on the ports, RustHDL direct drive vs `OppModel`, random gaps, VCDs;
 //! * [`shade_bench`], [`filter_bench`], [`filter2x2_bench`]: every cycle, the shading stage and the
 //!   filter stage (1x1 and 2x2 area, and the 2x2 box alone) vs their cycle models;
-//! * [`replay`], [`stage_replay`]: the generated Verilog replays the recorded vectors (Icarus / Verilator);
+//! * [`replay`]: one port-list testbench; the generated Verilog of every PROOF top replays its recorded vectors (Icarus / Verilator);
 //! * [`backend`]: the RTL backend of `idxrender render --arch proof --backend rtl`.
 
 pub mod backend;
@@ -12,7 +12,6 @@ pub mod filter2x2_bench;
 pub mod filter_bench;
 pub mod replay;
 pub mod shade_bench;
-pub mod stage_replay;
 #[cfg(test)]
 mod filter2x2_tests;
 #[cfg(test)]

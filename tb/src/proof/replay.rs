@@ -1,56 +1,55 @@
-//! Level 3 for PROOF: the generated Verilog of an OPP replays vectors recorded from a bench run (every
-//! cycle's inputs and the cycle model's outputs) in a self-checking Verilog testbench, under Icarus
-//! Verilog or Verilator (`--binary`). This is what shows that the Verilog means what the RustHDL
-//! simulation meant.
+//! Level 3 for PROOF (the OPP, shading and filter tops): a self-checking Verilog testbench generated from a
+//! port list replays vectors recorded by a bench run (every cycle's inputs and the cycle model's
+//! outputs) on the generated Verilog, under Icarus Verilog or Verilator. An output with a guard is
+//! compared only in cycles where its guard (a valid bit) is expected high: data beside a low valid is
+//! don't-care (and may be X in Verilog, from block RAM never written).
 
-use super::convert::{hex_of, params_to_rtl, slot_to_rtl};
-use golden::proof::cycle_opp::{OppIn, OppOut};
-use hdl::proof::{ObjParams, ProofSlot};
-use rust_hdl::prelude::*;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-/// One line per cycle: inputs, then expected outputs, in hex.
-pub struct VectorWriter {
+/// A port of the top: name in the Verilog (`upstream$data`), width, direction, guard.
+#[derive(Clone, Debug)]
+pub struct Port {
+    pub name: &'static str,
+    pub width: usize,
+    pub input: bool,
+    /// Compare this output only when the output named here is expected 1.
+    pub guard: Option<&'static str>,
+}
+
+pub fn inp(name: &'static str, width: usize) -> Port {
+    Port { name, width, input: true, guard: None }
+}
+pub fn out(name: &'static str, width: usize, guard: Option<&'static str>) -> Port {
+    Port { name, width, input: false, guard }
+}
+
+fn ident(name: &str) -> String {
+    name.replace('$', "_")
+}
+
+/// Records one hex column per port per cycle.
+pub struct Recorder {
     out: BufWriter<File>,
     pub path: PathBuf,
     pub cycles: u64,
+    ports: usize,
 }
 
-impl VectorWriter {
-    pub fn create(path: PathBuf) -> Result<VectorWriter, String> {
+impl Recorder {
+    pub fn create(path: PathBuf, ports: &[Port]) -> Result<Recorder, String> {
         let f = File::create(&path).map_err(|e| format!("cannot create {}: {e}", path.display()))?;
-        Ok(VectorWriter { out: BufWriter::new(f), path, cycles: 0 })
+        Ok(Recorder { out: BufWriter::new(f), path, cycles: 0, ports: ports.len() })
     }
-
-    pub fn cycle(&mut self, inp: &OppIn, exp: &OppOut) -> Result<(), String> {
-        let params: Bits<{ ObjParams::BITS }> = params_to_rtl(&inp.load.map(|l| l.1).unwrap_or_default()).into();
-        let up: Bits<{ ProofSlot::BITS }> = slot_to_rtl(&inp.up_data).into();
-        let down: Bits<{ ProofSlot::BITS }> = slot_to_rtl(&exp.down_data).into();
-        let any_free = exp.free.iter().any(|&f| f);
-        let free_op = exp.free.iter().rposition(|&f| f).unwrap_or(0);
-        writeln!(
-            self.out,
-            "{} {:04x} {} {} {} {} {} {} {} {} {:04x}",
-            inp.load.is_some() as u8,
-            inp.load.map(|l| l.0).unwrap_or(0),
-            hex_of(params),
-            inp.up_valid as u8,
-            hex_of(up),
-            inp.down_ready as u8,
-            exp.up_ready as u8,
-            exp.down_valid as u8,
-            hex_of(down),
-            any_free as u8,
-            free_op
-        )
-        .map_err(|e| format!("{}: {e}", self.path.display()))?;
+    /// One cycle: the values in port order, as hex strings.
+    pub fn cycle(&mut self, values: &[String]) -> Result<(), String> {
+        assert_eq!(values.len(), self.ports);
+        writeln!(self.out, "{}", values.join(" ")).map_err(|e| format!("{}: {e}", self.path.display()))?;
         self.cycles += 1;
         Ok(())
     }
-
     pub fn finish(mut self) -> Result<(PathBuf, u64), String> {
         self.out.flush().map_err(|e| format!("{}: {e}", self.path.display()))?;
         Ok((self.path, self.cycles))
@@ -59,44 +58,48 @@ impl VectorWriter {
 
 /// The self-checking testbench: inputs change after the falling edge, outputs are compared just
 /// before the rising edge; prints `REPLAY PASSED <cycles>` or the first mismatch.
-pub fn testbench(top: &str, vectors: &Path, cycles: u64) -> String {
-    let (pw, sw) = (ObjParams::BITS, ProofSlot::BITS);
+pub fn testbench(top: &str, ports: &[Port], vectors: &Path, cycles: u64) -> String {
+    let mut decl = String::new();
+    let mut conn = vec![".clock(clock)".to_string()];
+    let mut scan_fmt = Vec::new();
+    let mut scan_args = Vec::new();
+    let mut drive = String::new();
+    let mut check = String::new();
+    for p in ports {
+        let id = ident(p.name);
+        let w = p.width - 1;
+        if p.input {
+            decl += &format!("  reg [{w}:0] {id} = 0; reg [{w}:0] t_{id};\n");
+            scan_args.push(format!("t_{id}"));
+            drive += &format!("      {id} = t_{id};\n");
+        } else {
+            decl += &format!("  wire [{w}:0] {id}; reg [{w}:0] e_{id};\n");
+            scan_args.push(format!("e_{id}"));
+            let cond = match p.guard {
+                Some(g) => format!("e_{} == 1 && {id} !== e_{id}", ident(g)),
+                None => format!("{id} !== e_{id}"),
+            };
+            check += &format!(
+                "      if ({cond}) begin $display(\"REPLAY FAILED at cycle %0d: {name} got %h expected %h\", cyc, {id}, e_{id}); $finish; end\n",
+                name = p.name
+            );
+        }
+        scan_fmt.push("%h");
+        conn.push(format!(".{}({id})", p.name));
+    }
     format!(
         r#"`timescale 1ns/1ps
 module tb_{top};
   reg clock = 0;
-  reg load = 0; reg [15:0] load_op = 0; reg [{pm}:0] load_params = 0;
-  reg up_valid = 0; reg [{sm}:0] up_data = 0; reg down_ready = 0;
-  wire up_ready, down_valid, any_free; wire [{sm}:0] down_data; wire [15:0] free_op;
-  reg e_up_ready, e_down_valid, e_any_free; reg [{sm}:0] e_down_data; reg [15:0] e_free_op;
-  // $fscanf reads into these; plain assignments then drive the inputs (Verilator does not wake
-  // combinational logic on variables written by $fscanf).
-  reg t_load, t_up_valid, t_down_ready; reg [15:0] t_load_op; reg [{pm}:0] t_load_params; reg [{sm}:0] t_up_data;
-  integer fd, r, cyc, errors;
-  {top} uut(.clock(clock), .load(load), .load_op(load_op), .load_params(load_params),
-    .upstream$data(up_data), .upstream$valid(up_valid), .upstream$ready(up_ready),
-    .downstream$data(down_data), .downstream$valid(down_valid), .downstream$ready(down_ready),
-    .any_free(any_free), .free_op(free_op));
+{decl}  integer fd, r, cyc;
+  {top} uut({conn});
   initial begin
     fd = $fopen("{vec}", "r");
-    errors = 0;
     for (cyc = 0; cyc < {cycles}; cyc = cyc + 1) begin
-      r = $fscanf(fd, "%h %h %h %h %h %h %h %h %h %h %h\n", t_load, t_load_op, t_load_params, t_up_valid, t_up_data, t_down_ready,
-                  e_up_ready, e_down_valid, e_down_data, e_any_free, e_free_op);
-      if (r != 11) begin $display("REPLAY FAILED: bad vector line %0d", cyc); $finish; end
-      load = t_load; load_op = t_load_op; load_params = t_load_params;
-      up_valid = t_up_valid; up_data = t_up_data; down_ready = t_down_ready;
-      #4;
-      if (up_ready !== e_up_ready || down_valid !== e_down_valid || down_data !== e_down_data
-          || any_free !== e_any_free || free_op !== e_free_op) begin
-        $display("REPLAY FAILED at cycle %0d: up_ready %b/%b down_valid %b/%b any_free %b/%b free_op %h/%h", cyc,
-                 up_ready, e_up_ready, down_valid, e_down_valid, any_free, e_any_free, free_op, e_free_op);
-        $display("  down_data got %h", down_data);
-        $display("  down_data exp %h", e_down_data);
-        errors = errors + 1;
-        $finish;
-      end
-      #1 clock = 1;
+      r = $fscanf(fd, "{fmt}\n", {args});
+      if (r != {n}) begin $display("REPLAY FAILED: bad vector line %0d", cyc); $finish; end
+{drive}      #4;
+{check}      #1 clock = 1;
       #5 clock = 0;
     end
     $display("REPLAY PASSED %0d", {cycles});
@@ -104,19 +107,20 @@ module tb_{top};
   end
 endmodule
 "#,
-        pm = pw - 1,
-        sm = sw - 1,
+        conn = conn.join(", "),
         vec = vectors.display(),
+        fmt = scan_fmt.join(" "),
+        args = scan_args.join(", "),
+        n = ports.len(),
     )
 }
 
-/// Replay `vectors` on `verilog` (top module `top`) under `sim` ("iverilog" or "verilator");
-/// returns the simulator's report line.
-pub fn replay(sim: &str, dir: &Path, top: &str, verilog: &str, vectors: &Path, cycles: u64) -> Result<String, String> {
+/// Replay `vectors` on `verilog` (top module `top`) under `sim` ("iverilog" or "verilator").
+pub fn replay(sim: &str, dir: &Path, top: &str, ports: &[Port], verilog: &str, vectors: &Path, cycles: u64) -> Result<String, String> {
     let dut = dir.join(format!("{top}.v"));
     let tbv = dir.join(format!("tb_{top}.v"));
     std::fs::write(&dut, verilog).map_err(|e| e.to_string())?;
-    std::fs::write(&tbv, testbench(top, vectors, cycles)).map_err(|e| e.to_string())?;
+    std::fs::write(&tbv, testbench(top, ports, vectors, cycles)).map_err(|e| e.to_string())?;
     let run = |c: &mut Command| -> Result<String, String> {
         let o = c.output().map_err(|e| format!("cannot run {c:?}: {e}"))?;
         let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));

@@ -6,7 +6,7 @@
 
 use crate::common::Trace;
 use super::convert::{hex_of, slot_to_rtl};
-use super::stage_replay::{inp, out, Port, Recorder};
+use super::replay::{inp, out, Port, Recorder};
 use golden::proof::cycle_opp::GapRng;
 use golden::proof::cycle_shade::{CfgWrite, ShadeIn, ShadeModel, ShadeOut, ShadedSlot, Work};
 use golden::proof::format::Slot;

@@ -123,7 +123,7 @@ fn shading_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_with
     let v = hdl::proof::verilog_shading("proof_shade8", 1, 8).unwrap();
     for sim in ["iverilog", "verilator"] {
         let d = scratch_dir(&format!("proof_shade_replay_{sim}"));
-        let verdict = super::stage_replay::replay(sim, &d, "proof_shade8", &super::shade_bench::shade_ports(), &v, &vp, cycles)
+        let verdict = super::replay::replay(sim, &d, "proof_shade8", &super::shade_bench::shade_ports(), &v, &vp, cycles)
             .unwrap_or_else(|e| panic!("{sim}: {e}"));
         println!("{sim}: {verdict}");
         assert!(verdict.contains(&cycles.to_string()));

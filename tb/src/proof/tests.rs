@@ -120,7 +120,7 @@ fn generated_verilog_of_an_eight_op_pipeline_replays_the_recorded_vectors() {
     let v = hdl::verilog_top("opp").unwrap();
     for sim in sims {
         let d = scratch_dir(&format!("proof_replay_{sim}"));
-        let verdict = replay(sim, &d, "opp", &v, &vp, cycles).unwrap_or_else(|e| panic!("{sim}: {e}"));
+        let verdict = replay(sim, &d, "opp", &super::bench::opp_ports(), &v, &vp, cycles).unwrap_or_else(|e| panic!("{sim}: {e}"));
         println!("{sim}: {verdict}");
         assert!(verdict.contains(&cycles.to_string()));
     }
