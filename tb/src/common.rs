@@ -47,8 +47,39 @@ impl Trace {
     pub fn fail(&self, cycle: u64, what: String) -> String {
         match &self.path {
             Some(p) => format!("cycle {cycle}: {what} (waveform: {})", p.display()),
-            None => format!("cycle {cycle}: {what}"),
+            None => format!("cycle {cycle}: {what} (no waveform was written: VCD=1 for a test, --vcd for render, writes one)"),
         }
+    }
+}
+
+/// The benches' progress watchdog (issue 18): a run in which nothing moves at the ports (no
+/// transaction, no memory access, no output) for longer than any one unit of work can need ends at
+/// once, with the phase, the cycle and the waveform, instead of running on to a cycle budget.
+pub struct Watchdog {
+    limit: u64,
+    last: u64,
+}
+
+impl Watchdog {
+    /// No progress for more than `limit` cycles is a failure.
+    pub fn new(limit: u64) -> Watchdog {
+        Watchdog { limit, last: 0 }
+    }
+    /// Call once per cycle: `progress` says whether anything moved in `cycle`. The error says what
+    /// stopped (`phase`) and names the waveform through `trace` when there is one.
+    pub fn check(&mut self, cycle: u64, progress: bool, phase: impl FnOnce() -> String, trace: Option<&Trace>) -> Result<(), String> {
+        if progress {
+            self.last = cycle;
+            return Ok(());
+        }
+        if cycle.saturating_sub(self.last) <= self.limit {
+            return Ok(());
+        }
+        let what = format!("no progress for {} cycles in {}", self.limit, phase());
+        Err(match trace {
+            Some(t) => t.fail(cycle, what),
+            None => format!("cycle {cycle}: {what}"),
+        })
     }
 }
 
@@ -152,6 +183,24 @@ pub fn require_tools_with(test: &str, tools: &[&str], allow_missing: bool, recor
     }
     eprintln!("skipped (opt-out {ALLOW_MISSING_TOOLS}=1) {line}");
     false
+}
+
+#[cfg(test)]
+mod watchdog_tests {
+    use super::Watchdog;
+
+    #[test]
+    fn the_watchdog_fires_one_cycle_after_its_limit_without_progress_and_never_while_things_move() {
+        let mut w = Watchdog::new(10);
+        for c in 0..1000 {
+            w.check(c, c % 10 == 0 || c == 999, || "moving".into(), None).unwrap();
+        }
+        for c in 1000..=1009 {
+            w.check(c, false, || "stuck".into(), None).unwrap();
+        }
+        let e = w.check(1010, false, || "the phase".into(), None).unwrap_err();
+        assert_eq!(e, "cycle 1010: no progress for 10 cycles in the phase");
+    }
 }
 
 #[cfg(test)]

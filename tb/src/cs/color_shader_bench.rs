@@ -6,7 +6,7 @@
 //! before the first frame). Every output port is compared every cycle; the first mismatch stops the
 //! run with the cycle, the port, both values and the path of a VCD.
 
-use crate::common::{vcd_path, vcd_wanted, Rng, Trace};
+use crate::common::{vcd_path, vcd_wanted, Rng, Trace, Watchdog};
 use crate::cs::pack::{record_of, tdata_of, BitVector};
 use crate::cs::replay::{port, PortSpec, Recording};
 use golden::cycle::color_shader::{ColorShaderModel, CsConfigWrite, CsInputs, CsMemories, CsOutputs, ReadPort, VideoBeat, WritePort};
@@ -247,6 +247,11 @@ fn rtl_outputs(u: &ColorShader) -> CsOutputs {
     }
 }
 
+/// Cycles in which the CS may do nothing at its ports (no memory access, no beat) before the bench
+/// stops it: its pipeline is a few stages deep, and a 95 % stalled video port still takes a beat
+/// within 1024 cycles with probability 1 - 1e-22.
+const PROGRESS_LIMIT: u64 = 1024;
+
 struct Rtl {
     uut: ColorShader,
     trace: Trace,
@@ -319,6 +324,7 @@ fn run_inner(
     let mut was_busy = false;
     let t0 = std::time::Instant::now();
     let mut cycle = 0u64;
+    let mut watchdog = Watchdog::new(PROGRESS_LIMIT);
     loop {
         let busy = model.outputs().busy;
         if was_busy && !busy {
@@ -384,6 +390,18 @@ fn run_inner(
             }
             last_beat = cycle;
         }
+        // Progress: a frame started, a constant written, a memory access or a video beat taken, or
+        // the driver itself waiting between frames.
+        let progress = (start && !busy)
+            || cfg.is_some()
+            || expected.ibuf_read.enable
+            || expected.tdbs_read.enable
+            || expected.ibuf_write.enable
+            || expected.zbuf_write.enable
+            || (expected.video_tvalid && inp.video_tready)
+            || (!busy && idle > 0);
+        let phase = || format!("the CS (frame {} of {}, {} beats out)", run.frames.len(), frames.len(), run.frames.last().map_or(0, Vec::len));
+        watchdog.check(cycle, progress, phase, rtl.as_ref().map(|r| &r.trace)).map_err(Stop::Error)?;
         mem.edge(&expected);
         cycle += 1;
         if next == frames.len() && !model.outputs().busy {

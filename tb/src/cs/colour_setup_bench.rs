@@ -4,7 +4,7 @@
 //! requires); every output port is compared in every cycle. The first mismatch stops the run with the
 //! cycle, the port, both values and the path of a VCD of the run up to that cycle.
 
-use crate::common::{vcd_path, vcd_wanted, Rng, Trace};
+use crate::common::{vcd_path, vcd_wanted, Rng, Trace, Watchdog};
 use crate::cs::pack::{command_of, entry_of, BitVector};
 use crate::cs::replay::{port, Recording};
 use golden::cycle::colour_setup::{ColourSetupModel, SetupCmd, SetupInputs, SetupOutputs, TdbsWrite};
@@ -138,6 +138,9 @@ fn run_inner(cmds: &[SetupCmd], drive: SetupDrive, with_rtl: bool, vcd: Option<&
     let limit = 64 + 50 * (cmds.len() as u64 + 1) * (1 + drive.gap_percent);
     let t0 = std::time::Instant::now();
     let mut cycle = 0u64;
+    // Every accepted command writes TdbS SETUP_LATENCY cycles later, and a presented command is taken
+    // within SETUP_INTERVAL cycles: nothing moving for 4x the latency is a hang.
+    let mut watchdog = Watchdog::new(4 * golden::cycle::colour_setup::SETUP_LATENCY);
     loop {
         if !presenting && next < cmds.len() && !rng.chance(drive.gap_percent) {
             presenting = true;
@@ -162,10 +165,14 @@ fn run_inner(cmds: &[SetupCmd], drive: SetupDrive, with_rtl: bool, vcd: Option<&
         if expected.tdbs_write.enable {
             run.writes.push((expected.tdbs_write.address, expected.tdbs_write.data));
         }
-        if presenting && expected.cmd_ready {
+        let taken = presenting && expected.cmd_ready;
+        if taken {
             presenting = false;
             next += 1;
         }
+        let progress = taken || expected.tdbs_write.enable || (!inp.cmd_valid && next < cmds.len());
+        let phase = || format!("colour setup ({} of {} commands taken, {} writes)", next, cmds.len(), run.writes.len());
+        watchdog.check(cycle, progress, phase, rtl.as_ref().map(|r| &r.trace)).map_err(Stop::Error)?;
         cycle += 1;
         if Some(cycle) == stop_at {
             break;

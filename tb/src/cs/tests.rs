@@ -426,3 +426,18 @@ fn colour_setup_and_cs_synthesize_for_ice40_without_latches() {
         assert!(f.lut4 > 0 && f.ff > 0);
     }
 }
+
+/// Issue 18: a CS whose video consumer is never ready stops at the port; the bench ends one watchdog
+/// period later (1024 cycles with no memory access and no beat) with the phase and the waveform,
+/// instead of running to its cycle budget.
+#[test]
+fn a_cs_run_that_stops_making_progress_ends_at_once_naming_the_phase_and_the_waveform() {
+    let mut rng = Rng::new(0x57a11);
+    let mut mem = random_memories(&mut rng, 16, 8, 20);
+    let frames = [FrameSpec { width: 16, height: 8, background: [1, 2, 3], clear_behind: false, phong: false }];
+    let drive = CsDrive { stall_percent: 100, start_while_busy_percent: 0, max_idle: 0, seed: 1 };
+    let e = csb::run_rtl_vs_model("cs_never_ready", &mut mem, &frames, &[], drive, false).unwrap_err();
+    assert!(e.contains("no progress for 1024 cycles in the CS (frame 1 of 1, 0 beats out)"), "{e}");
+    assert!(e.contains("cycle 10"), "stopped late: {e}");
+    assert!(e.contains("waveform"), "{e}");
+}

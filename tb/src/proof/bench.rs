@@ -3,7 +3,7 @@
 //! compared before each rising edge. The first difference stops the run with the cycle, the port and
 //! both values. Optionally writes a VCD and records the vectors for the Verilog replay.
 
-use crate::common::Trace;
+use crate::common::{Trace, Watchdog};
 use super::convert::{hex_of, params_to_rtl, slot_from_rtl, slot_to_rtl};
 use super::replay::{inp, out, Port, Recorder};
 use golden::proof::cycle_opp::{Feeder, GapRng, Gaps, OppIn, OppModel, OppOut, OppRun, Sink};
@@ -16,6 +16,10 @@ use std::path::{Path, PathBuf};
 
 /// Iterations allowed for the combinational settling (the ready path crosses every OP).
 const SETTLE: usize = 100_000;
+
+/// Cycles with no load, no slot taken and none given before a PROOF bench gives up (no list needs
+/// more than a few cycles per OP to pass).
+pub const PROGRESS_LIMIT: u64 = 10_000;
 
 /// The `opp` top's ports in the order of the recorded vectors' columns (inputs, then outputs). Every
 /// output is compared in every cycle: the OPP's registers are all reset, so none is don't-care.
@@ -168,7 +172,7 @@ pub fn run_frame(
     let mut sink = Sink::new(screen);
     let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
     let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, ..Default::default() };
-    let mut idle = 0u64;
+    let mut watchdog = Watchdog::new(PROGRESS_LIMIT);
     while sink.lists.len() < screen.pixels() {
         let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
         let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
@@ -194,10 +198,8 @@ pub fn run_frame(
         if out.down_valid && down_ready {
             sink.take(&out.down_data)?;
         }
-        idle = if progress { 0 } else { idle + 1 };
-        if idle > 10_000 {
-            return Err(format!("the OPP made no progress for 10000 cycles at cycle {}", bench.cycle));
-        }
+        let phase = || format!("the OPP frame ({} of {} pixels' lists out)", sink.lists.len(), screen.pixels());
+        watchdog.check(bench.cycle, progress, phase, Some(&bench.trace))?;
     }
     run.cycles = bench.cycle;
     run.slots_out = sink.slots;

@@ -7,7 +7,7 @@
 //! and V, each valid bit always and the contents when valid. The first difference stops the run with
 //! the cycle, the register or port, both values and the VCD path.
 
-use crate::common::Trace;
+use crate::common::{Trace, Watchdog};
 use super::convert::hex_of;
 use super::filter_bench::{check_tag, compare_front, drive_filter_inputs, filter_ports, filter_vector_row, pixel_from_rtl, pixel_to_rtl, run_filter_top, FilterRun, FilterTop};
 use super::shade_bench::StageGaps;
@@ -204,6 +204,9 @@ impl FilterTop for Filter2x2Bench {
     fn take_vectors(&mut self) -> Option<Recorder> {
         self.vectors.take()
     }
+    fn trace(&self) -> &Trace {
+        &self.trace
+    }
 }
 
 /// Configure, then stream a frame's `slots` through the RTL 2x2 filter stage for a `width` x `height`
@@ -309,7 +312,8 @@ pub fn run_box(
     let mut b = BoxBench::new(width, height, vcd, vectors)?;
     let mut rng = GapRng(gaps.seed);
     let all: Vec<QuadPixel> = frames.iter().flatten().copied().collect();
-    let (mut i, mut idle) = (0usize, 0u64);
+    let mut i = 0usize;
+    let mut watchdog = Watchdog::new(super::bench::PROGRESS_LIMIT);
     let mut outs = Vec::with_capacity(all.len());
     while outs.len() < all.len() {
         let go = i < all.len() && !rng.percent(gaps.source_gap_percent);
@@ -318,15 +322,12 @@ pub fn run_box(
         if go && o.up_ready {
             i += 1;
         }
-        if o.down_valid && ready {
+        let progress = o.down_valid && ready;
+        if progress {
             outs.push(o.down_data);
-            idle = 0;
-        } else {
-            idle += 1;
-            if idle > 10_000 {
-                return Err(format!("the box gave no pixel for 10000 cycles at cycle {} after {} pixels", b.cycle, outs.len()));
-            }
         }
+        let phase = || format!("the 2x2 box ({} of {} pixels out)", outs.len(), all.len());
+        watchdog.check(b.cycle, progress, phase, Some(&b.trace))?;
     }
     let rec = match b.vectors.take() {
         Some(w) => Some(w.finish()?),

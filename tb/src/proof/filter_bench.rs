@@ -6,7 +6,7 @@
 //! the sums). The first difference stops the run with the cycle, the port or register, both values
 //! and the VCD path.
 
-use crate::common::Trace;
+use crate::common::{Trace, Watchdog};
 use super::convert::hex_of;
 use super::shade_bench::{shaded_to_rtl, StageGaps};
 use super::replay::{inp, out, Port, Recorder};
@@ -248,6 +248,9 @@ impl FilterTop for FilterBench {
     fn take_vectors(&mut self) -> Option<Recorder> {
         self.vectors.take()
     }
+    fn trace(&self) -> &Trace {
+        &self.trace
+    }
 }
 
 /// Drive a filter top's inputs for one cycle (the 1x1 and the 2x2 top have the same ports).
@@ -294,6 +297,8 @@ pub trait FilterTop {
     fn cycles(&self) -> u64;
     /// The vector recorder, if the run records.
     fn take_vectors(&mut self) -> Option<Recorder>;
+    /// The waveform, for failure messages.
+    fn trace(&self) -> &Trace;
 }
 
 /// The outcome of a run of the filter bench.
@@ -328,7 +333,8 @@ pub fn run_filter_top<B: FilterTop>(b: &mut B, cfg: &[CfgWrite], slots: &[Shaded
     }
     let start = b.cycles();
     let pixels = slots.iter().filter(|s| s.last).count();
-    let (mut i, mut idle) = (0usize, 0u64);
+    let mut i = 0usize;
+    let mut watchdog = Watchdog::new(super::bench::PROGRESS_LIMIT);
     let mut outs = Vec::with_capacity(pixels);
     while outs.len() < pixels {
         let go = i < slots.len() && gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
@@ -338,15 +344,12 @@ pub fn run_filter_top<B: FilterTop>(b: &mut B, cfg: &[CfgWrite], slots: &[Shaded
         if go && o.up_ready {
             i += 1;
         }
-        if o.down_valid && ready {
+        let progress = o.down_valid && ready;
+        if progress {
             outs.push(o.down_data);
-            idle = 0;
-        } else {
-            idle += 1;
-            if idle > 10_000 {
-                return Err(format!("the filter stage gave no pixel for 10000 cycles at cycle {} (a list without a last slot?)", b.cycles()));
-            }
         }
+        let phase = || format!("the filter stage ({} of {pixels} pixels out; a list without a last slot?)", outs.len());
+        watchdog.check(b.cycles(), progress, phase, Some(b.trace()))?;
     }
     let cycles = b.cycles() - start;
     let rec = match b.take_vectors() {

@@ -4,7 +4,7 @@
 //! register's valid bit and, when valid, its arithmetic fields. The first difference stops the run
 //! with the cycle, the port or register, both values and the VCD path.
 
-use crate::common::Trace;
+use crate::common::{Trace, Watchdog};
 use super::convert::{hex_of, slot_to_rtl};
 use super::replay::{inp, out, Port, Recorder};
 use golden::proof::cycle_opp::GapRng;
@@ -211,7 +211,8 @@ pub fn run_shade(
     for c in cfg {
         b.cycle(&ShadeIn { cfg: Some(*c), down_ready: true, ..Default::default() })?;
     }
-    let (mut i, mut idle) = (0usize, 0u64);
+    let mut i = 0usize;
+    let mut watchdog = Watchdog::new(super::bench::PROGRESS_LIMIT);
     let mut outs = Vec::with_capacity(slots.len());
     while outs.len() < slots.len() {
         let go = i < slots.len() && gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
@@ -221,15 +222,12 @@ pub fn run_shade(
         if go && o.up_ready {
             i += 1;
         }
-        if o.down_valid && ready {
+        let progress = o.down_valid && ready;
+        if progress {
             outs.push(o.down_data);
-            idle = 0;
-        } else {
-            idle += 1;
-            if idle > 10_000 {
-                return Err(format!("the shading stage gave no output for 10000 cycles at cycle {}", b.cycle));
-            }
         }
+        let phase = || format!("the shading stage ({} of {} slots out)", outs.len(), slots.len());
+        watchdog.check(b.cycle, progress, phase, Some(&b.trace))?;
     }
     let cycles = b.cycle;
     let rec = match b.vectors.take() {

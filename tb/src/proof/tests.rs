@@ -230,3 +230,16 @@ fn rtl_confirms_the_cycle_models_frame_cycles_for_fifo_depths_1_2_4_8() {
         assert_eq!(rtl.lists, model.lists);
     }
 }
+
+/// Issue 18: an OPP whose output is never taken ends one watchdog period after the last load or
+/// slot with the phase named, not at a cycle budget.
+#[test]
+fn an_opp_frame_that_stops_making_progress_ends_at_once_naming_the_phase() {
+    let mut rng = Rng::new(0x0bb);
+    let s = Screen::new(12, 8).unwrap();
+    let objs = random_objects(&mut rng, s, 6, 8);
+    let gaps = Gaps { seed: 3, source_gap_percent: 0, sink_gap_percent: 100 };
+    let e = run_frame(s, &objs, 8, 1, Some(gaps), None, None).err().expect("a frame with no consumer cannot finish");
+    assert!(e.contains("no progress for 10000 cycles in the OPP frame (0 of 96 pixels' lists out)"), "{e}");
+    assert!(e.contains("VCD=1"), "{e}");
+}
