@@ -106,9 +106,10 @@ pub struct OpModel {
     pub last_action: Action,
 }
 
-/// The combinational decisions of a cycle.
+/// The combinational decisions of a cycle (what [`OpModel::outputs`] presents and [`OpModel::step`]
+/// then does; the OPP model computes them once per cycle with [`OpModel::decide_outputs`]).
 #[derive(Copy, Clone, Debug)]
-struct Decision {
+pub struct Decision {
     action: Action,
     emit: Option<Slot>,
     pop: bool,
@@ -229,10 +230,22 @@ impl OpModel {
         OpOut { up_ready: self.fifo.len() < self.depth || d.pop, down_valid: self.out_valid, down_data: self.out_data, free: self.free() }
     }
 
+    /// This cycle's decisions and outputs, for [`OpModel::step_decided`].
+    pub fn decide_outputs(&self, down_ready: bool) -> (Decision, OpOut) {
+        let d = self.decide(down_ready);
+        (d, OpOut { up_ready: self.fifo.len() < self.depth || d.pop, down_valid: self.out_valid, down_data: self.out_data, free: self.free() })
+    }
+
     /// One clock: returns the outputs that were presented before the edge.
     pub fn step(&mut self, inp: &OpIn) -> OpOut {
-        let d = self.decide(inp.down_ready);
-        let out = OpOut { up_ready: self.fifo.len() < self.depth || d.pop, down_valid: self.out_valid, down_data: self.out_data, free: self.free() };
+        let (d, out) = self.decide_outputs(inp.down_ready);
+        self.step_decided(inp, d);
+        out
+    }
+
+    /// One clock with the decisions `decide_outputs(inp.down_ready)` already made this cycle.
+    pub fn step_decided(&mut self, inp: &OpIn, d: Decision) {
+        let up_ready = self.fifo.len() < self.depth || d.pop;
         self.last_action = d.action;
         // Output register.
         if let Some(s) = d.emit {
@@ -279,7 +292,7 @@ impl OpModel {
         if d.pop {
             self.fifo.pop_front();
         }
-        if inp.up_valid && out.up_ready {
+        if inp.up_valid && up_ready {
             self.fifo.push_back(inp.up_data);
         }
         if let Some(p) = inp.load {
@@ -290,7 +303,6 @@ impl OpModel {
             let n = p.n.map(|n| n.v0);
             self.acc = Accumulators { row_d: d, cur_d: d, row_z: p.z.v0, cur_z: p.z.v0, row_n: n, cur_n: n };
         }
-        out
     }
 
     /// After the box pixel (x, y): step to the next box pixel.

@@ -18,7 +18,7 @@
 //! before that pixel is still unloaded. An OP becomes free once its object's last box pixel has passed
 //! it. N must be at least [`super::render::ops_needed`]; with fewer the frame cannot finish.
 
-use super::cycle_op::{Action, OpIn, OpModel, OpOut};
+use super::cycle_op::{Action, Decision, OpIn, OpModel, OpOut};
 use super::format::{Entry, ObjectParams, Slot};
 use crate::format::Screen;
 
@@ -45,6 +45,8 @@ pub struct OppOut {
 #[derive(Clone, Debug)]
 pub struct OppModel {
     pub ops: Vec<OpModel>,
+    /// This cycle's decisions and outputs, last OP first (kept to save an allocation per cycle).
+    scratch: Vec<(Decision, OpOut)>,
 }
 
 impl OppModel {
@@ -52,7 +54,7 @@ impl OppModel {
         if n == 0 {
             return Err("an OPP needs at least one object processor".into());
         }
-        Ok(OppModel { ops: (0..n).map(|_| OpModel::new(fifo_depth)).collect::<Result<_, _>>()? })
+        Ok(OppModel { ops: (0..n).map(|_| OpModel::new(fifo_depth)).collect::<Result<_, _>>()?, scratch: Vec::with_capacity(n) })
     }
 
     /// Each OP's outputs this cycle, the ready path resolved from the last OP back.
@@ -81,18 +83,30 @@ impl OppModel {
                 return Err(format!("load into OP {k}, but the OPP has {n}"));
             }
         }
-        let o = self.op_outputs(inp.down_ready);
+        // Each OP decides once (the ready path resolved from the last OP back), then every OP steps
+        // on those decisions: the same as `op_outputs` followed by `OpModel::step`, at half the cost.
+        let mut scratch = std::mem::take(&mut self.scratch);
+        scratch.clear();
+        let mut ready = inp.down_ready;
+        for k in (0..n).rev() {
+            let (d, o) = self.ops[k].decide_outputs(ready);
+            ready = o.up_ready;
+            scratch.push((d, o));
+        }
+        let at = |k: usize| &scratch[n - 1 - k];
         for k in 0..n {
-            let (up_valid, up_data) = if k == 0 { (inp.up_valid, inp.up_data) } else { (o[k - 1].down_valid, o[k - 1].down_data) };
-            let down_ready = if k == n - 1 { inp.down_ready } else { o[k + 1].up_ready };
+            let (up_valid, up_data) = if k == 0 { (inp.up_valid, inp.up_data) } else { (at(k - 1).1.down_valid, at(k - 1).1.down_data) };
+            let down_ready = if k == n - 1 { inp.down_ready } else { at(k + 1).1.up_ready };
             let load = match inp.load {
                 Some((j, p)) if j == k => Some(p),
                 _ => None,
             };
-            self.ops[k].step(&OpIn { up_valid, up_data, down_ready, load });
+            self.ops[k].step_decided(&OpIn { up_valid, up_data, down_ready, load }, at(k).0);
         }
-        let last = o[n - 1];
-        Ok(OppOut { up_ready: o[0].up_ready, down_valid: last.down_valid, down_data: last.down_data, free: o.iter().map(|x| x.free).collect() })
+        let (first, last) = (at(0).1, at(n - 1).1);
+        let free = (0..n).map(|k| at(k).1.free).collect();
+        self.scratch = scratch;
+        Ok(OppOut { up_ready: first.up_ready, down_valid: last.down_valid, down_data: last.down_data, free })
     }
 }
 
