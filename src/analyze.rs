@@ -43,7 +43,8 @@ pub struct AnalyzeArgs {
     /// Depth complexity assumed by the worst-case bandwidth (seed 000 Fig. 11): fragments per pixel.
     #[arg(long, default_value_t = 4.0)]
     pub worst_depth: f64,
-    /// Write analysis.md and the charts (PNG) into this directory.
+    /// Write analysis.md and the charts (PNG) into this directory, replaced as a whole (a folder
+    /// holding other files is refused).
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Print the full results as JSON on stdout instead of the summary.
@@ -121,7 +122,18 @@ fn resolutions(levels: &[&HardwareLevel]) -> Vec<(u32, u32)> {
     r
 }
 
+/// The files `analyze --out DIR` writes: analysis.md and the charts (`fig*.png`, `seed001_*.png`).
+fn is_analysis_output(n: &str) -> bool {
+    n == "analysis.md" || (n.ends_with(".png") && (n.starts_with("fig") || n.starts_with("seed001_")))
+}
+
 pub fn run(args: &AnalyzeArgs) -> Result<(), String> {
+    // --out is one unit (crate::output::OutputDir), checked before the work: staged, then moved into
+    // place whole; an error on the way leaves the previous folder as it was.
+    let od = match &args.out {
+        Some(dir) => Some(crate::output::OutputDir::begin_with(dir, &is_analysis_output)?),
+        None => None,
+    };
     if !(args.worst_depth.is_finite() && args.worst_depth >= 1.0 && args.worst_depth <= 1000.0) {
         return Err(format!("--worst-depth {} is not a depth complexity in 1..=1000 (fragments per pixel)", args.worst_depth));
     }
@@ -168,15 +180,16 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), String> {
         say!("{}", summary(&a).trim_end());
         say!("({} frames rendered in {:.1} s)", measured.len() * 3, secs);
     }
-    if let Some(dir) = &args.out {
-        std::fs::create_dir_all(dir).map_err(|e| format!("cannot create output directory {}: {e}", dir.display()))?;
+    if args.out.is_some() {
         let charts = charts(&a)?;
         let md = report(&a, &command, &charts.iter().map(|c| c.0.clone()).collect::<Vec<_>>());
+        let od = od.ok_or("internal: --out given but not staged")?;
         let mut files = Vec::new();
         for (name, png) in &charts {
-            files.push(write_atomic(dir, name, png)?);
+            files.push(od.final_path(&write_atomic(od.dir(), name, png)?));
         }
-        files.push(write_atomic(dir, "analysis.md", md.as_bytes())?);
+        files.push(od.final_path(&write_atomic(od.dir(), "analysis.md", md.as_bytes())?));
+        od.commit()?;
         if !args.json {
             for f in files {
                 say!("  wrote {}", f.display());

@@ -50,6 +50,12 @@ impl OutputDir {
     /// Check `out` (a folder holding nothing but this program's outputs, or nothing, or not there yet)
     /// and make the staging folder beside it.
     pub fn begin(out: &Path) -> Result<OutputDir, String> {
+        OutputDir::begin_with(out, &|n| KNOWN_OUTPUTS.contains(&n))
+    }
+
+    /// [`OutputDir::begin`] for a command whose files are those `is_ours` accepts (`verilog`,
+    /// `analyze`): a folder holding anything else is refused, never replaced.
+    pub fn begin_with(out: &Path, is_ours: &dyn Fn(&str) -> bool) -> Result<OutputDir, String> {
         let name = out.file_name().map(|n| n.to_string_lossy().into_owned()).ok_or_else(|| format!("--out {}: not a folder name", out.display()))?;
         let parent = match out.parent() {
             Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
@@ -63,7 +69,7 @@ impl OutputDir {
             let mut foreign: Vec<String> = entries
                 .filter_map(|e| e.ok())
                 .map(|e| e.file_name().to_string_lossy().into_owned())
-                .filter(|n| !KNOWN_OUTPUTS.contains(&n.as_str()) && !(n.starts_with('.') && n.ends_with(".tmp")))
+                .filter(|n| !is_ours(n.as_str()) && !(n.starts_with('.') && n.ends_with(".tmp")))
                 .collect();
             if !foreign.is_empty() {
                 foreign.sort();

@@ -16,7 +16,8 @@ pub struct VerilogArgs {
     /// The top to generate (one of `hdl::TOPS`); all of them when left out.
     #[arg(long)]
     pub block: Option<String>,
-    /// Output directory: one `<block>.v` per top, `files.f` and `README.md`.
+    /// Output directory: one `<block>.v` per top, `files.f` and `README.md`, replaced as a whole (a
+    /// folder holding other files is refused).
     #[arg(long, default_value = "out/verilog")]
     pub out: PathBuf,
 }
@@ -370,19 +371,27 @@ pub fn readme(tops: &[(String, String)]) -> Result<String, String> {
 
 pub fn run(args: &VerilogArgs) -> Result<(), String> {
     let blocks = selected_tops(args.block.as_deref())?;
-    std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create {}: {e}", args.out.display()))?;
+    // The folder is one unit (crate::output::OutputDir): written staged, moved into --out at the end;
+    // a failure leaves the previous folder whole, and no .v of an earlier run stays beside files.f.
+    let ours = |n: &str| n == "files.f" || n == "README.md" || n.strip_suffix(".v").is_some_and(|t| hdl::TOPS.iter().any(|top| top.0 == t));
+    let od = crate::output::OutputDir::begin_with(&args.out, &ours)?;
     let mut tops = Vec::new();
+    let mut wrote = Vec::new();
     for b in blocks {
         let v = hdl::verilog_top(&b)?;
         parse_ports(&v, &b)?;
-        let path = crate::output::write_atomic(&args.out, &format!("{b}.v"), v.as_bytes())?;
-        crate::say!("wrote {} ({} lines)", path.display(), v.lines().count());
+        let path = crate::output::write_atomic(od.dir(), &format!("{b}.v"), v.as_bytes())?;
+        wrote.push(format!("wrote {} ({} lines)", od.final_path(&path).display(), v.lines().count()));
         tops.push((b, v));
     }
     let list: String = tops.iter().map(|(b, _)| format!("{b}.v\n")).collect();
-    let path = crate::output::write_atomic(&args.out, "files.f", list.as_bytes())?;
-    crate::say!("wrote {}", path.display());
-    let path = crate::output::write_atomic(&args.out, "README.md", readme(&tops)?.as_bytes())?;
-    crate::say!("wrote {}", path.display());
+    let path = crate::output::write_atomic(od.dir(), "files.f", list.as_bytes())?;
+    wrote.push(format!("wrote {}", od.final_path(&path).display()));
+    let path = crate::output::write_atomic(od.dir(), "README.md", readme(&tops)?.as_bytes())?;
+    wrote.push(format!("wrote {}", od.final_path(&path).display()));
+    od.commit()?;
+    for w in wrote {
+        crate::say!("{w}");
+    }
     Ok(())
 }

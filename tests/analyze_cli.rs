@@ -124,7 +124,20 @@ fn bad_arguments_give_errors_naming_the_problem() {
     assert_clean_error(&["analyze", "--obj", "/nonexistent/x.obj", "--level", "low"], "x.obj");
     let file = temp_dir("notadir").join("file");
     std::fs::write(&file, b"x").unwrap();
-    assert_clean_error(&["analyze", "--scene", "polyhedron", "--level", "low", "--out", file.to_str().unwrap()], "cannot create");
+    assert_clean_error(&["analyze", "--scene", "polyhedron", "--level", "low", "--out", file.to_str().unwrap()], "not a folder");
+}
+
+/// `analyze --out` is one unit like `render --out` (issue 18): a folder holding a file that analyze
+/// does not write is refused before any work, and left as it was.
+#[test]
+fn analyze_refuses_an_out_folder_with_foreign_files_before_the_work() {
+    let dir = temp_dir("foreign");
+    std::fs::write(dir.join("notes.txt"), b"mine").unwrap();
+    let t0 = std::time::Instant::now();
+    assert_clean_error(&["analyze", "--scene", "polyhedron", "--level", "low", "--out", dir.to_str().unwrap()], "notes.txt");
+    assert!(t0.elapsed().as_secs_f64() < 5.0, "refused only after the analysis");
+    assert_eq!(std::fs::read(dir.join("notes.txt")).unwrap(), b"mine");
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
 }
 
 /// A failed write to standard output is an error (issue 18: `analyze --json > /dev/full` exited 0); a

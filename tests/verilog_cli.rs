@@ -112,3 +112,37 @@ fn verilog_rejects_an_unknown_block_naming_the_known_ones() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("unknown block 'nosuch'") && err.contains("rc"), "{err}");
 }
+
+/// `verilog --out` is one unit (issue 18): a run for one block replaces a folder of every block whole
+/// (no stale .v beside a files.f that no longer lists it); a write that fails halfway leaves the
+/// previous folder complete; a folder with files verilog does not write is refused.
+#[test]
+fn verilog_out_is_replaced_whole_never_mixed_and_foreign_folders_are_refused() {
+    let dir = scratch("verilog_unit");
+    generate(&dir);
+    let all: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    assert!(all.len() > 3);
+    // A failed run: the third file stops halfway.
+    let o = bin().args(["verilog", "--block", "rc", "--out"]).arg(&dir).env("IDXRENDER_FAIL_AFTER_WRITES", "1").output().unwrap();
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("injected fault"), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut after: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    let mut before = all.clone();
+    before.sort();
+    after.sort();
+    assert_eq!(after, before, "a failed run changed --out");
+    let parent = dir.parent().unwrap();
+    assert!(!std::fs::read_dir(parent).unwrap().any(|e| e.unwrap().file_name().to_string_lossy().starts_with(".verilog_unit.")), "staging left behind");
+    // A good run for one block: exactly its files.
+    let o = bin().args(["verilog", "--block", "rc", "--out"]).arg(&dir).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut now: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    now.sort();
+    assert_eq!(now, ["README.md", "files.f", "rc.v"]);
+    // A folder with a file of someone else's.
+    std::fs::write(dir.join("my_wrapper.sv"), b"module w; endmodule").unwrap();
+    let o = bin().args(["verilog", "--block", "rc", "--out"]).arg(&dir).output().unwrap();
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("my_wrapper.sv"), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(dir.join("my_wrapper.sv").exists() && dir.join("rc.v").exists());
+}
