@@ -173,8 +173,8 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
     };
     let md = markdown(&report);
     let json = serde_json::to_string_pretty(&report).map_err(|e| format!("bench.json: {e}"))?;
-    let p1 = crate::output::write_atomic(&out_dir, &md_name, md.as_bytes())?;
-    let p2 = crate::output::write_atomic(&out_dir, &json_name, json.as_bytes())?;
+    let written = crate::output::write_set(&out_dir, &[(&md_name, md.as_bytes()), (&json_name, json.as_bytes())])?;
+    let (p1, p2) = (written[0].clone(), written[1].clone());
     for line in summary(&report) {
         crate::say!("{line}");
     }

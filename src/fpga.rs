@@ -615,9 +615,10 @@ pub fn run(args: &FpgaArgs) -> Result<(), String> {
         rows.extend(report_top(top, &devices, &tools, args, &dir)?);
     }
     let md = markdown(&rows, &tools, args, t0.elapsed().as_secs_f64());
-    let path = crate::output::write_atomic(dir, &name, md.as_bytes())?;
     let json_name = Path::new(&name).with_extension("json").to_string_lossy().to_string();
-    let jpath = crate::output::write_atomic(dir, &json_name, json(&rows).as_bytes())?;
+    let jtext = json(&rows);
+    let written = crate::output::write_set(dir, &[(&name, md.as_bytes()), (&json_name, jtext.as_bytes())])?;
+    let (path, jpath) = (&written[0], &written[1]);
     crate::say!("wrote {} and {} ({:.0} s)", path.display(), jpath.display(), t0.elapsed().as_secs_f64());
     Ok(())
 }

@@ -36,6 +36,43 @@ pub fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<PathBuf, Str
     Ok(path)
 }
 
+/// Write several files that belong together (a report's .md and .json) beside other files: every
+/// file is written in full under a temporary name first, and only then are they renamed into place,
+/// so a failed write (a full disk, a file-size limit) leaves the previous set whole, never a new .md
+/// beside an old .json.
+pub fn write_set(dir: &Path, files: &[(&str, &[u8])]) -> Result<Vec<PathBuf>, String> {
+    let tmp = |name: &str| dir.join(format!(".{name}.tmp"));
+    let clean = || {
+        for (name, _) in files {
+            let _ = std::fs::remove_file(tmp(name));
+        }
+    };
+    for (name, bytes) in files {
+        let n = WRITES.fetch_add(1, Ordering::Relaxed);
+        let fail = std::env::var("IDXRENDER_FAIL_AFTER_WRITES").ok().and_then(|v| v.parse::<usize>().ok()).is_some_and(|k| n >= k);
+        let r = if fail {
+            let _ = std::fs::write(tmp(name), &bytes[..bytes.len() / 2]);
+            Err(format!("cannot write {}: injected fault after {n} files (IDXRENDER_FAIL_AFTER_WRITES)", tmp(name).display()))
+        } else {
+            std::fs::write(tmp(name), bytes).map_err(|e| format!("cannot write {}: {e}", tmp(name).display()))
+        };
+        if let Err(e) = r {
+            clean();
+            return Err(e);
+        }
+    }
+    let mut paths = Vec::new();
+    for (name, _) in files {
+        let path = dir.join(name);
+        std::fs::rename(tmp(name), &path).map_err(|e| {
+            clean();
+            format!("cannot write {}: {e}", path.display())
+        })?;
+        paths.push(path);
+    }
+    Ok(paths)
+}
+
 /// The output folder of one run, staged: write into [`OutputDir::dir`], then [`OutputDir::commit`].
 /// Dropped without a commit (an error on the way), it removes what it staged and `--out` is as it was.
 pub struct OutputDir {
@@ -164,4 +201,30 @@ pub fn write_frame(dir: &Path, frame: &Frame, stats_json: &serde_json::Value) ->
         write_atomic(dir, "index.png", &png_bytes(w, h, &index_false_colour(&frame.index))?)?,
         write_atomic(dir, "stats.json", serde_json::to_string_pretty(stats_json).unwrap().as_bytes())?,
     ])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::write_set;
+
+    /// A report's .md and .json (bench, fpga-report) go in together: when the second cannot be
+    /// written, the first keeps its earlier content and no temporary file is left.
+    #[test]
+    fn a_set_whose_second_file_cannot_be_written_leaves_the_first_as_it_was() {
+        let dir = std::env::temp_dir().join(format!("idxrender-write-set-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("r.md"), b"earlier").unwrap();
+        // The second file's temporary name is taken by a folder, so its write fails.
+        std::fs::create_dir(dir.join(".r.json.tmp")).unwrap();
+        let e = write_set(&dir, &[("r.md", b"new md"), ("r.json", b"{}")]).unwrap_err();
+        assert!(e.contains(".r.json.tmp"), "{e}");
+        assert_eq!(std::fs::read(dir.join("r.md")).unwrap(), b"earlier");
+        assert!(!dir.join(".r.md.tmp").exists() && !dir.join("r.json").exists());
+        std::fs::remove_dir(dir.join(".r.json.tmp")).unwrap();
+        let paths = write_set(&dir, &[("r.md", b"new md"), ("r.json", b"{}")]).unwrap();
+        assert_eq!(paths, [dir.join("r.md"), dir.join("r.json")]);
+        assert_eq!(std::fs::read(dir.join("r.md")).unwrap(), b"new md");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }
