@@ -79,3 +79,17 @@ fn rtl_draws_the_teapot_frame_like_the_algorithmic_model() {
     check_against_reference("teapot", screen, &cmds, &run);
     println!("teapot: {} commands, {} cycles, {:.0} RTL cycles/s", cmds.len(), run.cycles, run.rtl_cycles_per_second);
 }
+
+/// The Z-test's read-after-write forwarding (issue 15 item 6): with no gap on the command port, a
+/// triangle set up during a large one's walk has its first fragment at the large one's last pixel, in
+/// the next clock. The test checks that the hazard happens (two Z reads of one address in consecutive
+/// cycles) and that the buffers are right: without the forwarding the farther triangle's index would
+/// be written over the nearer one's at that pixel.
+#[test]
+fn back_to_back_fragments_of_two_triangles_on_one_pixel_see_the_first_ones_depth() {
+    let (name, cmds) = hand_made().into_iter().find(|(n, _)| *n == "same_pixel_across_triangles_without_gap").unwrap();
+    let screen = hand_made_screen();
+    let run = run_rtl(name, screen, &cmds, Drive::ideal(), None).unwrap_or_else(|e| panic!("{e}"));
+    assert!(run.same_address_reads_back_to_back > 0, "the stimulus did not produce the hazard");
+    check_against_reference(name, screen, &cmds, &run);
+}

@@ -36,12 +36,15 @@
 //! * Frame start: with `clear`, W*H cycles of clear writes (Z = 2^24-1, I = 0, one pixel per clock,
 //!   both buffers at once) starting the cycle after; without `clear`, nothing (the buffers were
 //!   cleared elsewhere, e.g. behind the Color Shader's scan-out).
-//! * A triangle to walk: loaded in the cycle it is taken, then one candidate pixel per clock in raster
-//!   order over the clamped bounding box; the cycle after the last candidate it is `Idle` again.
-//! * Results (a walked triangle's last candidate, a culled/empty triangle, end of frame) go through the
-//!   z-test stage into a one-word result register. Such a token is issued only when the result register
-//!   is empty and the z-test stage holds no other result: otherwise the traversal waits (on its last
-//!   candidate, or in `Idle` before taking the record).
+//! * A triangle to walk: loaded in the cycle it is taken, then its clamped bounding box in raster
+//!   order, at most one fragment per clock, uncovered candidates skipped up to 4 or 16 at a time
+//!   ([`walk_step`] is the rule); the cycle that ends the walk also takes the next record if it is a
+//!   triangle or a frame start, so consecutive walks follow each other with no idle cycle.
+//! * Results (a walk's last token, a culled/empty triangle, end of frame) go through the z-test stage
+//!   into a one-word result register. Such a token is issued only when the result register is empty
+//!   and the z-test stage holds no other result: otherwise the traversal waits (in the clock that would
+//!   end the walk, or in `Idle` before taking the record). A walk's last token is its last fragment
+//!   when the clock that issues it also ends the walk, else an uncovered end token.
 //!
 //! *Z-test stage* (the cycle after a candidate was issued): `z_rd_data` and `i_rd_data` arrive; the old
 //! depth is 2^24-1 where the I-buffer holds the background index (a pixel no triangle of this frame has
@@ -229,6 +232,48 @@ enum TravState {
     Walk { x: i32, y: i32 },
 }
 
+/// Candidates the traversal looks at per clock: it issues the first covered one (at most one
+/// fragment per clock) and skips the rest of the window when none is covered.
+pub const WALK_WINDOW: i32 = 4;
+/// Candidates skipped in one clock when an edge function rules them all out.
+pub const WALK_LONG_SKIP: i32 = 16;
+
+/// One clock of the walk at candidate (x, y): the fragment issued (its x), whether the walk ends in
+/// this clock, and the next candidate otherwise.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct WalkStep {
+    pub frag: Option<i32>,
+    pub end: bool,
+    pub next_x: i32,
+    pub next_y: i32,
+}
+
+/// The traversal's rule (docs/rc.md, "Traversal"): the window is the candidates x..=x+3 of the row,
+/// not past the box. Issue the first covered one and go on at the next covered one in the window.
+/// With none left, the clock skips ahead: past the window, or past [`WALK_LONG_SKIP`] candidates when
+/// none is covered and an edge function is negative both at x and at x+15 (it is linear, so it is
+/// negative in between). It ends the row instead when the skip reaches the box's edge or when, at the
+/// skip's last candidate, an edge function is negative and does not grow to the right (step_x <= 0:
+/// nothing further right in this row is inside). The walk ends with the last row.
+pub fn walk_step(s: &Setup, x: i32, y: i32) -> WalkStep {
+    let b = s.bbox;
+    let mut covered = (x..=(x + WALK_WINDOW - 1).min(b.x1)).filter(|&cx| s.covers(cx, y));
+    let frag = covered.next();
+    let next_covered = covered.next();
+    let (xi, yi) = (x as i64, y as i64);
+    let long = frag.is_none() && s.edges.iter().any(|e| e.at(xi, yi) < 0 && e.at(xi + WALK_LONG_SKIP as i64 - 1, yi) < 0);
+    let far = x + if long { WALK_LONG_SKIP } else { WALK_WINDOW } - 1;
+    let dead = s.edges.iter().any(|e| e.at(far as i64, yi) < 0 && e.step_x <= 0);
+    let row_done = next_covered.is_none() && (far >= b.x1 || dead);
+    let end = row_done && y == b.y1;
+    let (next_x, next_y) = match (row_done, next_covered) {
+        (true, _) => (b.x0, y + 1),
+        (false, Some(nx)) => (nx, y),
+        (false, None) => (far + 1, y),
+    };
+    WalkStep { frag, end, next_x, next_y }
+}
+
 /// The cycle-accurate RC.
 #[derive(Clone, Debug)]
 pub struct RcModel {
@@ -293,16 +338,18 @@ impl RcModel {
             TravState::Clear { addr } => (Token::Clear { addr }, false),
             TravState::Walk { x, y } => {
                 let (index, s) = self.walking.expect("walking without a triangle");
-                let last = x == s.bbox.x1 && y == s.bbox.y1;
-                if last && !result_free {
+                let w = walk_step(&s, x, y);
+                if w.end && !result_free {
                     return (Token::None, false);
                 }
-                let inside = s.covers(x, y);
-                if !inside && !last {
-                    return (Token::None, false);
+                // The cycle that ends a walk also takes the next record when it needs no token of its
+                // own (a triangle to walk, a frame start): no idle cycle between triangles.
+                let take = w.end && matches!(self.offered(), Some(Record::Walk { .. }) | Some(Record::Frame { .. }));
+                match (w.frag, w.end) {
+                    (Some(fx), last) => (Token::Frag { inside: true, last, addr: self.addr(fx, y), z: s.depth_at(fx, y), index }, take),
+                    (None, true) => (Token::Frag { inside: false, last: true, addr: self.addr(x, y), z: 0, index }, take),
+                    (None, false) => (Token::None, false),
                 }
-                let z = if inside { s.depth_at(x, y) } else { 0 };
-                (Token::Frag { inside, last, addr: self.addr(x, y), z, index }, false)
             }
             TravState::Idle => match self.offered() {
                 None => (Token::None, false),
@@ -320,6 +367,18 @@ impl RcModel {
                 ),
                 Some(_) => (Token::None, false),
             },
+        }
+    }
+
+    /// The traversal's state after taking `rec` (from `Idle`, or in the cycle that ends a walk).
+    fn start_record(&mut self, rec: Record) {
+        match rec {
+            Record::Frame { clear: true } => self.tstate = TravState::Clear { addr: 0 },
+            Record::Walk { index, setup } => {
+                self.tstate = TravState::Walk { x: setup.bbox.x0, y: setup.bbox.y0 };
+                self.walking = Some((index, setup));
+            }
+            _ => {}
         }
     }
 
@@ -386,28 +445,22 @@ impl RcModel {
             }
             TravState::Walk { x, y } => {
                 let (_, s) = self.walking.unwrap();
-                let last = x == s.bbox.x1 && y == s.bbox.y1;
-                if last {
+                let w = walk_step(&s, x, y);
+                if w.end {
                     if tok != Token::None {
                         self.tstate = TravState::Idle;
                         self.walking = None;
+                        if take {
+                            self.start_record(offered.unwrap());
+                        }
                     }
-                } else if x == s.bbox.x1 {
-                    self.tstate = TravState::Walk { x: s.bbox.x0, y: y + 1 };
                 } else {
-                    self.tstate = TravState::Walk { x: x + 1, y };
+                    self.tstate = TravState::Walk { x: w.next_x, y: w.next_y };
                 }
             }
             TravState::Idle => {
                 if take {
-                    match offered.unwrap() {
-                        Record::Frame { clear: true } => self.tstate = TravState::Clear { addr: 0 },
-                        Record::Walk { index, setup } => {
-                            self.tstate = TravState::Walk { x: setup.bbox.x0, y: setup.bbox.y0 };
-                            self.walking = Some((index, setup));
-                        }
-                        _ => {}
-                    }
+                    self.start_record(offered.unwrap());
                 }
             }
         }
@@ -484,19 +537,62 @@ mod tests {
     }
 
     #[test]
-    fn a_drawn_triangle_takes_the_documented_setup_latency_then_one_pixel_per_clock() {
+    fn a_drawn_triangle_takes_the_documented_setup_latency_then_one_fragment_per_clock() {
         let screen = Screen::new(16, 16).unwrap();
         let mut m = RcModel::new(screen);
-        // A 4x4-pixel box, clockwise (det > 0), drawn with CullMode::None.
+        // A 4x4-pixel box, clockwise (det > 0), drawn with CullMode::None. Pixels whose centres are
+        // inside: X + Y < 4 with the diagonal excluded (not top-left) -> rows of 3, 2, 1 and 0.
         let t = RcCmd::triangle(7, [v(0, 0, 10), v(64, 0, 10), v(0, 64, 10)], CullMode::None, FrontFace::Ccw).unwrap();
         let (mut z, mut i) = (vec![DEPTH_MAX; 256], vec![0; 256]);
         let (res, _) = run(&mut m, &[t], &mut z, &mut i);
-        // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN (36) and taken there, 16
-        // candidates in the 16 cycles after, the last one's z-test one cycle later, the result visible
-        // in the register the cycle after that.
-        assert_eq!(res[0], (SETUP_CYCLES_DRAWN + 18, RcResult { index: 7, visible: true, ..Default::default() }));
-        // Pixels whose centres are inside: X + Y < 4 with the diagonal excluded (not top-left) -> 6.
+        // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN (36) and taken there. The walk:
+        // one clock per fragment (3 + 2 + 1), the last of a row ending the row because the window
+        // reaches the box's edge, and one clock for the empty last row: 7 clocks. The last token's
+        // z-test one cycle later, the result in the register the cycle after that.
+        assert_eq!(res[0], (SETUP_CYCLES_DRAWN + 7 + 2, RcResult { index: 7, visible: true, ..Default::default() }));
         assert_eq!(i.iter().filter(|&&x| x == 7).count(), 6);
+    }
+
+    /// The walk issues every covered pixel of the box exactly once, in raster order, and nothing
+    /// else, on random triangles of every size and orientation (the rule that skips candidates must
+    /// never skip a covered one).
+    #[test]
+    fn the_walk_issues_every_covered_pixel_once_in_raster_order_and_nothing_else() {
+        let screen = Screen::new(64, 48).unwrap();
+        let mut seed = 0x9e3779b97f4a7c15u64;
+        let mut rnd = |n: i64| -> i64 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % n as u64) as i64
+        };
+        let mut walked = 0;
+        for t in 0..3000 {
+            let span = [8, 40, 200, 1100][t % 4];
+            let (cx, cy) = (rnd(64 * 16), rnd(48 * 16));
+            let p = |r: &mut dyn FnMut(i64) -> i64| v((cx + r(2 * span) - span) as i32, (cy + r(2 * span) - span) as i32, 5);
+            let tri = [p(&mut rnd), p(&mut rnd), p(&mut rnd)];
+            let Ok(s) = setup(&tri, CullMode::None, FrontFace::Ccw, screen) else { continue };
+            if s.bbox.is_empty() {
+                continue;
+            }
+            let want: Vec<(i32, i32)> = (s.bbox.y0..=s.bbox.y1).flat_map(|y| (s.bbox.x0..=s.bbox.x1).map(move |x| (x, y))).filter(|&(x, y)| s.covers(x, y)).collect();
+            let (mut x, mut y, mut got, mut clocks) = (s.bbox.x0, s.bbox.y0, Vec::new(), 0u64);
+            loop {
+                let w = walk_step(&s, x, y);
+                clocks += 1;
+                got.extend(w.frag.map(|fx| (fx, y)));
+                if w.end {
+                    break;
+                }
+                assert!(w.next_y == y && w.next_x > x || w.next_y == y + 1 && w.next_x == s.bbox.x0, "the walk went backwards");
+                (x, y) = (w.next_x, w.next_y);
+            }
+            assert_eq!(got, want, "triangle {tri:?}");
+            assert!(clocks <= s.bbox.pixels(), "more clocks than candidates");
+            walked += 1;
+        }
+        assert!(walked > 1500, "only {walked} triangles walked");
     }
 
     #[test]

@@ -1,27 +1,36 @@
-//! `traversal`: walks a triangle's clamped bounding box in raster order, one candidate pixel per clock,
-//! with incremental edge functions (seed 001 eq. 5: `E += -16*dy` per pixel, `+16*dx` per row) and
-//! incremental depth (`raw += A` per pixel, `+B` per row: the same integers as `Plane::raw`); runs the
-//! clear engine; and issues one token per cycle to the z-test stage.
+//! `traversal`: walks a triangle's clamped bounding box in raster order with incremental edge
+//! functions (seed 001 eq. 5: `E += -16*dy` per pixel, `+16*dx` per row) and incremental depth
+//! (`raw += A` per pixel, `+B` per row: the same integers as `Plane::raw`), issuing at most one
+//! fragment per clock; runs the clear engine; and issues one token per cycle to the z-test stage.
 //!
 //! ```text
-//!                 +------------------------------------+
-//!  rec_* -------->| Idle: take a record                |--> tok_kind (none/clear/frag/result)
-//!  rec_valid ---->| Clear: W*H clear tokens, 1/clock   |--> tok_addr, tok_z, tok_index,
-//!  rec_ready <----| Walk: 1 candidate/clock            |    tok_covered, tok_last,
-//!  result_free -->|                                    |    tok_eof, tok_culled, tok_zero_area
-//!  clock -------->|                                    |
-//!                 +------------------------------------+
+//!                 +--------------------------------------+
+//!  rec_* -------->| Idle: take a record                  |--> tok_kind (none/clear/frag/result)
+//!  rec_valid ---->| Clear: W*H clear tokens, 1/clock     |--> tok_addr, tok_z, tok_index,
+//!  rec_ready <----| Walk: a window of 4 candidates/clock |    tok_covered, tok_last,
+//!  result_free -->|       one fragment/clock             |    tok_eof, tok_culled, tok_zero_area
+//!  clock -------->|                                      |
+//!                 +--------------------------------------+
 //! ```
 //!
-//! Cycle behaviour:
+//! Cycle behaviour (`golden::cycle::rc::walk_step` is the rule, docs/rc.md the description):
 //! * `Idle` takes a frame start (`Clear` from the next cycle if it asks for it), a triangle to walk
 //!   (loaded this cycle, `Walk` from the next) or, when `result_free`, a skipped triangle or end of frame
 //!   (its result token is issued in the same cycle).
-//! * `Walk`: a fragment token for every covered candidate and for the last one (which carries the
-//!   triangle's result); the last candidate waits for `result_free`. `Idle` after the last candidate.
+//! * `Walk` at candidate x looks at x..=x+3 (not past the box): the four edge values come from
+//!   `E + j*step` (the multiples j = 1, 2, 3, 4, 15 of the steps are registered when the triangle is
+//!   loaded; arithmetic needed only by one branch sits in that branch, which keeps the RustHDL
+//!   simulation from doing it every cycle), covered
+//!   candidates by their signs. It issues the first covered one as a fragment and goes on at the next
+//!   covered one; with none left it skips past the window, or past 16 candidates (`long`) when none
+//!   is covered and an edge is negative at x and at x+15. It ends the row instead when the skip
+//!   reaches the box's edge, or an edge is negative at the skip's last candidate with a step that
+//!   does not grow (`nonpos`). Ending the last row ends the walk; that cycle's token (the
+//!   fragment, or an uncovered end token) carries the triangle's result and waits for `result_free`,
+//!   and the same cycle takes the next record if it is a triangle or a frame start (no idle cycle).
 //! * `Clear`: tokens for addresses 0..W*H-1, then `Idle`.
 //!
-//! Depth of a candidate: `round(raw / 2^16)` clamped to 0..=2^24-1, as `Plane::eval_clamped`.
+//! Depth of a fragment: `round(raw / 2^16)` clamped to 0..=2^24-1, as `Plane::eval_clamped`.
 
 use super::setup::{REC_EOF, REC_FRAME, REC_WALK};
 use crate::common::signed_bit_cast_safe;
@@ -84,6 +93,8 @@ pub struct Traversal {
     pub tok_culled: Signal<Out, Bit>,
     pub tok_zero_area: Signal<Out, Bit>,
 
+    // Registers: the walk's position and increments; sxJ_K is J times edge K's x step, gaJ J times A;
+    // nonpos K: edge K's x step is <= 0 (it never grows to the right).
     state: DFF<TravState>,
     x: DFF<Bits<10>>,
     y: DFF<Bits<10>>,
@@ -99,28 +110,84 @@ pub struct Traversal {
     er0: DFF<Signed<36>>,
     er1: DFF<Signed<36>>,
     er2: DFF<Signed<36>>,
-    sx0: DFF<Signed<36>>,
-    sx1: DFF<Signed<36>>,
-    sx2: DFF<Signed<36>>,
+    sx1_0: DFF<Signed<36>>,
+    sx2_0: DFF<Signed<36>>,
+    sx3_0: DFF<Signed<36>>,
+    sx4_0: DFF<Signed<36>>,
+    sx15_0: DFF<Signed<36>>,
+    sx1_1: DFF<Signed<36>>,
+    sx2_1: DFF<Signed<36>>,
+    sx3_1: DFF<Signed<36>>,
+    sx4_1: DFF<Signed<36>>,
+    sx15_1: DFF<Signed<36>>,
+    sx1_2: DFF<Signed<36>>,
+    sx2_2: DFF<Signed<36>>,
+    sx3_2: DFF<Signed<36>>,
+    sx4_2: DFF<Signed<36>>,
+    sx15_2: DFF<Signed<36>>,
     sy0: DFF<Signed<36>>,
     sy1: DFF<Signed<36>>,
     sy2: DFF<Signed<36>>,
+    nonpos0: DFF<Bit>,
+    nonpos1: DFF<Bit>,
+    nonpos2: DFF<Bit>,
     raw: DFF<Signed<56>>,
     raw_row: DFF<Signed<56>>,
-    grad_a: DFF<Signed<56>>,
+    ga1: DFF<Signed<56>>,
+    ga2: DFF<Signed<56>>,
+    ga3: DFF<Signed<56>>,
+    ga4: DFF<Signed<56>>,
+    ga16: DFF<Signed<56>>,
     grad_b: DFF<Signed<56>>,
 
-    covered: Signal<Local, Bit>,
-    at_last: Signal<Local, Bit>,
-    row_end: Signal<Local, Bit>,
+    // The window: ewJ_K is edge K at x+J, rwJ the raw depth at x+J; cov J: candidate x+J is covered
+    // and inside the box; fsel the first covered one, nsel the next candidate after this clock.
+    ew1_0: Signal<Local, Signed<36>>,
+    ew2_0: Signal<Local, Signed<36>>,
+    ew3_0: Signal<Local, Signed<36>>,
+    ew15_0: Signal<Local, Signed<36>>,
+    ew1_1: Signal<Local, Signed<36>>,
+    ew2_1: Signal<Local, Signed<36>>,
+    ew3_1: Signal<Local, Signed<36>>,
+    ew15_1: Signal<Local, Signed<36>>,
+    ew1_2: Signal<Local, Signed<36>>,
+    ew2_2: Signal<Local, Signed<36>>,
+    ew3_2: Signal<Local, Signed<36>>,
+    ew15_2: Signal<Local, Signed<36>>,
+    rem: Signal<Local, Bits<10>>,
+    cov0: Signal<Local, Bit>,
+    cov1: Signal<Local, Bit>,
+    cov2: Signal<Local, Bit>,
+    cov3: Signal<Local, Bit>,
+    has_frag: Signal<Local, Bit>,
+    fsel: Signal<Local, Bits<2>>,
+    has_next: Signal<Local, Bit>,
+    nsel: Signal<Local, Bits<3>>,
+    dead4: Signal<Local, Bit>,
+    dead16: Signal<Local, Bit>,
+    long: Signal<Local, Bit>,
+    row_done: Signal<Local, Bit>,
+    walk_end: Signal<Local, Bit>,
+    at_last_row: Signal<Local, Bit>,
+    fraw: Signal<Local, Signed<56>>,
     rounded: Signal<Local, Signed<56>>,
     rounded_u: Signal<Local, Bits<56>>,
     depth: Signal<Local, Bits<24>>,
-    e0_row: Signal<Local, Signed<36>>,
-    e1_row: Signal<Local, Signed<36>>,
-    e2_row: Signal<Local, Signed<36>>,
-    raw_next_row: Signal<Local, Signed<56>>,
-    addr_next_row: Signal<Local, Bits<20>>,
+    faddr: Signal<Local, Bits<20>>,
+    load_walk: Signal<Local, Bit>,
+    load_clear: Signal<Local, Bit>,
+    rsx1_0: Signal<Local, Signed<36>>,
+    rsx1_1: Signal<Local, Signed<36>>,
+    rsx1_2: Signal<Local, Signed<36>>,
+    rsx2_0: Signal<Local, Signed<36>>,
+    rsx2_1: Signal<Local, Signed<36>>,
+    rsx2_2: Signal<Local, Signed<36>>,
+    rsx4_0: Signal<Local, Signed<36>>,
+    rsx4_1: Signal<Local, Signed<36>>,
+    rsx4_2: Signal<Local, Signed<36>>,
+    ra1: Signal<Local, Signed<56>>,
+    ra2: Signal<Local, Signed<56>>,
+    ra4: Signal<Local, Signed<56>>,
 
     width: Constant<Bits<20>>,
     last_addr: Constant<Bits<20>>,
@@ -128,9 +195,35 @@ pub struct Traversal {
     depth_max: Constant<Bits<24>>,
     k0_24: Constant<Bits<24>>,
     k0_15: Constant<Bits<15>>,
+    ks0_36: Constant<Signed<36>>,
+    ks0_56: Constant<Signed<56>>,
+    kz2: Constant<Bits<2>>,
+    kz3: Constant<Bits<3>>,
+    kz10: Constant<Bits<10>>,
+    kz20: Constant<Bits<20>>,
+    kz24: Constant<Bits<24>>,
+    kz56: Constant<Bits<56>>,
+    k0_10: Constant<Bits<10>>,
     k1_10: Constant<Bits<10>>,
+    k15_10: Constant<Bits<10>>,
+    k16_10: Constant<Bits<10>>,
+    k16_20: Constant<Bits<20>>,
+    k2_10: Constant<Bits<10>>,
+    k3_10: Constant<Bits<10>>,
+    k4_10: Constant<Bits<10>>,
     k1_20: Constant<Bits<20>>,
+    k2_20: Constant<Bits<20>>,
+    k3_20: Constant<Bits<20>>,
+    k4_20: Constant<Bits<20>>,
     k0_20: Constant<Bits<20>>,
+    k0_2: Constant<Bits<2>>,
+    k1_2: Constant<Bits<2>>,
+    k2_2: Constant<Bits<2>>,
+    k3_2: Constant<Bits<2>>,
+    k1_3: Constant<Bits<3>>,
+    k2_3: Constant<Bits<3>>,
+    k3_3: Constant<Bits<3>>,
+    k4_3: Constant<Bits<3>>,
     tok_none: Constant<Bits<2>>,
     tok_clear: Constant<Bits<2>>,
     tok_frag: Constant<Bits<2>>,
@@ -193,36 +286,116 @@ impl Traversal {
             er0: Default::default(),
             er1: Default::default(),
             er2: Default::default(),
-            sx0: Default::default(),
-            sx1: Default::default(),
-            sx2: Default::default(),
+            sx1_0: Default::default(),
+            sx2_0: Default::default(),
+            sx3_0: Default::default(),
+            sx4_0: Default::default(),
+            sx15_0: Default::default(),
+            sx1_1: Default::default(),
+            sx2_1: Default::default(),
+            sx3_1: Default::default(),
+            sx4_1: Default::default(),
+            sx15_1: Default::default(),
+            sx1_2: Default::default(),
+            sx2_2: Default::default(),
+            sx3_2: Default::default(),
+            sx4_2: Default::default(),
+            sx15_2: Default::default(),
             sy0: Default::default(),
             sy1: Default::default(),
             sy2: Default::default(),
+            nonpos0: Default::default(),
+            nonpos1: Default::default(),
+            nonpos2: Default::default(),
             raw: Default::default(),
             raw_row: Default::default(),
-            grad_a: Default::default(),
+            ga1: Default::default(),
+            ga2: Default::default(),
+            ga3: Default::default(),
+            ga4: Default::default(),
+            ga16: Default::default(),
             grad_b: Default::default(),
-            covered: Default::default(),
-            at_last: Default::default(),
-            row_end: Default::default(),
+            ew1_0: Default::default(),
+            ew2_0: Default::default(),
+            ew3_0: Default::default(),
+            ew15_0: Default::default(),
+            ew1_1: Default::default(),
+            ew2_1: Default::default(),
+            ew3_1: Default::default(),
+            ew15_1: Default::default(),
+            ew1_2: Default::default(),
+            ew2_2: Default::default(),
+            ew3_2: Default::default(),
+            ew15_2: Default::default(),
+            rem: Default::default(),
+            cov0: Default::default(),
+            cov1: Default::default(),
+            cov2: Default::default(),
+            cov3: Default::default(),
+            has_frag: Default::default(),
+            fsel: Default::default(),
+            has_next: Default::default(),
+            nsel: Default::default(),
+            dead4: Default::default(),
+            dead16: Default::default(),
+            long: Default::default(),
+            row_done: Default::default(),
+            walk_end: Default::default(),
+            at_last_row: Default::default(),
+            fraw: Default::default(),
             rounded: Default::default(),
             rounded_u: Default::default(),
             depth: Default::default(),
-            e0_row: Default::default(),
-            e1_row: Default::default(),
-            e2_row: Default::default(),
-            raw_next_row: Default::default(),
-            addr_next_row: Default::default(),
+            faddr: Default::default(),
+            load_walk: Default::default(),
+            load_clear: Default::default(),
+            rsx1_0: Default::default(),
+            rsx1_1: Default::default(),
+            rsx1_2: Default::default(),
+            rsx2_0: Default::default(),
+            rsx2_1: Default::default(),
+            rsx2_2: Default::default(),
+            rsx4_0: Default::default(),
+            rsx4_1: Default::default(),
+            rsx4_2: Default::default(),
+            ra1: Default::default(),
+            ra2: Default::default(),
+            ra4: Default::default(),
             width: Constant::new((width as u64).into()),
             last_addr: Constant::new(((width * height - 1) as u64).into()),
             half: Constant::new((1i64 << 15).into()),
             depth_max: Constant::new(((1u64 << 24) - 1).into()),
             k0_24: Constant::new(0.into()),
             k0_15: Constant::new(0.into()),
+            ks0_36: Constant::new(0i64.into()),
+            ks0_56: Constant::new(0i64.into()),
+            kz2: Constant::new(0.into()),
+            kz3: Constant::new(0.into()),
+            kz10: Constant::new(0.into()),
+            kz20: Constant::new(0.into()),
+            kz24: Constant::new(0.into()),
+            kz56: Constant::new(0.into()),
+            k0_10: Constant::new(0.into()),
             k1_10: Constant::new(1.into()),
+            k15_10: Constant::new(15.into()),
+            k16_10: Constant::new(16.into()),
+            k16_20: Constant::new(16.into()),
+            k2_10: Constant::new(2.into()),
+            k3_10: Constant::new(3.into()),
+            k4_10: Constant::new(4.into()),
             k1_20: Constant::new(1.into()),
+            k2_20: Constant::new(2.into()),
+            k3_20: Constant::new(3.into()),
+            k4_20: Constant::new(4.into()),
             k0_20: Constant::new(0.into()),
+            k0_2: Constant::new(0.into()),
+            k1_2: Constant::new(1.into()),
+            k2_2: Constant::new(2.into()),
+            k3_2: Constant::new(3.into()),
+            k1_3: Constant::new(1.into()),
+            k2_3: Constant::new(2.into()),
+            k3_3: Constant::new(3.into()),
+            k4_3: Constant::new(4.into()),
             tok_none: Constant::new(TOK_NONE.into()),
             tok_clear: Constant::new(TOK_CLEAR.into()),
             tok_frag: Constant::new(TOK_FRAG.into()),
@@ -238,29 +411,180 @@ impl Logic for Traversal {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, x, y, bx0, bx1, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx0, sx1, sx2, sy0,
-            sy1, sy2, raw, raw_row, grad_a, grad_b
+            self, clock, state, x, y, bx0, bx1, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, raw, raw_row, ga1, ga2, ga3, ga4, ga16, grad_b
         );
-        // The candidate at (x, y).
-        self.covered.next = !self.e0.q.val().get_bit(35) & !self.e1.q.val().get_bit(35) & !self.e2.q.val().get_bit(35);
-        self.at_last.next = (self.x.q.val() == self.bx1.q.val()) & (self.y.q.val() == self.by1.q.val());
-        self.row_end.next = self.x.q.val() == self.bx1.q.val();
-        self.rounded.next = self.raw.q.val() + self.half.val();
-        self.rounded_u.next = unsigned_cast(self.rounded.val());
-        self.depth.next = self.rounded_u.val().get_bits::<24>(16);
-        if self.rounded_u.val().get_bits::<15>(40) != self.k0_15.val() {
-            self.depth.next = self.depth_max.val();
+        if self.state.q.val() == TravState::Walk {
+            // ---- The window at (x, y) ----
+            self.ew1_0.next = self.e0.q.val() + self.sx1_0.q.val();
+            self.ew2_0.next = self.e0.q.val() + self.sx2_0.q.val();
+            self.ew3_0.next = self.e0.q.val() + self.sx3_0.q.val();
+            self.ew15_0.next = self.e0.q.val() + self.sx15_0.q.val();
+            self.ew1_1.next = self.e1.q.val() + self.sx1_1.q.val();
+            self.ew2_1.next = self.e1.q.val() + self.sx2_1.q.val();
+            self.ew3_1.next = self.e1.q.val() + self.sx3_1.q.val();
+            self.ew15_1.next = self.e1.q.val() + self.sx15_1.q.val();
+            self.ew1_2.next = self.e2.q.val() + self.sx1_2.q.val();
+            self.ew2_2.next = self.e2.q.val() + self.sx2_2.q.val();
+            self.ew3_2.next = self.e2.q.val() + self.sx3_2.q.val();
+            self.ew15_2.next = self.e2.q.val() + self.sx15_2.q.val();
+            self.rem.next = self.bx1.q.val() - self.x.q.val();
+            self.cov0.next = !self.e0.q.val().get_bit(35) & !self.e1.q.val().get_bit(35) & !self.e2.q.val().get_bit(35);
+            self.cov1.next = !self.ew1_0.val().get_bit(35) & !self.ew1_1.val().get_bit(35) & !self.ew1_2.val().get_bit(35) & (self.rem.val() > self.k0_10.val());
+            self.cov2.next = !self.ew2_0.val().get_bit(35) & !self.ew2_1.val().get_bit(35) & !self.ew2_2.val().get_bit(35) & (self.rem.val() > self.k1_10.val());
+            self.cov3.next = !self.ew3_0.val().get_bit(35) & !self.ew3_1.val().get_bit(35) & !self.ew3_2.val().get_bit(35) & (self.rem.val() > self.k2_10.val());
+            // The first covered candidate, and the next one after it (or the window's end, 4).
+            self.has_frag.next = self.cov0.val() | self.cov1.val() | self.cov2.val() | self.cov3.val();
+            self.fsel.next = self.k3_2.val();
+            if self.cov2.val() {
+                self.fsel.next = self.k2_2.val();
+            }
+            if self.cov1.val() {
+                self.fsel.next = self.k1_2.val();
+            }
+            if self.cov0.val() {
+                self.fsel.next = self.k0_2.val();
+            }
+            self.nsel.next = self.k4_3.val();
+            self.has_next.next = false;
+            if self.cov0.val() {
+                if self.cov3.val() {
+                    self.nsel.next = self.k3_3.val();
+                    self.has_next.next = true;
+                }
+                if self.cov2.val() {
+                    self.nsel.next = self.k2_3.val();
+                    self.has_next.next = true;
+                }
+                if self.cov1.val() {
+                    self.nsel.next = self.k1_3.val();
+                    self.has_next.next = true;
+                }
+            } else if self.cov1.val() {
+                if self.cov3.val() {
+                    self.nsel.next = self.k3_3.val();
+                    self.has_next.next = true;
+                }
+                if self.cov2.val() {
+                    self.nsel.next = self.k2_3.val();
+                    self.has_next.next = true;
+                }
+            } else if self.cov2.val() {
+                if self.cov3.val() {
+                    self.nsel.next = self.k3_3.val();
+                    self.has_next.next = true;
+                }
+            }
+            // The long skip: nothing covered in the window, and an edge negative at x and at x+15 (so at
+            // every candidate between).
+            self.long.next = !self.has_frag.val()
+                & ((self.e0.q.val().get_bit(35) & self.ew15_0.val().get_bit(35))
+                    | (self.e1.q.val().get_bit(35) & self.ew15_1.val().get_bit(35))
+                    | (self.e2.q.val().get_bit(35) & self.ew15_2.val().get_bit(35)));
+            // Nothing further right in this row: an edge negative at the skip's last candidate whose
+            // step does not grow.
+            self.dead4.next = (self.ew3_0.val().get_bit(35) & self.nonpos0.q.val())
+                | (self.ew3_1.val().get_bit(35) & self.nonpos1.q.val())
+                | (self.ew3_2.val().get_bit(35) & self.nonpos2.q.val());
+            self.dead16.next = (self.ew15_0.val().get_bit(35) & self.nonpos0.q.val())
+                | (self.ew15_1.val().get_bit(35) & self.nonpos1.q.val())
+                | (self.ew15_2.val().get_bit(35) & self.nonpos2.q.val());
+            self.row_done.next = !self.has_next.val() & (!(self.rem.val() > self.k3_10.val()) | self.dead4.val());
+            if self.long.val() {
+                self.row_done.next = !(self.rem.val() > self.k15_10.val()) | self.dead16.val();
+            }
+            self.at_last_row.next = self.y.q.val() == self.by1.q.val();
+            self.walk_end.next = self.row_done.val() & self.at_last_row.val();
+            // The fragment: its raw depth, address and depth.
+            self.fraw.next = self.raw.q.val();
+            self.faddr.next = self.addr.q.val();
+            // (The additions sit in the branches: the RustHDL simulation then does only the one taken.)
+            if self.fsel.val() == self.k1_2.val() {
+                self.fraw.next = self.raw.q.val() + self.ga1.q.val();
+                self.faddr.next = self.addr.q.val() + self.k1_20.val();
+            }
+            if self.fsel.val() == self.k2_2.val() {
+                self.fraw.next = self.raw.q.val() + self.ga2.q.val();
+                self.faddr.next = self.addr.q.val() + self.k2_20.val();
+            }
+            if self.fsel.val() == self.k3_2.val() {
+                self.fraw.next = self.raw.q.val() + self.ga3.q.val();
+                self.faddr.next = self.addr.q.val() + self.k3_20.val();
+            }
+            self.rounded.next = self.fraw.val() + self.half.val();
+            self.rounded_u.next = unsigned_cast(self.rounded.val());
+            self.depth.next = self.rounded_u.val().get_bits::<24>(16);
+            if self.rounded_u.val().get_bits::<15>(40) != self.k0_15.val() {
+                self.depth.next = self.depth_max.val();
+            }
+            if self.rounded.val().get_bit(55) {
+                self.depth.next = self.k0_24.val();
+            }
+        } else {
+            self.ew1_0.next = self.ks0_36.val();
+            self.ew2_0.next = self.ks0_36.val();
+            self.ew3_0.next = self.ks0_36.val();
+            self.ew15_0.next = self.ks0_36.val();
+            self.ew1_1.next = self.ks0_36.val();
+            self.ew2_1.next = self.ks0_36.val();
+            self.ew3_1.next = self.ks0_36.val();
+            self.ew15_1.next = self.ks0_36.val();
+            self.ew1_2.next = self.ks0_36.val();
+            self.ew2_2.next = self.ks0_36.val();
+            self.ew3_2.next = self.ks0_36.val();
+            self.ew15_2.next = self.ks0_36.val();
+            self.rem.next = self.kz10.val();
+            self.cov0.next = false;
+            self.cov1.next = false;
+            self.cov2.next = false;
+            self.cov3.next = false;
+            self.has_frag.next = false;
+            self.fsel.next = self.kz2.val();
+            self.nsel.next = self.kz3.val();
+            self.has_next.next = false;
+            self.long.next = false;
+            self.dead4.next = false;
+            self.dead16.next = false;
+            self.row_done.next = false;
+            self.at_last_row.next = false;
+            self.walk_end.next = false;
+            self.fraw.next = self.ks0_56.val();
+            self.faddr.next = self.kz20.val();
+            self.rounded.next = self.ks0_56.val();
+            self.rounded_u.next = self.kz56.val();
+            self.depth.next = self.kz24.val();
         }
-        if self.rounded.val().get_bit(55) {
-            self.depth.next = self.k0_24.val();
-        }
-        self.e0_row.next = self.er0.q.val() + self.sy0.q.val();
-        self.e1_row.next = self.er1.q.val() + self.sy1.q.val();
-        self.e2_row.next = self.er2.q.val() + self.sy2.q.val();
-        self.raw_next_row.next = self.raw_row.q.val() + self.grad_b.q.val();
-        self.addr_next_row.next = self.addr_row.q.val() + self.width.val();
+        if self.rec_valid.val() {
+            // The multiples of a record's steps (the rest are summed in the load branch).
+            self.rsx1_0.next = signed_bit_cast_safe::<36, 22>(self.rec_sx0.val());
+            self.rsx2_0.next = self.rsx1_0.val() + self.rsx1_0.val();
+            self.rsx4_0.next = self.rsx2_0.val() + self.rsx2_0.val();
+            self.rsx1_1.next = signed_bit_cast_safe::<36, 22>(self.rec_sx1.val());
+            self.rsx2_1.next = self.rsx1_1.val() + self.rsx1_1.val();
+            self.rsx4_1.next = self.rsx2_1.val() + self.rsx2_1.val();
+            self.rsx1_2.next = signed_bit_cast_safe::<36, 22>(self.rec_sx2.val());
+            self.rsx2_2.next = self.rsx1_2.val() + self.rsx1_2.val();
+            self.rsx4_2.next = self.rsx2_2.val() + self.rsx2_2.val();
+            self.ra1.next = signed_bit_cast_safe::<56, 40>(self.rec_a.val());
+            self.ra2.next = self.ra1.val() + self.ra1.val();
+            self.ra4.next = self.ra2.val() + self.ra2.val();
 
+        } else {
+            self.rsx1_0.next = self.ks0_36.val();
+            self.rsx2_0.next = self.ks0_36.val();
+            self.rsx4_0.next = self.ks0_36.val();
+            self.rsx1_1.next = self.ks0_36.val();
+            self.rsx2_1.next = self.ks0_36.val();
+            self.rsx4_1.next = self.ks0_36.val();
+            self.rsx1_2.next = self.ks0_36.val();
+            self.rsx2_2.next = self.ks0_36.val();
+            self.rsx4_2.next = self.ks0_36.val();
+            self.ra1.next = self.ks0_56.val();
+            self.ra2.next = self.ks0_56.val();
+            self.ra4.next = self.ks0_56.val();
+        }
         self.rec_ready.next = false;
+        self.load_walk.next = false;
+        self.load_clear.next = false;
         self.tok_kind.next = self.tok_none.val();
         self.tok_covered.next = false;
         self.tok_last.next = false;
@@ -283,37 +607,8 @@ impl Logic for Traversal {
                         self.tok_culled.next = self.rec_culled.val();
                         self.tok_zero_area.next = self.rec_zero_area.val();
                     }
-                    if (self.rec_kind.val() == self.rec_frame.val()) & self.rec_clear.val() {
-                        self.addr.d.next = self.k0_20.val();
-                        self.state.d.next = TravState::Clear;
-                    }
-                    if self.rec_kind.val() == self.rec_walk.val() {
-                        self.x.d.next = self.rec_bx0.val();
-                        self.y.d.next = self.rec_by0.val();
-                        self.bx0.d.next = self.rec_bx0.val();
-                        self.bx1.d.next = self.rec_bx1.val();
-                        self.by1.d.next = self.rec_by1.val();
-                        self.index.d.next = self.rec_index.val();
-                        self.addr.d.next = self.rec_addr.val();
-                        self.addr_row.d.next = self.rec_addr.val();
-                        self.e0.d.next = self.rec_e0.val();
-                        self.e1.d.next = self.rec_e1.val();
-                        self.e2.d.next = self.rec_e2.val();
-                        self.er0.d.next = self.rec_e0.val();
-                        self.er1.d.next = self.rec_e1.val();
-                        self.er2.d.next = self.rec_e2.val();
-                        self.sx0.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sx0.val());
-                        self.sx1.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sx1.val());
-                        self.sx2.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sx2.val());
-                        self.sy0.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sy0.val());
-                        self.sy1.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sy1.val());
-                        self.sy2.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sy2.val());
-                        self.raw.d.next = self.rec_raw.val();
-                        self.raw_row.d.next = self.rec_raw.val();
-                        self.grad_a.d.next = signed_bit_cast_safe::<56, 40>(self.rec_a.val());
-                        self.grad_b.d.next = signed_bit_cast_safe::<56, 40>(self.rec_b.val());
-                        self.state.d.next = TravState::Walk;
-                    }
+                    self.load_clear.next = (self.rec_kind.val() == self.rec_frame.val()) & self.rec_clear.val();
+                    self.load_walk.next = self.rec_kind.val() == self.rec_walk.val();
                 }
             }
             TravState::Clear => {
@@ -325,44 +620,129 @@ impl Logic for Traversal {
                 }
             }
             TravState::Walk => {
-                if !self.at_last.val() | self.result_free.val() {
-                    if self.covered.val() | self.at_last.val() {
+                if !self.walk_end.val() | self.result_free.val() {
+                    if self.has_frag.val() | self.walk_end.val() {
                         self.tok_kind.next = self.tok_frag.val();
-                        self.tok_covered.next = self.covered.val();
-                        self.tok_last.next = self.at_last.val();
-                        self.tok_addr.next = self.addr.q.val();
+                        self.tok_covered.next = self.has_frag.val();
+                        self.tok_last.next = self.walk_end.val();
+                        self.tok_addr.next = self.faddr.val();
                     }
-                    if self.covered.val() {
+                    if self.has_frag.val() {
                         self.tok_z.next = self.depth.val();
                     }
-                    if self.at_last.val() {
+                    if self.walk_end.val() {
                         self.state.d.next = TravState::Idle;
-                    } else if self.row_end.val() {
+                        // The next triangle or frame start is taken in this cycle.
+                        if self.rec_valid.val() & ((self.rec_kind.val() == self.rec_frame.val()) | (self.rec_kind.val() == self.rec_walk.val())) {
+                            self.rec_ready.next = true;
+                            self.load_clear.next = (self.rec_kind.val() == self.rec_frame.val()) & self.rec_clear.val();
+                            self.load_walk.next = self.rec_kind.val() == self.rec_walk.val();
+                        }
+                    } else if self.row_done.val() {
                         self.x.d.next = self.bx0.q.val();
                         self.y.d.next = self.y.q.val() + self.k1_10.val();
-                        self.er0.d.next = self.e0_row.val();
-                        self.er1.d.next = self.e1_row.val();
-                        self.er2.d.next = self.e2_row.val();
-                        self.e0.d.next = self.e0_row.val();
-                        self.e1.d.next = self.e1_row.val();
-                        self.e2.d.next = self.e2_row.val();
-                        self.raw_row.d.next = self.raw_next_row.val();
-                        self.raw.d.next = self.raw_next_row.val();
-                        self.addr_row.d.next = self.addr_next_row.val();
-                        self.addr.d.next = self.addr_next_row.val();
-                    } else {
+                        self.er0.d.next = self.er0.q.val() + self.sy0.q.val();
+                        self.e0.d.next = self.er0.q.val() + self.sy0.q.val();
+                        self.er1.d.next = self.er1.q.val() + self.sy1.q.val();
+                        self.e1.d.next = self.er1.q.val() + self.sy1.q.val();
+                        self.er2.d.next = self.er2.q.val() + self.sy2.q.val();
+                        self.e2.d.next = self.er2.q.val() + self.sy2.q.val();
+                        self.raw_row.d.next = self.raw_row.q.val() + self.grad_b.q.val();
+                        self.raw.d.next = self.raw_row.q.val() + self.grad_b.q.val();
+                        self.addr_row.d.next = self.addr_row.q.val() + self.width.val();
+                        self.addr.d.next = self.addr_row.q.val() + self.width.val();
+                    } else if self.nsel.val() == self.k1_3.val() {
                         self.x.d.next = self.x.q.val() + self.k1_10.val();
-                        self.e0.d.next = self.e0.q.val() + self.sx0.q.val();
-                        self.e1.d.next = self.e1.q.val() + self.sx1.q.val();
-                        self.e2.d.next = self.e2.q.val() + self.sx2.q.val();
-                        self.raw.d.next = self.raw.q.val() + self.grad_a.q.val();
+                        self.e0.d.next = self.ew1_0.val();
+                        self.e1.d.next = self.ew1_1.val();
+                        self.e2.d.next = self.ew1_2.val();
+                        self.raw.d.next = self.raw.q.val() + self.ga1.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k1_20.val();
+                    } else if self.nsel.val() == self.k2_3.val() {
+                        self.x.d.next = self.x.q.val() + self.k2_10.val();
+                        self.e0.d.next = self.ew2_0.val();
+                        self.e1.d.next = self.ew2_1.val();
+                        self.e2.d.next = self.ew2_2.val();
+                        self.raw.d.next = self.raw.q.val() + self.ga2.q.val();
+                        self.addr.d.next = self.addr.q.val() + self.k2_20.val();
+                    } else if self.nsel.val() == self.k3_3.val() {
+                        self.x.d.next = self.x.q.val() + self.k3_10.val();
+                        self.e0.d.next = self.ew3_0.val();
+                        self.e1.d.next = self.ew3_1.val();
+                        self.e2.d.next = self.ew3_2.val();
+                        self.raw.d.next = self.raw.q.val() + self.ga3.q.val();
+                        self.addr.d.next = self.addr.q.val() + self.k3_20.val();
+                    } else if self.long.val() {
+                        self.x.d.next = self.x.q.val() + self.k16_10.val();
+                        self.e0.d.next = self.ew15_0.val() + self.sx1_0.q.val();
+                        self.e1.d.next = self.ew15_1.val() + self.sx1_1.q.val();
+                        self.e2.d.next = self.ew15_2.val() + self.sx1_2.q.val();
+                        self.raw.d.next = self.raw.q.val() + self.ga16.q.val();
+                        self.addr.d.next = self.addr.q.val() + self.k16_20.val();
+                    } else {
+                        self.x.d.next = self.x.q.val() + self.k4_10.val();
+                        self.e0.d.next = self.e0.q.val() + self.sx4_0.q.val();
+                        self.e1.d.next = self.e1.q.val() + self.sx4_1.q.val();
+                        self.e2.d.next = self.e2.q.val() + self.sx4_2.q.val();
+                        self.raw.d.next = self.raw.q.val() + self.ga4.q.val();
+                        self.addr.d.next = self.addr.q.val() + self.k4_20.val();
                     }
                 }
             }
             _ => {
                 self.state.d.next = TravState::Idle;
             }
+        }
+        // Taking a record (from Idle, or in the cycle that ends a walk).
+        if self.load_clear.val() {
+            self.addr.d.next = self.k0_20.val();
+            self.state.d.next = TravState::Clear;
+        }
+        if self.load_walk.val() {
+            self.x.d.next = self.rec_bx0.val();
+            self.y.d.next = self.rec_by0.val();
+            self.bx0.d.next = self.rec_bx0.val();
+            self.bx1.d.next = self.rec_bx1.val();
+            self.by1.d.next = self.rec_by1.val();
+            self.index.d.next = self.rec_index.val();
+            self.addr.d.next = self.rec_addr.val();
+            self.addr_row.d.next = self.rec_addr.val();
+            self.e0.d.next = self.rec_e0.val();
+            self.er0.d.next = self.rec_e0.val();
+            self.sx1_0.d.next = self.rsx1_0.val();
+            self.sx2_0.d.next = self.rsx2_0.val();
+            self.sx3_0.d.next = self.rsx2_0.val() + self.rsx1_0.val();
+            self.sx4_0.d.next = self.rsx4_0.val();
+            self.sx15_0.d.next = self.rsx4_0.val() + self.rsx4_0.val() + self.rsx4_0.val() + self.rsx2_0.val() + self.rsx1_0.val();
+            self.sy0.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sy0.val());
+            self.nonpos0.d.next = self.rec_sx0.val().get_bit(21) | (self.rsx1_0.val() == self.ks0_36.val());
+            self.e1.d.next = self.rec_e1.val();
+            self.er1.d.next = self.rec_e1.val();
+            self.sx1_1.d.next = self.rsx1_1.val();
+            self.sx2_1.d.next = self.rsx2_1.val();
+            self.sx3_1.d.next = self.rsx2_1.val() + self.rsx1_1.val();
+            self.sx4_1.d.next = self.rsx4_1.val();
+            self.sx15_1.d.next = self.rsx4_1.val() + self.rsx4_1.val() + self.rsx4_1.val() + self.rsx2_1.val() + self.rsx1_1.val();
+            self.sy1.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sy1.val());
+            self.nonpos1.d.next = self.rec_sx1.val().get_bit(21) | (self.rsx1_1.val() == self.ks0_36.val());
+            self.e2.d.next = self.rec_e2.val();
+            self.er2.d.next = self.rec_e2.val();
+            self.sx1_2.d.next = self.rsx1_2.val();
+            self.sx2_2.d.next = self.rsx2_2.val();
+            self.sx3_2.d.next = self.rsx2_2.val() + self.rsx1_2.val();
+            self.sx4_2.d.next = self.rsx4_2.val();
+            self.sx15_2.d.next = self.rsx4_2.val() + self.rsx4_2.val() + self.rsx4_2.val() + self.rsx2_2.val() + self.rsx1_2.val();
+            self.sy2.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sy2.val());
+            self.nonpos2.d.next = self.rec_sx2.val().get_bit(21) | (self.rsx1_2.val() == self.ks0_36.val());
+            self.raw.d.next = self.rec_raw.val();
+            self.raw_row.d.next = self.rec_raw.val();
+            self.ga1.d.next = self.ra1.val();
+            self.ga2.d.next = self.ra2.val();
+            self.ga3.d.next = self.ra2.val() + self.ra1.val();
+            self.ga4.d.next = self.ra4.val();
+            self.ga16.d.next = self.ra4.val() + self.ra4.val() + self.ra4.val() + self.ra4.val();
+            self.grad_b.d.next = signed_bit_cast_safe::<56, 40>(self.rec_b.val());
+            self.state.d.next = TravState::Walk;
         }
     }
 }

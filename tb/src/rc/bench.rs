@@ -56,6 +56,9 @@ pub struct Run {
     /// Cycles with a Z read (covered candidates) and with a fragment's Z write (passes).
     pub z_reads: u64,
     pub z_passes: u64,
+    /// Cycles whose Z read is of the address read in the cycle before: the read-after-write hazard
+    /// that only the z-test's forwarding resolves (it cannot see the previous fragment's write).
+    pub same_address_reads_back_to_back: u64,
     /// Simulation speed of the RTL in cycles per second (0 for model-only runs).
     pub rtl_cycles_per_second: f64,
 }
@@ -197,6 +200,7 @@ fn run_inner(
         Mode::ModelOnly => None,
     };
     let (mut results, mut z_reads, mut z_passes) = (Vec::new(), 0u64, 0u64);
+    let (mut back_to_back, mut last_read) = (0u64, None::<u32>);
     let start = std::time::Instant::now();
     let (watchdog, mut last_activity) = (screen.pixels() as u64 + 1024, 0u64);
     for cycle in 0..max_cycles {
@@ -216,6 +220,9 @@ fn run_inner(
         let out = expected;
         driver.edge(&inp, &out);
         z_reads += out.z_re as u64;
+        let read = out.z_re.then_some(out.z_rd_addr);
+        back_to_back += (read.is_some() && read == last_read) as u64;
+        last_read = read;
         // A passing fragment writes a depth below the far value; a clear writes the far value.
         z_passes += (out.z_we && out.z_wr_data != DEPTH_MAX) as u64;
         zmem.edge(out.z_re.then_some(out.z_rd_addr), out.z_we.then_some((out.z_wr_addr, out.z_wr_data))).map_err(|e| Stop::Error(format!("cycle {cycle}: Z-buffer: {e}")))?;
@@ -246,7 +253,7 @@ fn run_inner(
         if taken && out.res.eof && driver.next == cmds.len() {
             let secs = start.elapsed().as_secs_f64();
             let rate = if rtl.is_some() && secs > 0.0 { (cycle + 1) as f64 / secs } else { 0.0 };
-            return Ok(Run { results, zbuf: zmem.words, ibuf: imem.words, cycles: cycle + 1, z_reads, z_passes, rtl_cycles_per_second: rate });
+            return Ok(Run { results, zbuf: zmem.words, ibuf: imem.words, cycles: cycle + 1, z_reads, z_passes, same_address_reads_back_to_back: back_to_back, rtl_cycles_per_second: rate });
         }
     }
     if stop_after.is_some() {

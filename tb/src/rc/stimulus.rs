@@ -103,7 +103,23 @@ pub fn hand_made() -> Vec<(&'static str, Vec<RcCmd>)> {
         tri(2, [px(5 * s + 4, 5 * s + 4, 600), px(5 * s + 12, 5 * s + 4, 600), px(5 * s + 8, 5 * s + 12, 600)]),
         tri(3, [px(5 * s + 4, 5 * s + 4, 650), px(5 * s + 12, 5 * s + 4, 650), px(5 * s + 8, 5 * s + 12, 650)]),
     ]));
+    // The same pixel in consecutive cycles across triangles with no gap: a large triangle's last
+    // fragment (on its box's last row, so the walk ends with it), then a triangle whose first fragment
+    // is that pixel, farther away, whose record was set up during the large one's walk, so it is taken
+    // in the same clock and its first fragment follows at once. Its Z read cannot see the large one's
+    // write yet; only the forwarding keeps it from drawing over the nearer triangle there.
+    let big = [px(2 * s, 2 * s, 100), px(12 * s, 12 * s, 100), px(2 * s, 12 * s, 100)];
+    let (lx, ly) = last_covered(&big, hand_made_screen());
+    let behind = [px(lx * s + 4, ly * s + 4, 900), px(lx * s + 60, ly * s + 4, 900), px(lx * s + 4, ly * s + 60, 900)];
+    cases.push(("same_pixel_across_triangles_without_gap", vec![tri(1, big), tri(2, behind)]));
     cases.into_iter().map(|(n, t)| (n, frame(true, t))).collect()
+}
+
+/// The last covered pixel of a triangle in raster order (where its walk's last fragment is).
+fn last_covered(v: &[WinVertex; 3], screen: Screen) -> (i32, i32) {
+    let st = golden::raster::setup(v, CullMode::None, FrontFace::Ccw, screen).expect("a drawn triangle");
+    let b = st.bbox;
+    (b.y0..=b.y1).flat_map(|y| (b.x0..=b.x1).map(move |x| (x, y))).filter(|&(x, y)| st.covers(x, y)).last().expect("covers a pixel")
 }
 
 /// The screen of the hand-made cases.
