@@ -292,6 +292,9 @@ pub struct RcModel {
     res: Option<RcResult>,
     /// Cycles stepped so far.
     pub cycle: u64,
+    /// Cycles the traversal spent walking triangles, and those of them that issued a fragment.
+    pub walk_clocks: u64,
+    pub walk_fragment_clocks: u64,
 }
 
 impl RcModel {
@@ -307,6 +310,8 @@ impl RcModel {
             vis: false,
             res: None,
             cycle: 0,
+            walk_clocks: 0,
+            walk_fragment_clocks: 0,
         }
     }
 
@@ -405,6 +410,10 @@ impl RcModel {
     /// One clock cycle: the outputs during the cycle (before the rising edge), then the edge.
     pub fn step(&mut self, inp: &RcInputs) -> RcOutputs {
         let (tok, take) = self.traversal();
+        if let TravState::Walk { .. } = self.tstate {
+            self.walk_clocks += 1;
+            self.walk_fragment_clocks += matches!(tok, Token::Frag { inside: true, .. }) as u64;
+        }
         let (write, pass) = self.z_test(inp.z_rd_data, inp.i_rd_data);
         let mut out = RcOutputs { cmd_ready: self.sstate == SetupState::Idle, ..RcOutputs::default() };
         if let Some(r) = self.res {

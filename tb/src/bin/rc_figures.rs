@@ -40,14 +40,16 @@ fn run() -> Result<(), String> {
             let run = run_model(screen, &cmds, Drive::ideal(), None)?;
             let c = reference(screen, &cmds).rast.counts;
             println!(
-                "{name} (grid {grid}) 320x200 clear={clear}: {} triangles, {} cycles; {} candidates ({:.3}/clock), {} fragments Z-tested ({:.3}/clock), {} passes",
+                "{name} (grid {grid}) 320x200 clear={clear}: {} triangles, {} cycles; {} candidates ({:.3}/clock), {} fragments Z-tested ({:.3}/clock), {} passes; traversal walked {} clocks, {:.1} % of them delivered a fragment",
                 tris.len(),
                 run.cycles,
                 c.candidates,
                 c.candidates as f64 / run.cycles as f64,
                 run.z_reads,
                 run.z_reads as f64 / run.cycles as f64,
-                run.z_passes
+                run.z_passes,
+                run.walk_clocks,
+                100.0 * run.walk_fragment_clocks as f64 / run.walk_clocks.max(1) as f64
             );
         }
         let cmds = frame(true, tris);

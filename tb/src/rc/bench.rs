@@ -59,6 +59,9 @@ pub struct Run {
     /// Cycles whose Z read is of the address read in the cycle before: the read-after-write hazard
     /// that only the z-test's forwarding resolves (it cannot see the previous fragment's write).
     pub same_address_reads_back_to_back: u64,
+    /// Clocks the traversal walked triangles, and those that delivered a fragment (cycle model).
+    pub walk_clocks: u64,
+    pub walk_fragment_clocks: u64,
     /// Simulation speed of the RTL in cycles per second (0 for model-only runs).
     pub rtl_cycles_per_second: f64,
 }
@@ -253,7 +256,7 @@ fn run_inner(
         if taken && out.res.eof && driver.next == cmds.len() {
             let secs = start.elapsed().as_secs_f64();
             let rate = if rtl.is_some() && secs > 0.0 { (cycle + 1) as f64 / secs } else { 0.0 };
-            return Ok(Run { results, zbuf: zmem.words, ibuf: imem.words, cycles: cycle + 1, z_reads, z_passes, same_address_reads_back_to_back: back_to_back, rtl_cycles_per_second: rate });
+            return Ok(Run { results, zbuf: zmem.words, ibuf: imem.words, cycles: cycle + 1, z_reads, z_passes, same_address_reads_back_to_back: back_to_back, walk_clocks: model.walk_clocks, walk_fragment_clocks: model.walk_fragment_clocks, rtl_cycles_per_second: rate });
         }
     }
     if stop_after.is_some() {
