@@ -27,8 +27,9 @@
 //! * Frame start and end of frame: accepted in cycle t, handed to the traversal from cycle t+1.
 //! * Triangle accepted in cycle t: t+1 determinant, t+2 culling / canonical order / bounding box and
 //!   divider start. A culled triangle or one with an empty clamped bounding box is handed over from
-//!   t+3. Otherwise t+3..t+7 edge start values and the depth numerators, the 25-step reciprocal runs
-//!   t+3..t+27 and is taken in t+28, t+29..t+35 the depth plane, handed over from t+36.
+//!   t+3. Otherwise t+3..t+8 edge start values and the depth numerators, the 25-step reciprocal runs
+//!   t+3..t+11 (three steps per clock) and is taken in t+12, t+13..t+19 the depth plane, handed over
+//!   from t+20.
 //! * A record waits in the hand-over register until the traversal takes it; the setup unit is `Idle`
 //!   (accepting) the cycle after.
 //!
@@ -59,7 +60,7 @@ use crate::format::{Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND};
 use crate::raster::{setup, Culled, CullMode, FrontFace, Setup};
 
 /// Cycles from accepting a triangle to its record being ready, when it is drawn (see module doc).
-pub const SETUP_CYCLES_DRAWN: u64 = 36;
+pub const SETUP_CYCLES_DRAWN: u64 = 20;
 /// Cycles from accepting a triangle to its record being ready, when it is culled or has an empty box.
 pub const SETUP_CYCLES_SHORT: u64 = 3;
 /// Steps of the restoring divider (RECIP_BITS + 1).
@@ -554,7 +555,7 @@ mod tests {
         let t = RcCmd::triangle(7, [v(0, 0, 10), v(64, 0, 10), v(0, 64, 10)], CullMode::None, FrontFace::Ccw).unwrap();
         let (mut z, mut i) = (vec![DEPTH_MAX; 256], vec![0; 256]);
         let (res, _) = run(&mut m, &[t], &mut z, &mut i);
-        // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN (36) and taken there. The walk:
+        // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN (20) and taken there. The walk:
         // one clock per fragment (3 + 2 + 1), the last of a row ending the row because the window
         // reaches the box's edge, and one clock for the empty last row: 7 clocks. The last token's
         // z-test one cycle later, the result in the register the cycle after that.

@@ -14,9 +14,11 @@
 //!
 //! Timing: `request.ready` is high in `Idle`. A request accepted in cycle t is normalised in that cycle
 //! (a priority encoder finds `shift`, the partial remainder starts at `2^shift`), the 25 steps run in
-//! cycles t+1..t+25 (one quotient bit per clock: compare, subtract, shift), and `result.valid` is high
-//! from cycle t+26 until the result is taken; the block is `Idle` again the cycle after. So the latency
-//! is 26 cycles and, with `result.ready` high, one reciprocal every 27 cycles. `det = 0` is not a valid
+//! cycles t+1..t+9, three per clock (three [`DivStep`]s in a chain: compare, subtract, shift, three
+//! quotient bits; the ninth clock takes the first step's result only, 25 = 8*3 + 1), and `result.valid`
+//! is high from cycle t+10 until the result is taken; the block is `Idle` again the cycle after. So the
+//! latency is 10 cycles ([`RECIP_LATENCY`]; 26 with one step per clock) and, with `result.ready` high,
+//! one reciprocal every 11 cycles. `det = 0` is not a valid
 //! request (the RC never sends it): it returns `mant = 2^25 - 1`, `shift = 0`.
 
 use crate::common::{StreamIn, StreamOut};
@@ -39,8 +41,12 @@ pub enum RecipState {
 
 /// Steps of the division: RECIP_BITS + 1 (one quotient bit each).
 pub const RECIP_STEPS: u64 = 25;
+/// Steps per clock (chained `DivStep`s).
+pub const RECIP_STEPS_PER_CLOCK: u64 = 3;
+/// Clocks of steps: ceil(RECIP_STEPS / RECIP_STEPS_PER_CLOCK).
+pub const RECIP_CLOCKS: u64 = RECIP_STEPS.div_ceil(RECIP_STEPS_PER_CLOCK);
 /// Cycles from the request's acceptance to `result.valid`.
-pub const RECIP_LATENCY: u64 = RECIP_STEPS + 1;
+pub const RECIP_LATENCY: u64 = RECIP_CLOCKS + 1;
 
 #[derive(LogicBlock)]
 pub struct Reciprocal {
@@ -61,8 +67,10 @@ pub struct Reciprocal {
     count: DFF<Bits<5>>,
     /// Normalisation: the divisor's leading one (where the partial remainder starts) and its index.
     lead: LeadingOne36,
-    /// One division step.
+    /// Three division steps in a chain (one clock).
     step: DivStep,
+    step2: DivStep,
+    step3: DivStep,
     take: Signal<Local, Bit>,
     out_valid: Signal<Local, Bit>,
     out_mant: Signal<Local, Bits<25>>,
@@ -88,6 +96,8 @@ impl Default for Reciprocal {
             count: Default::default(),
             lead: Default::default(),
             step: Default::default(),
+            step2: Default::default(),
+            step3: Default::default(),
             take: Default::default(),
             out_valid: Default::default(),
             out_mant: Default::default(),
@@ -95,7 +105,7 @@ impl Default for Reciprocal {
             k0_6: Constant::new(0.into()),
             k1_5: Constant::new(1.into()),
             k0_5: Constant::new(0.into()),
-            k_last: Constant::new((RECIP_STEPS - 1).into()),
+            k_last: Constant::new((RECIP_CLOCKS - 1).into()),
             k0_25: Constant::new(0.into()),
         }
     }
@@ -110,6 +120,12 @@ impl Logic for Reciprocal {
         self.step.rem.next = self.rem.q.val();
         self.step.den.next = self.den.q.val();
         self.step.quo.next = self.quo.q.val();
+        self.step2.rem.next = self.step.rem_next.val();
+        self.step2.den.next = self.den.q.val();
+        self.step2.quo.next = self.step.quo_next.val();
+        self.step3.rem.next = self.step2.rem_next.val();
+        self.step3.den.next = self.den.q.val();
+        self.step3.quo.next = self.step2.quo_next.val();
 
         // Ports are driven once, after the state machine, from locals: a default-then-override write
         // to a port would wake the parent's logic twice in an event-driven simulator (Icarus), and a
@@ -131,10 +147,13 @@ impl Logic for Reciprocal {
                 }
             }
             RecipState::Run => {
-                self.rem.d.next = self.step.rem_next.val();
-                self.quo.d.next = self.step.quo_next.val();
+                self.rem.d.next = self.step3.rem_next.val();
+                self.quo.d.next = self.step3.quo_next.val();
                 self.count.d.next = self.count.q.val() + self.k1_5.val();
                 if self.count.q.val() == self.k_last.val() {
+                    // The 25th step: the first of the chain only.
+                    self.rem.d.next = self.step.rem_next.val();
+                    self.quo.d.next = self.step.quo_next.val();
                     self.state.d.next = RecipState::Done;
                 }
             }
@@ -186,7 +205,7 @@ mod tests {
     }
 
     #[test]
-    fn reciprocal_is_floor_of_two_to_the_shift_plus_24_over_det_after_26_cycles() {
+    fn reciprocal_is_floor_of_two_to_the_shift_plus_24_over_det_after_10_cycles() {
         let mut uut = Reciprocal::default();
         uut.connect_all();
         for det in [1u64, 2, 3, 5, 7, 255, 256, 1000, 65535, 65536, 123456789, (1 << 34) - 1, (1 << 35) + 12345, (1 << 36) - 1] {
@@ -194,7 +213,8 @@ mod tests {
             let s = 63 - det.leading_zeros() as u64;
             let exact = (1u128 << (s + 24)) / det as u128;
             assert_eq!((mant as u128, shift), (exact, s), "det {det}");
-            assert_eq!(cycles, RECIP_LATENCY, "det {det}");
+            assert_eq!(cycles, 10, "det {det}");
+            assert_eq!(cycles, RECIP_LATENCY);
         }
     }
 }

@@ -8,7 +8,7 @@
 //!   ready)     |                                            |    rec_bx0/bx1/by0/by1, rec_addr,
 //!              |  2 x MulS 25x18 (a*b - c*d per clock)      |    rec_e0..2, rec_sx0..2, rec_sy0..2,
 //!              |  1 x MulS 44x26 (plane products)           |    rec_raw, rec_a, rec_b
-//!  clock ----->|  reciprocal (25-step restoring divider)    |<-- rec_ready
+//!  clock ----->|  reciprocal (25 steps, 3 per clock)        |<-- rec_ready
 //!              +-------------------------------------------+
 //! ```
 //!
@@ -24,12 +24,13 @@
 //!   `E = dx*(16*Y0+8-a.y) - dy*(16*X0+8-a.x) - bias` and its steps (-16*dy, 16*dx); then the depth
 //!   numerators na = dz10*dy20 - dz20*dy10 and nb = dz20*dx10 - dz10*dx20; the start address
 //!   Y0*W + X0.
-//! * `WaitRecip` until the reciprocal is ready (t+28 for a request accepted in t+2).
-//! * t+29..t+35 `Plane` 0..6 on one 44x26 multiplier whose product is registered (each product is
+//! * `WaitRecip` until the reciprocal is ready (t+12 for a request accepted in t+2: three division
+//!   steps per clock).
+//! * t+13..t+19 `Plane` 0..6 on one 44x26 multiplier whose product is registered (each product is
 //!   used in the phase after its operands): `A = sat40(round(na*mant >> (shift+4)))`, B likewise,
 //!   `C = (z0 << 16) + round(A*(8-x0) + B*(8-y0) >> 4)`, raw = C + A*X0 + B*Y0 (the depth plane's raw
 //!   value at the box's first pixel).
-//! * t+36 `Out`: the record is offered until `rec_ready`; `Idle` (and `cmd.ready`) the cycle after.
+//! * t+20 `Out`: the record is offered until `rec_ready`; `Idle` (and `cmd.ready`) the cycle after.
 //!
 //! Widths: inputs are any 16-bit S11.4 values, so |dx|, |dy| < 2^16; E stays below 2^34 in magnitude
 //! on the screen (36-bit registers). na, nb < 2^42; na*mant < 2^67 (70-bit product). C never
