@@ -23,15 +23,22 @@
 //!
 //! # Timing
 //!
-//! *Setup unit* (one command at a time; `cmd.ready` is high exactly in its `Idle` state):
-//! * Frame start and end of frame: accepted in cycle t, handed to the traversal from cycle t+1.
-//! * Triangle accepted in cycle t: t+1 determinant, t+2 culling / canonical order / bounding box and
-//!   divider start. A culled triangle or one with an empty clamped bounding box is handed over from
-//!   t+3. Otherwise t+3..t+8 edge start values and the depth numerators, the 25-step reciprocal runs
-//!   t+3..t+11 (three steps per clock) and is taken in t+12, t+13..t+19 the depth plane, handed over
-//!   from t+20.
-//! * A record waits in the hand-over register until the traversal takes it; the setup unit is `Idle`
-//!   (accepting) the cycle after.
+//! *Setup unit*, two stages, each holding one command (`cmd.ready` is high exactly when the first
+//! stage is `Idle`):
+//! * First stage. Frame start and end of frame: accepted in cycle t, ready to hand over (`Hand`) in
+//!   t+1. Triangle accepted in cycle t: t+1 determinant, t+2 culling / canonical order / bounding box
+//!   and divider start; a culled triangle or one with an empty clamped bounding box is ready in t+3.
+//!   Otherwise t+3..t+8 edge start values and the depth numerators, the 25-step reciprocal runs
+//!   t+3..t+11 (three steps per clock) and is taken in t+12; ready in t+13 ([`HAND_DRAWN`]).
+//! * Hand-over: in a `Hand` cycle the record moves to the second stage if that is empty in this cycle
+//!   (otherwise the first stage waits); the first stage is `Idle` (accepting) the cycle after.
+//! * Second stage: a drawn triangle's depth plane in the 7 cycles after the hand-over
+//!   ([`PLANE_CYCLES`]), then the record is offered to the traversal; any other record is offered the
+//!   cycle after the hand-over. Offered until taken; empty the cycle after.
+//! * So a record is offered [`SETUP_CYCLES_DRAWN`] = 21 cycles after its command was accepted (4 for a
+//!   culled or empty-box triangle, 2 for frame start and end of frame), and while the second stage
+//!   works on one triangle's plane the first stage takes the next: drawn triangles back to back take
+//!   14 cycles each (the first stage's `Idle` .. `Hand`), culled ones 4.
 //!
 //! *Traversal* (takes a record only in its `Idle` state):
 //! * Frame start: with `clear`, W*H cycles of clear writes (Z = 2^24-1, I = 0, one pixel per clock,
@@ -60,9 +67,17 @@ use crate::format::{Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND};
 use crate::raster::{setup, Culled, CullMode, FrontFace, Setup};
 
 /// Cycles from accepting a triangle to its record being ready, when it is drawn (see module doc).
-pub const SETUP_CYCLES_DRAWN: u64 = 20;
+pub const SETUP_CYCLES_DRAWN: u64 = 21;
 /// Cycles from accepting a triangle to its record being ready, when it is culled or has an empty box.
-pub const SETUP_CYCLES_SHORT: u64 = 3;
+pub const SETUP_CYCLES_SHORT: u64 = 4;
+/// Cycles from a command's acceptance to its hand-over from the setup's first stage to its second
+/// (`Hand`), by kind: drawn triangle, culled triangle or empty box, frame start or end of frame.
+pub const HAND_DRAWN: u64 = 13;
+pub const HAND_SHORT: u64 = 3;
+pub const HAND_MARKER: u64 = 1;
+/// Cycles of the second stage (the depth plane) between the hand-over and the record's offer, for a
+/// drawn triangle (0 for the others: offered the cycle after the hand-over).
+pub const PLANE_CYCLES: u64 = 7;
 /// Steps of the restoring divider (RECIP_BITS + 1).
 pub const RECIP_STEPS: u32 = 25;
 /// Width of a triangle index on the ports.
@@ -204,10 +219,11 @@ enum Record {
     Walk { index: u32, setup: Setup },
 }
 
+/// One stage of the setup: empty, or holding a record that is ready (to hand over, or to offer) after
+/// `n` more cycles (n = 0: ready now).
 #[derive(Copy, Clone, Debug, PartialEq)]
 enum SetupState {
     Idle,
-    /// Waiting `n` more cycles before the record is ready (n = 0: ready).
     Busy(u64),
 }
 
@@ -280,8 +296,12 @@ pub fn walk_step(s: &Setup, x: i32, y: i32) -> WalkStep {
 pub struct RcModel {
     screen: Screen,
     // setup unit
+    /// The setup's first stage (det, cull, box, edges, numerators, reciprocal) and its record.
     sstate: SetupState,
     pending: Option<Record>,
+    /// The second stage (the depth plane, then the offer to the traversal) and its record.
+    bstate: SetupState,
+    bpending: Option<Record>,
     // traversal
     tstate: TravState,
     walking: Option<(u32, Setup)>,
@@ -304,6 +324,8 @@ impl RcModel {
             screen,
             sstate: SetupState::Idle,
             pending: None,
+            bstate: SetupState::Idle,
+            bpending: None,
             tstate: TravState::Idle,
             walking: None,
             f1: Token::None,
@@ -322,7 +344,7 @@ impl RcModel {
 
     /// Whether nothing is in flight: no command in setup, the traversal idle, no result waiting.
     pub fn is_idle(&self) -> bool {
-        self.sstate == SetupState::Idle && self.tstate == TravState::Idle && self.f1 == Token::None && self.res.is_none()
+        self.sstate == SetupState::Idle && self.bstate == SetupState::Idle && self.tstate == TravState::Idle && self.f1 == Token::None && self.res.is_none()
     }
 
     fn addr(&self, x: i32, y: i32) -> u32 {
@@ -331,8 +353,8 @@ impl RcModel {
 
     /// The record the setup unit offers this cycle, if ready.
     fn offered(&self) -> Option<Record> {
-        match self.sstate {
-            SetupState::Busy(0) => self.pending,
+        match self.bstate {
+            SetupState::Busy(0) => self.bpending,
             _ => None,
         }
     }
@@ -475,27 +497,43 @@ impl RcModel {
             }
         }
 
-        // Setup unit.
+        // Setup, second stage: the offered record leaves when taken.
+        let b_was_idle = self.bstate == SetupState::Idle;
+        match self.bstate {
+            SetupState::Idle => {}
+            SetupState::Busy(0) => {
+                if take {
+                    self.bpending = None;
+                    self.bstate = SetupState::Idle;
+                }
+            }
+            SetupState::Busy(n) => self.bstate = SetupState::Busy(n - 1),
+        }
+        // Setup, first stage: a finished record goes to the second stage when that was empty in this
+        // cycle; a command is taken when the first stage was empty.
         match self.sstate {
             SetupState::Idle => {
                 if inp.cmd_valid {
                     let c = inp.cmd;
                     let (rec, cycles) = match c.kind {
-                        CmdKind::Frame => (Record::Frame { clear: c.clear }, 0),
-                        CmdKind::EndOfFrame => (Record::EndOfFrame, 0),
+                        CmdKind::Frame => (Record::Frame { clear: c.clear }, HAND_MARKER),
+                        CmdKind::EndOfFrame => (Record::EndOfFrame, HAND_MARKER),
                         CmdKind::Triangle => match setup(&c.v, c.cull, c.front, self.screen) {
-                            Err(culled) => (Record::Skip { index: c.index, culled: Some(culled) }, SETUP_CYCLES_SHORT - 1),
-                            Ok(s) if s.bbox.is_empty() => (Record::Skip { index: c.index, culled: None }, SETUP_CYCLES_SHORT - 1),
-                            Ok(s) => (Record::Walk { index: c.index, setup: s }, SETUP_CYCLES_DRAWN - 1),
+                            Err(culled) => (Record::Skip { index: c.index, culled: Some(culled) }, HAND_SHORT),
+                            Ok(s) if s.bbox.is_empty() => (Record::Skip { index: c.index, culled: None }, HAND_SHORT),
+                            Ok(s) => (Record::Walk { index: c.index, setup: s }, HAND_DRAWN),
                         },
                     };
                     self.pending = Some(rec);
-                    self.sstate = SetupState::Busy(cycles);
+                    self.sstate = SetupState::Busy(cycles - 1);
                 }
             }
             SetupState::Busy(0) => {
-                if take {
-                    self.pending = None;
+                if b_was_idle {
+                    let rec = self.pending.take().expect("a finished record");
+                    let plane = if let Record::Walk { .. } = rec { PLANE_CYCLES } else { 0 };
+                    self.bpending = Some(rec);
+                    self.bstate = SetupState::Busy(plane);
                     self.sstate = SetupState::Idle;
                 }
             }
@@ -555,7 +593,7 @@ mod tests {
         let t = RcCmd::triangle(7, [v(0, 0, 10), v(64, 0, 10), v(0, 64, 10)], CullMode::None, FrontFace::Ccw).unwrap();
         let (mut z, mut i) = (vec![DEPTH_MAX; 256], vec![0; 256]);
         let (res, _) = run(&mut m, &[t], &mut z, &mut i);
-        // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN (20) and taken there. The walk:
+        // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN (21) and taken there. The walk:
         // one clock per fragment (3 + 2 + 1), the last of a row ending the row because the window
         // reaches the box's edge, and one clock for the empty last row: 7 clocks. The last token's
         // z-test one cycle later, the result in the register the cycle after that.

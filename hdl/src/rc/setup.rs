@@ -2,23 +2,28 @@
 //! with one reciprocal per triangle, eqs. 6-7), bit-exact with `golden::raster::setup`.
 //!
 //! ```text
-//!              +-------------------------------------------+
-//!  cmd ------->| Idle -> Det -> Order -> Edges(5) ->        |--> rec_valid, rec_kind, rec_index,
-//!  (valid/     |  WaitRecip -> Plane(6) -> Out              |    rec_culled, rec_zero_area,
-//!   ready)     |                                            |    rec_bx0/bx1/by0/by1, rec_addr,
-//!              |  2 x MulS 25x18 (a*b - c*d per clock)      |    rec_e0..2, rec_sx0..2, rec_sy0..2,
-//!              |  1 x MulS 44x26 (plane products)           |    rec_raw, rec_a, rec_b
-//!  clock ----->|  reciprocal (25 steps, 3 per clock)        |<-- rec_ready
-//!              +-------------------------------------------+
+//!              +--------------------------------------------+
+//!  cmd ------->| first stage: Idle -> Det -> Order ->       |
+//!  (valid/     |   Edges(6) -> WaitRecip -> Hand            |
+//!   ready)     |   2 x MulS 25x18 (a*b - c*d per clock),    |
+//!              |   reciprocal (25 steps, 3 per clock)       |
+//!              |        | record copied at Hand (b_*)       |
+//!              |        v                                   |--> rec_valid, rec_kind, rec_index,
+//!              | second stage: Empty -> Plane(7) -> Out     |    rec_culled, rec_zero_area,
+//!              |   1 x MulS 44x26 (plane products)          |    rec_bx0/bx1/by0/by1, rec_addr,
+//!  clock ----->|                                            |    rec_e0..2, rec_sx0..2, rec_sy0..2,
+//!              +--------------------------------------------+    rec_raw, rec_a, rec_b <-- rec_ready
 //! ```
 //!
-//! Schedule of a triangle accepted in cycle t (one state per cycle unless said otherwise):
+//! Two stages, each holding one triangle, so that the first stage works on the next triangle while
+//! the second computes the depth plane of the last (`golden::cycle::rc` models the same schedule).
+//! Schedule of a command accepted in cycle t (one state per cycle unless said otherwise):
 //! * t+1 `Det`: det = dx10*dy20 - dx20*dy10 (two 17x17 products on the dot-difference unit).
 //! * t+1 `Det` also finds the clamped bounding box `[(min+7)>>4, (max-8)>>4]` (it does not depend on
 //!   the vertex order) and registers it.
 //! * t+2 `Order`: zero area / cull decision from det's sign, the cull mode and the front face; swap
 //!   vertices 1 and 2 if det < 0 (canonical order); start the reciprocal of |det|. Culled or empty
-//!   box: go to `Out`.
+//!   box: go to `Hand`. (A frame start or end of frame goes from `Idle` to `Hand` at t+1.)
 //! * t+3..t+8 `Edges` 0..5 (during the division; edge k's operands are found in phase k and multiplied
 //!   in phase k + 1): edge k's value at the box's first pixel
 //!   `E = dx*(16*Y0+8-a.y) - dy*(16*X0+8-a.x) - bias` and its steps (-16*dy, 16*dx); then the depth
@@ -26,11 +31,15 @@
 //!   Y0*W + X0.
 //! * `WaitRecip` until the reciprocal is ready (t+12 for a request accepted in t+2: three division
 //!   steps per clock).
-//! * t+13..t+19 `Plane` 0..6 on one 44x26 multiplier whose product is registered (each product is
-//!   used in the phase after its operands): `A = sat40(round(na*mant >> (shift+4)))`, B likewise,
-//!   `C = (z0 << 16) + round(A*(8-x0) + B*(8-y0) >> 4)`, raw = C + A*X0 + B*Y0 (the depth plane's raw
-//!   value at the box's first pixel).
-//! * t+20 `Out`: the record is offered until `rec_ready`; `Idle` (and `cmd.ready`) the cycle after.
+//! * t+13 `Hand`: when the second stage is `Empty` in this cycle, the record (and the vertex 0, the
+//!   numerators and the reciprocal the plane needs) is copied into its `b_*` registers and the first
+//!   stage is `Idle` (`cmd.ready`) from the next cycle; otherwise it waits in `Hand`.
+//! * Second stage, t+14..t+20 `Plane` 0..6 (a drawn triangle) on one 44x26 multiplier whose product is
+//!   registered (each product is used in the phase after its operands):
+//!   `A = sat40(round(na*mant >> (shift+4)))`, B likewise, `C = (z0 << 16) + round(A*(8-x0) +
+//!   B*(8-y0) >> 4)`, raw = C + A*X0 + B*Y0 (the depth plane's raw value at the box's first pixel).
+//! * t+21 `Out` (any other record: the cycle after its hand-over): the record is offered until
+//!   `rec_ready`; `Empty` the cycle after. Drawn triangles back to back: one every 14 cycles.
 //!
 //! Widths: inputs are any 16-bit S11.4 values, so |dx|, |dy| < 2^16; E stays below 2^34 in magnitude
 //! on the screen (36-bit registers). na, nb < 2^42; na*mant < 2^67 (70-bit product). C never
@@ -48,6 +57,7 @@ pub const REC_SKIP: u64 = 1;
 pub const REC_WALK: u64 = 2;
 pub const REC_EOF: u64 = 3;
 
+/// The first stage: a command from `Idle` to `Hand` (its record moves to the second stage).
 #[derive(Copy, Clone, Debug, PartialEq, LogicState)]
 pub enum SetupState {
     Idle,
@@ -55,6 +65,13 @@ pub enum SetupState {
     Order,
     Edges,
     WaitRecip,
+    Hand,
+}
+
+/// The second stage: a drawn triangle's depth plane, then the record offered to the traversal.
+#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
+pub enum PlaneState {
+    Empty,
     Plane,
     Out,
 }
@@ -167,6 +184,35 @@ pub struct Setup {
     grad_b: DFF<Signed<40>>,
     acc: DFF<Signed<58>>,
     raw: DFF<Signed<56>>,
+    /// The second stage's state, phase and copy of the record (taken at the hand-over).
+    bstate: DFF<PlaneState>,
+    bphase: DFF<Bits<3>>,
+    b_kind: DFF<Bits<2>>,
+    b_clear: DFF<Bit>,
+    b_index: DFF<Bits<16>>,
+    b_culled: DFF<Bit>,
+    b_zero_area: DFF<Bit>,
+    b_bx0: DFF<Bits<10>>,
+    b_bx1: DFF<Bits<10>>,
+    b_by0: DFF<Bits<10>>,
+    b_by1: DFF<Bits<10>>,
+    b_addr: DFF<Bits<20>>,
+    b_e0: DFF<Signed<36>>,
+    b_e1: DFF<Signed<36>>,
+    b_e2: DFF<Signed<36>>,
+    b_sx0: DFF<Signed<22>>,
+    b_sx1: DFF<Signed<22>>,
+    b_sx2: DFF<Signed<22>>,
+    b_sy0: DFF<Signed<22>>,
+    b_sy1: DFF<Signed<22>>,
+    b_sy2: DFF<Signed<22>>,
+    b_na: DFF<Signed<44>>,
+    b_nb: DFF<Signed<44>>,
+    b_mant: DFF<Bits<25>>,
+    b_shamt: DFF<Bits<6>>,
+    b_vx0: DFF<Signed<16>>,
+    b_vy0: DFF<Signed<16>>,
+    b_vz0: DFF<Bits<24>>,
 
     // Combinational
     dx10: Signal<Local, Signed<17>>,
@@ -366,6 +412,34 @@ impl Setup {
             nb: Default::default(),
             mant: Default::default(),
             shamt: Default::default(),
+            bstate: Default::default(),
+            bphase: Default::default(),
+            b_kind: Default::default(),
+            b_clear: Default::default(),
+            b_index: Default::default(),
+            b_culled: Default::default(),
+            b_zero_area: Default::default(),
+            b_bx0: Default::default(),
+            b_bx1: Default::default(),
+            b_by0: Default::default(),
+            b_by1: Default::default(),
+            b_addr: Default::default(),
+            b_e0: Default::default(),
+            b_e1: Default::default(),
+            b_e2: Default::default(),
+            b_sx0: Default::default(),
+            b_sx1: Default::default(),
+            b_sx2: Default::default(),
+            b_sy0: Default::default(),
+            b_sy1: Default::default(),
+            b_sy2: Default::default(),
+            b_na: Default::default(),
+            b_nb: Default::default(),
+            b_mant: Default::default(),
+            b_shamt: Default::default(),
+            b_vx0: Default::default(),
+            b_vy0: Default::default(),
+            b_vz0: Default::default(),
             prod: Default::default(),
             grad_a: Default::default(),
             grad_b: Default::default(),
@@ -489,7 +563,7 @@ impl Logic for Setup {
         dff_setup!(
             self, clock, state, phase, kind, r_la, r_lb, r_ra, r_rb, r_tl, r_sx, r_sy, nbx0, nbx1, nby0, nby1, nbox_empty, clear, index, cull, front_cw, vx0, vy0, vz0, vx1, vy1, vz1, vx2, vy2, vz2, det,
             culled, zero_area, bx0, bx1, by0, by1, addr, e0, e1, e2, sx0, sx1, sx2, sy0, sy1, sy2, na, nb, mant, shamt,
-            prod, grad_a, grad_b, acc, raw
+            prod, grad_a, grad_b, acc, raw, bstate, bphase, b_kind, b_clear, b_index, b_culled, b_zero_area, b_bx0, b_bx1, b_by0, b_by1, b_addr, b_e0, b_e1, b_e2, b_sx0, b_sx1, b_sx2, b_sy0, b_sy1, b_sy2, b_na, b_nb, b_mant, b_shamt, b_vx0, b_vy0, b_vz0
         );
         clock!(self, clock, recip);
 
@@ -669,7 +743,7 @@ impl Logic for Setup {
         self.prod_u.next = self.prod.q.val();
 
         // Plane gradient from the product register: sat40((prod + 2^(sh-1)) >> sh), sh = shift + 4.
-        self.round_half.next = self.k8_70.val() << self.shamt.q.val();
+        self.round_half.next = self.k8_70.val() << self.b_shamt.q.val();
         self.rounded.next = self.prod.q.val() + self.round_half.val();
         self.shifted.next = self.k0_70.val();
         self.grad_hi.next = self.k0_31.val();
@@ -681,11 +755,11 @@ impl Logic for Setup {
         self.z0_plane.next = self.k0_56.val();
         self.prod56.next = self.k0_56.val();
         self.c_plane.next = self.k0_56.val();
-        if self.state.q.val() == SetupState::Plane {
-            self.shifted.next = (self.rounded.val() >> self.shamt.q.val()) >> self.k4_6.val();
+        if self.bstate.q.val() == PlaneState::Plane {
+            self.shifted.next = (self.rounded.val() >> self.b_shamt.q.val()) >> self.k4_6.val();
             if self.rounded.val().get_bit(69) {
                 // arithmetic shift of a negative value: complement, shift, complement
-                self.shifted.next = !((!self.rounded.val() >> self.shamt.q.val()) >> self.k4_6.val());
+                self.shifted.next = !((!self.rounded.val() >> self.b_shamt.q.val()) >> self.k4_6.val());
             }
             self.grad_hi.next = self.shifted.val().get_bits::<31>(39);
             if (self.grad_hi.val() == self.k0_31.val()) | (self.grad_hi.val() == self.k1s_31.val()) {
@@ -693,36 +767,36 @@ impl Logic for Setup {
             } else if !self.rounded.val().get_bit(69) {
                 self.grad.next = self.max40.val();
             }
-            self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(self.vx0.q.val());
-            self.off_y.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(self.vy0.q.val());
+            self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(self.b_vx0.q.val());
+            self.off_y.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(self.b_vy0.q.val());
             // C = (z0 << 16) + round(acc >> 4): never saturates (see the module doc).
             self.acc_round.next = unsigned_cast(self.acc.q.val()) + self.k8_58.val();
             self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(4)));
-            self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.vz0.q.val()) << self.k16_6.val());
+            self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.b_vz0.q.val()) << self.k16_6.val());
             self.prod56.next = signed_cast(self.prod_u.val().get_bits::<56>(0));
             self.c_plane.next = self.z0_plane.val() + self.c_frac.val();
         }
         // The plane multiplier's operands by phase.
-        self.op_wa.next = self.na.q.val();
-        self.op_wb.next = signed_cast(bit_cast::<26, 25>(self.mant.q.val()));
-        if self.phase.q.val() == self.k1_3.val() {
-            self.op_wa.next = self.nb.q.val();
+        self.op_wa.next = self.b_na.q.val();
+        self.op_wb.next = signed_cast(bit_cast::<26, 25>(self.b_mant.q.val()));
+        if self.bphase.q.val() == self.k1_3.val() {
+            self.op_wa.next = self.b_nb.q.val();
         }
-        if self.phase.q.val() == self.k2_3.val() {
+        if self.bphase.q.val() == self.k2_3.val() {
             self.op_wa.next = signed_bit_cast_safe::<44, 40>(self.grad_a.q.val());
             self.op_wb.next = signed_bit_cast_safe::<26, 17>(self.off_x.val());
         }
-        if self.phase.q.val() == self.k3_3.val() {
+        if self.bphase.q.val() == self.k3_3.val() {
             self.op_wa.next = signed_bit_cast_safe::<44, 40>(self.grad_b.q.val());
             self.op_wb.next = signed_bit_cast_safe::<26, 17>(self.off_y.val());
         }
-        if self.phase.q.val() == self.k4_3.val() {
+        if self.bphase.q.val() == self.k4_3.val() {
             self.op_wa.next = signed_bit_cast_safe::<44, 40>(self.grad_a.q.val());
-            self.op_wb.next = signed_cast(bit_cast::<26, 10>(self.bx0.q.val()));
+            self.op_wb.next = signed_cast(bit_cast::<26, 10>(self.b_bx0.q.val()));
         }
-        if self.phase.q.val() == self.k5_3.val() {
+        if self.bphase.q.val() == self.k5_3.val() {
             self.op_wa.next = signed_bit_cast_safe::<44, 40>(self.grad_b.q.val());
-            self.op_wb.next = signed_cast(bit_cast::<26, 10>(self.by0.q.val()));
+            self.op_wb.next = signed_cast(bit_cast::<26, 10>(self.b_by0.q.val()));
         }
 
         // Each multiplier input is driven exactly once per evaluation: an event-driven simulator
@@ -746,26 +820,26 @@ impl Logic for Setup {
 
         // Ports.
         self.cmd.ready.next = self.state.q.val() == SetupState::Idle;
-        self.rec_valid.next = self.state.q.val() == SetupState::Out;
-        self.rec_kind.next = self.kind.q.val();
-        self.rec_clear.next = self.clear.q.val();
-        self.rec_index.next = self.index.q.val();
-        self.rec_culled.next = self.culled.q.val();
-        self.rec_zero_area.next = self.zero_area.q.val();
-        self.rec_bx0.next = self.bx0.q.val();
-        self.rec_bx1.next = self.bx1.q.val();
-        self.rec_by0.next = self.by0.q.val();
-        self.rec_by1.next = self.by1.q.val();
-        self.rec_addr.next = self.addr.q.val();
-        self.rec_e0.next = self.e0.q.val();
-        self.rec_e1.next = self.e1.q.val();
-        self.rec_e2.next = self.e2.q.val();
-        self.rec_sx0.next = self.sx0.q.val();
-        self.rec_sx1.next = self.sx1.q.val();
-        self.rec_sx2.next = self.sx2.q.val();
-        self.rec_sy0.next = self.sy0.q.val();
-        self.rec_sy1.next = self.sy1.q.val();
-        self.rec_sy2.next = self.sy2.q.val();
+        self.rec_valid.next = self.bstate.q.val() == PlaneState::Out;
+        self.rec_kind.next = self.b_kind.q.val();
+        self.rec_clear.next = self.b_clear.q.val();
+        self.rec_index.next = self.b_index.q.val();
+        self.rec_culled.next = self.b_culled.q.val();
+        self.rec_zero_area.next = self.b_zero_area.q.val();
+        self.rec_bx0.next = self.b_bx0.q.val();
+        self.rec_bx1.next = self.b_bx1.q.val();
+        self.rec_by0.next = self.b_by0.q.val();
+        self.rec_by1.next = self.b_by1.q.val();
+        self.rec_addr.next = self.b_addr.q.val();
+        self.rec_e0.next = self.b_e0.q.val();
+        self.rec_e1.next = self.b_e1.q.val();
+        self.rec_e2.next = self.b_e2.q.val();
+        self.rec_sx0.next = self.b_sx0.q.val();
+        self.rec_sx1.next = self.b_sx1.q.val();
+        self.rec_sx2.next = self.b_sx2.q.val();
+        self.rec_sy0.next = self.b_sy0.q.val();
+        self.rec_sy1.next = self.b_sy1.q.val();
+        self.rec_sy2.next = self.b_sy2.q.val();
         self.rec_raw.next = self.raw.q.val();
         self.rec_a.next = self.grad_a.q.val();
         self.rec_b.next = self.grad_b.q.val();
@@ -790,7 +864,7 @@ impl Logic for Setup {
                     self.vy2.d.next = signed_cast(self.cmd.data.val().y2);
                     self.vz2.d.next = self.cmd.data.val().z2;
                     self.phase.d.next = self.k0_3.val();
-                    self.state.d.next = SetupState::Out;
+                    self.state.d.next = SetupState::Hand;
                     if self.cmd.data.val().kind == self.kind_tri.val() {
                         self.state.d.next = SetupState::Det;
                     }
@@ -815,7 +889,7 @@ impl Logic for Setup {
                 self.kind.d.next = self.rec_skip.val();
                 self.culled.d.next = self.culled_now.val();
                 self.zero_area.d.next = self.det_zero.val();
-                self.state.d.next = SetupState::Out;
+                self.state.d.next = SetupState::Hand;
                 if !self.culled_now.val() {
                     if self.det_neg.val() {
                         self.vx1.d.next = self.vx2.q.val();
@@ -869,43 +943,86 @@ impl Logic for Setup {
                 if self.recip.result.valid.val() {
                     self.mant.d.next = self.recip.result.data.val().mant;
                     self.shamt.d.next = self.recip.result.data.val().shift;
-                    self.phase.d.next = self.k0_3.val();
-                    self.state.d.next = SetupState::Plane;
+                    self.state.d.next = SetupState::Hand;
                 }
             }
-            SetupState::Plane => {
-                // One product per phase into `prod`, each used in the next phase (the product and the
-                // sum behind it are never one clock period): A and B in phases 1, 2; C's two terms
-                // in 3, 4; raw's two terms in 5, 6.
-                self.phase.d.next = self.phase.q.val() + self.k1_3.val();
-                self.prod.d.next = unsigned_cast(self.mul_w.p.val());
-                if self.phase.q.val() == self.k1_3.val() {
-                    self.grad_a.d.next = self.grad.val();
-                }
-                if self.phase.q.val() == self.k2_3.val() {
-                    self.grad_b.d.next = self.grad.val();
-                }
-                if self.phase.q.val() == self.k3_3.val() {
-                    self.acc.d.next = signed_cast(self.prod_u.val().get_bits::<58>(0));
-                }
-                if self.phase.q.val() == self.k4_3.val() {
-                    self.acc.d.next = self.acc.q.val() + signed_cast(self.prod_u.val().get_bits::<58>(0));
-                }
-                if self.phase.q.val() == self.k5_3.val() {
-                    self.raw.d.next = self.c_plane.val() + self.prod56.val();
-                }
-                if self.phase.q.val() == self.k6_3.val() {
-                    self.raw.d.next = self.raw.q.val() + self.prod56.val();
-                    self.state.d.next = SetupState::Out;
-                }
-            }
-            SetupState::Out => {
-                if self.rec_ready.val() {
+            SetupState::Hand => {
+                // The record moves to the second stage when that is empty in this cycle.
+                if self.bstate.q.val() == PlaneState::Empty {
+                    self.b_kind.d.next = self.kind.q.val();
+                    self.b_clear.d.next = self.clear.q.val();
+                    self.b_index.d.next = self.index.q.val();
+                    self.b_culled.d.next = self.culled.q.val();
+                    self.b_zero_area.d.next = self.zero_area.q.val();
+                    self.b_bx0.d.next = self.bx0.q.val();
+                    self.b_bx1.d.next = self.bx1.q.val();
+                    self.b_by0.d.next = self.by0.q.val();
+                    self.b_by1.d.next = self.by1.q.val();
+                    self.b_addr.d.next = self.addr.q.val();
+                    self.b_e0.d.next = self.e0.q.val();
+                    self.b_e1.d.next = self.e1.q.val();
+                    self.b_e2.d.next = self.e2.q.val();
+                    self.b_sx0.d.next = self.sx0.q.val();
+                    self.b_sx1.d.next = self.sx1.q.val();
+                    self.b_sx2.d.next = self.sx2.q.val();
+                    self.b_sy0.d.next = self.sy0.q.val();
+                    self.b_sy1.d.next = self.sy1.q.val();
+                    self.b_sy2.d.next = self.sy2.q.val();
+                    self.b_na.d.next = self.na.q.val();
+                    self.b_nb.d.next = self.nb.q.val();
+                    self.b_mant.d.next = self.mant.q.val();
+                    self.b_shamt.d.next = self.shamt.q.val();
+                    self.b_vx0.d.next = self.vx0.q.val();
+                    self.b_vy0.d.next = self.vy0.q.val();
+                    self.b_vz0.d.next = self.vz0.q.val();
+                    self.bphase.d.next = self.k0_3.val();
+                    self.bstate.d.next = PlaneState::Out;
+                    if self.kind.q.val() == self.rec_walk.val() {
+                        self.bstate.d.next = PlaneState::Plane;
+                    }
                     self.state.d.next = SetupState::Idle;
                 }
             }
             _ => {
                 self.state.d.next = SetupState::Idle;
+            }
+        }
+        // The second stage.
+        match self.bstate.q.val() {
+            PlaneState::Empty => {}
+            PlaneState::Plane => {
+                // One product per phase into `prod`, each used in the next phase (the product and the
+                // sum behind it are never one clock period): A and B in phases 1, 2; C's two terms
+                // in 3, 4; raw's two terms in 5, 6.
+                self.bphase.d.next = self.bphase.q.val() + self.k1_3.val();
+                self.prod.d.next = unsigned_cast(self.mul_w.p.val());
+                if self.bphase.q.val() == self.k1_3.val() {
+                    self.grad_a.d.next = self.grad.val();
+                }
+                if self.bphase.q.val() == self.k2_3.val() {
+                    self.grad_b.d.next = self.grad.val();
+                }
+                if self.bphase.q.val() == self.k3_3.val() {
+                    self.acc.d.next = signed_cast(self.prod_u.val().get_bits::<58>(0));
+                }
+                if self.bphase.q.val() == self.k4_3.val() {
+                    self.acc.d.next = self.acc.q.val() + signed_cast(self.prod_u.val().get_bits::<58>(0));
+                }
+                if self.bphase.q.val() == self.k5_3.val() {
+                    self.raw.d.next = self.c_plane.val() + self.prod56.val();
+                }
+                if self.bphase.q.val() == self.k6_3.val() {
+                    self.raw.d.next = self.raw.q.val() + self.prod56.val();
+                    self.bstate.d.next = PlaneState::Out;
+                }
+            }
+            PlaneState::Out => {
+                if self.rec_ready.val() {
+                    self.bstate.d.next = PlaneState::Empty;
+                }
+            }
+            _ => {
+                self.bstate.d.next = PlaneState::Empty;
             }
         }
     }
