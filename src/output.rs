@@ -24,16 +24,7 @@ static WRITES: AtomicUsize = AtomicUsize::new(0);
 /// Fault injection for the tests: with `IDXRENDER_FAIL_AFTER_WRITES=N`, the write after the N-th of
 /// the process stops halfway and fails, as a full disk would.
 pub fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<PathBuf, String> {
-    let path = dir.join(name);
-    let tmp = dir.join(format!(".{name}.tmp"));
-    let n = WRITES.fetch_add(1, Ordering::Relaxed);
-    if std::env::var("IDXRENDER_FAIL_AFTER_WRITES").ok().and_then(|v| v.parse::<usize>().ok()).is_some_and(|k| n >= k) {
-        let _ = std::fs::write(&tmp, &bytes[..bytes.len() / 2]);
-        return Err(format!("cannot write {}: injected fault after {n} files (IDXRENDER_FAIL_AFTER_WRITES)", tmp.display()));
-    }
-    std::fs::write(&tmp, bytes).map_err(|e| format!("cannot write {}: {e}", tmp.display()))?;
-    std::fs::rename(&tmp, &path).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-    Ok(path)
+    Ok(write_set(dir, &[(name, bytes)])?.remove(0))
 }
 
 /// Write several files that belong together (a report's .md and .json) beside other files: every

@@ -10,7 +10,7 @@
 use super::memory::Sram;
 use super::pack::command_word;
 use super::replay::VectorWriter;
-use crate::common::{vcd_path, vcd_wanted, Rng, Trace};
+use crate::common::{vcd_path, vcd_wanted, Rng, Trace, Watchdog};
 use golden::cycle::rc::{CmdKind, RcCmd, RcInputs, RcModel, RcOutputs, RcResult};
 use golden::format::{Screen, DEPTH_MAX, INDEX_BACKGROUND};
 use hdl::rc::Rc;
@@ -205,7 +205,7 @@ fn run_inner(
     let (mut results, mut z_reads, mut z_passes) = (Vec::new(), 0u64, 0u64);
     let (mut back_to_back, mut last_read) = (0u64, None::<u32>);
     let start = std::time::Instant::now();
-    let (watchdog, mut last_activity) = (screen.pixels() as u64 + 1024, 0u64);
+    let mut watchdog = Watchdog::new(screen.pixels() as u64 + 1024);
     for cycle in 0..max_cycles {
         let inp = driver.inputs(cmds, zmem.read_data(), imem.read_data());
         let expected = model.step(&inp);
@@ -239,17 +239,9 @@ fn run_inner(
         }
         // Watchdog: no command or result taken and no memory access for longer than any one
         // triangle can need (its setup, then a box of the whole screen with no covered pixel).
-        if taken || (inp.cmd_valid && out.cmd_ready) || out.z_re || out.z_we || out.i_we {
-            last_activity = cycle;
-        }
-        if cycle - last_activity > watchdog {
-            return Err(Stop::Error(format!(
-                "no progress for {watchdog} cycles at cycle {cycle}: no command or result taken, no memory access ({} of {} commands accepted, {} results); run with VCD=1 to see why",
-                driver.next,
-                cmds.len(),
-                results.len()
-            )));
-        }
+        let progress = taken || (inp.cmd_valid && out.cmd_ready) || out.z_re || out.z_we || out.i_we;
+        let phase = || format!("the RC: no command or result taken, no memory access ({} of {} commands accepted, {} results)", driver.next, cmds.len(), results.len());
+        watchdog.check(cycle, progress, phase, rtl.as_ref().map(|r| &r.trace)).map_err(Stop::Error)?;
         if stop_after == Some(cycle) {
             break;
         }
