@@ -359,14 +359,23 @@ impl RcModel {
         }
     }
 
-    /// The token the traversal issues this cycle and whether it takes the offered record.
-    fn traversal(&self) -> (Token, bool) {
+    /// This cycle's walk step, when walking (found once per cycle, used by the token and the edge).
+    fn walk(&self) -> Option<WalkStep> {
+        match (self.tstate, self.walking) {
+            (TravState::Walk { x, y }, Some((_, s))) => Some(walk_step(&s, x, y)),
+            _ => None,
+        }
+    }
+
+    /// The token the traversal issues this cycle and whether it takes the offered record, given this
+    /// cycle's walk step.
+    fn traversal(&self, walk: Option<WalkStep>) -> (Token, bool) {
         let result_free = self.res.is_none() && !self.f1.pushes_result();
         match self.tstate {
             TravState::Clear { addr } => (Token::Clear { addr }, false),
             TravState::Walk { x, y } => {
                 let (index, s) = self.walking.expect("walking without a triangle");
-                let w = walk_step(&s, x, y);
+                let w = walk.expect("a walk step while walking");
                 if w.end && !result_free {
                     return (Token::None, false);
                 }
@@ -432,7 +441,8 @@ impl RcModel {
 
     /// One clock cycle: the outputs during the cycle (before the rising edge), then the edge.
     pub fn step(&mut self, inp: &RcInputs) -> RcOutputs {
-        let (tok, take) = self.traversal();
+        let walk = self.walk();
+        let (tok, take) = self.traversal(walk);
         if let TravState::Walk { .. } = self.tstate {
             self.walk_clocks += 1;
             self.walk_fragment_clocks += matches!(tok, Token::Frag { inside: true, .. }) as u64;
@@ -475,9 +485,8 @@ impl RcModel {
             TravState::Clear { addr } => {
                 self.tstate = if addr + 1 == self.screen.width * self.screen.height { TravState::Idle } else { TravState::Clear { addr: addr + 1 } };
             }
-            TravState::Walk { x, y } => {
-                let (_, s) = self.walking.unwrap();
-                let w = walk_step(&s, x, y);
+            TravState::Walk { .. } => {
+                let w = walk.expect("a walk step while walking");
                 if w.end {
                     if tok != Token::None {
                         self.tstate = TravState::Idle;
