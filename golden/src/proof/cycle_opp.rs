@@ -57,22 +57,28 @@ impl OppModel {
         Ok(OppModel { ops: (0..n).map(|_| OpModel::new(fifo_depth)).collect::<Result<_, _>>()?, scratch: Vec::with_capacity(n) })
     }
 
-    /// Each OP's outputs this cycle, the ready path resolved from the last OP back.
-    fn op_outputs(&self, down_ready: bool) -> Vec<OpOut> {
-        let n = self.ops.len();
-        let mut outs = vec![OpOut::default(); n];
+    /// Each OP's decisions and outputs this cycle, the ready path resolved from the last OP back;
+    /// `into` gets them last OP first.
+    fn resolve_into(&self, down_ready: bool, into: &mut Vec<(Decision, OpOut)>) {
+        into.clear();
         let mut ready = down_ready;
-        for k in (0..n).rev() {
-            outs[k] = self.ops[k].outputs(ready);
-            ready = outs[k].up_ready;
+        for op in self.ops.iter().rev() {
+            let (d, o) = op.decide_outputs(ready);
+            ready = o.up_ready;
+            into.push((d, o));
         }
-        outs
+    }
+
+    /// The OPP's outputs from OP outputs listed last OP first.
+    fn opp_out(resolved: &[(Decision, OpOut)]) -> OppOut {
+        let (first, last) = (resolved[resolved.len() - 1].1, resolved[0].1);
+        OppOut { up_ready: first.up_ready, down_valid: last.down_valid, down_data: last.down_data, free: resolved.iter().rev().map(|x| x.1.free).collect() }
     }
 
     pub fn outputs(&self, down_ready: bool) -> OppOut {
-        let o = self.op_outputs(down_ready);
-        let last = o[o.len() - 1];
-        OppOut { up_ready: o[0].up_ready, down_valid: last.down_valid, down_data: last.down_data, free: o.iter().map(|x| x.free).collect() }
+        let mut resolved = Vec::with_capacity(self.ops.len());
+        self.resolve_into(down_ready, &mut resolved);
+        Self::opp_out(&resolved)
     }
 
     /// One clock; returns the outputs before the edge.
@@ -84,15 +90,9 @@ impl OppModel {
             }
         }
         // Each OP decides once (the ready path resolved from the last OP back), then every OP steps
-        // on those decisions: the same as `op_outputs` followed by `OpModel::step`, at half the cost.
+        // on those decisions: the same as `OpModel::step` on each, at half the cost.
         let mut scratch = std::mem::take(&mut self.scratch);
-        scratch.clear();
-        let mut ready = inp.down_ready;
-        for k in (0..n).rev() {
-            let (d, o) = self.ops[k].decide_outputs(ready);
-            ready = o.up_ready;
-            scratch.push((d, o));
-        }
+        self.resolve_into(inp.down_ready, &mut scratch);
         let at = |k: usize| &scratch[n - 1 - k];
         for k in 0..n {
             let (up_valid, up_data) = if k == 0 { (inp.up_valid, inp.up_data) } else { (at(k - 1).1.down_valid, at(k - 1).1.down_data) };
@@ -103,10 +103,9 @@ impl OppModel {
             };
             self.ops[k].step_decided(&OpIn { up_valid, up_data, down_ready, load }, at(k).0);
         }
-        let (first, last) = (at(0).1, at(n - 1).1);
-        let free = (0..n).map(|k| at(k).1.free).collect();
+        let out = Self::opp_out(&scratch);
         self.scratch = scratch;
-        Ok(OppOut { up_ready: first.up_ready, down_valid: last.down_valid, down_data: last.down_data, free })
+        Ok(out)
     }
 }
 
