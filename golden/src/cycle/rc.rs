@@ -23,22 +23,23 @@
 //!
 //! # Timing
 //!
-//! *Setup unit*, two stages, each holding one command (`cmd.ready` is high exactly when the first
-//! stage is `Idle`):
-//! * First stage. Frame start and end of frame: accepted in cycle t, ready to hand over (`Hand`) in
-//!   t+1. Triangle accepted in cycle t: t+1 determinant, t+2 culling / canonical order / bounding box
-//!   and divider start; a culled triangle or one with an empty clamped bounding box is ready in t+3.
-//!   Otherwise t+3..t+8 edge start values and the depth numerators, the 25-step reciprocal runs
-//!   t+3..t+11 (three steps per clock) and is taken in t+12; ready in t+13 ([`HAND_DRAWN`]).
-//! * Hand-over: in a `Hand` cycle the record moves to the second stage if that is empty in this cycle
-//!   (otherwise the first stage waits); the first stage is `Idle` (accepting) the cycle after.
-//! * Second stage: a drawn triangle's depth plane in the 7 cycles after the hand-over
-//!   ([`PLANE_CYCLES`]), then the record is offered to the traversal; any other record is offered the
-//!   cycle after the hand-over. Offered until taken; empty the cycle after.
-//! * So a record is offered [`SETUP_CYCLES_DRAWN`] = 21 cycles after its command was accepted (4 for a
-//!   culled or empty-box triangle, 2 for frame start and end of frame), and while the second stage
-//!   works on one triangle's plane the first stage takes the next: drawn triangles back to back take
-//!   14 cycles each (the first stage's `Idle` .. `Hand`), culled ones 4.
+//! *Setup unit*: a pipeline of [`SETUP_STAGES`] stages, each holding one command on its way to
+//! becoming a traversal record, a pipelined reciprocal beside it and a queue of [`RECORD_QUEUE`]
+//! records behind it (docs/rc.md, "Setup", has the stages' arithmetic):
+//! * Stages S0 `Det`, S1 `Order`, S2 `Edges`, S3 and S4 `Hold`, S5 `Grad`, S6 `Plane`. A drawn
+//!   triangle spends [`STAGE_CYCLES_DRAWN`] cycles in them when nothing waits; any other command (frame
+//!   start, end of frame, a culled or empty-box triangle) one cycle in each.
+//! * Handshake, from the registers at the start of a cycle, last stage first: a stage hands its record
+//!   on when it has spent its cycles and the next stage is empty or hands its own on in the same cycle;
+//!   S6 when the queue holds fewer than [`RECORD_QUEUE`] records at the cycle's start. S1 hands a drawn
+//!   triangle on only when the reciprocal advances, which is its request's acceptance. `cmd.ready` is
+//!   high when S0 is empty or hands its command on.
+//! * The reciprocal: [`RECIP_LATENCY`] stations; it advances (every request one station on, S1's
+//!   request into the first) unless its last station holds a result that S5 does not take in this
+//!   cycle. S5 takes it in its first cycle with a drawn triangle, and waits there until it comes.
+//! * So a drawn triangle is offered to the traversal [`SETUP_CYCLES_DRAWN`] cycles after its command
+//!   was accepted, anything else [`SETUP_CYCLES_SHORT`] cycles after; back to back, drawn triangles
+//!   are accepted every 4 cycles (S6's four) and other commands every cycle.
 //!
 //! *Traversal* (takes a record only in its `Idle` state):
 //! * Frame start: with `clear`, W*H cycles of clear writes (Z = 2^24-1, I = 0, one pixel per clock,
@@ -49,8 +50,8 @@
 //!   ([`walk_step`] is the rule); the cycle that ends the walk also takes the next record if it is a
 //!   triangle or a frame start, so consecutive walks follow each other with no idle cycle.
 //! * Results (a walk's last token, a culled/empty triangle, end of frame) go through the z-test stage
-//!   into a one-word result register. Such a token is issued only when the result register is empty
-//!   and the z-test stage holds no other result: otherwise the traversal waits (in the clock that would
+//!   into a result queue of [`RESULT_QUEUE`] words. Such a token is issued only when the queue's length
+//!   plus the result in the z-test stage is below [`RESULT_QUEUE`]: otherwise the traversal waits (in the clock that would
 //!   end the walk, or in `Idle` before taking the record). A walk's last token is its last fragment
 //!   when the clock that issues it also ends the walk, else an uncovered end token.
 //!
@@ -60,24 +61,34 @@
 //! address, that written depth is used instead (forwarding, no stall); pass = inside and z < old.
 //! So the Z-buffer never needs a clear of its own: clearing the I-buffer (the RC's `clear`, or the
 //! Color Shader's clear-behind) is enough. On a pass Z and I are written in this cycle. The triangle's visible flag is the OR of its
-//! passes; its result enters the result register at the end of the cycle of its last candidate's
+//! passes; its result enters the result queue at the end of the cycle of its last candidate's
 //! z-test. The end-of-frame result is pushed after every earlier write has been performed.
 
 use crate::format::{Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND};
 use crate::raster::{setup, Culled, CullMode, FrontFace, Setup};
 
-/// Cycles from accepting a triangle to its record being ready, when it is drawn (see module doc).
-pub const SETUP_CYCLES_DRAWN: u64 = 21;
-/// Cycles from accepting a triangle to its record being ready, when it is culled or has an empty box.
-pub const SETUP_CYCLES_SHORT: u64 = 4;
-/// Cycles from a command's acceptance to its hand-over from the setup's first stage to its second
-/// (`Hand`), by kind: drawn triangle, culled triangle or empty box, frame start or end of frame.
-pub const HAND_DRAWN: u64 = 13;
-pub const HAND_SHORT: u64 = 3;
-pub const HAND_MARKER: u64 = 1;
-/// Cycles of the second stage (the depth plane) between the hand-over and the record's offer, for a
-/// drawn triangle (0 for the others: offered the cycle after the hand-over).
-pub const PLANE_CYCLES: u64 = 7;
+/// The setup pipeline's stages (docs/rc.md, "Setup"): `Det` determinant and bounding box; `Order`
+/// culling, canonical order, the edges' operands and the reciprocal's request; `Edges` edge start
+/// values and depth numerators; two `Hold` stages that keep records while their reciprocals run;
+/// `Grad` the depth gradients (takes the reciprocal); `Plane` the depth plane's start value.
+pub const SETUP_STAGES: usize = 7;
+/// The stage that takes the reciprocal's result, in its first cycle.
+pub const GRAD_STAGE: usize = 5;
+/// Cycles a drawn triangle spends in each stage when nothing waits (`Grad`: from the reciprocal's
+/// arrival). Any other command spends one cycle in each.
+pub const STAGE_CYCLES_DRAWN: [u8; SETUP_STAGES] = [1, 1, 3, 1, 1, 3, 4];
+/// Cycles from a request's acceptance to the reciprocal's result (pipelined: one request per clock).
+pub const RECIP_LATENCY: usize = 10;
+/// Records the queue between setup and traversal holds.
+pub const RECORD_QUEUE: usize = 4;
+/// Results the result queue holds (three: results leave at one per clock with `res_ready` high).
+pub const RESULT_QUEUE: usize = 3;
+/// Cycles from accepting a command to its record being offered to the traversal when nothing waits:
+/// a drawn triangle (the reciprocal, requested in S1's cycle, arrives in S5 RECIP_LATENCY cycles later;
+/// then S5's three cycles and S6's four), and any other command (one cycle in each stage).
+pub const SETUP_CYCLES_DRAWN: u64 = 2 + RECIP_LATENCY as u64 + 3 + 4;
+const _: () = assert!(2 + 3 + 1 + 1 <= 2 + RECIP_LATENCY as u64, "the reciprocal arrives after the record reaches Grad");
+pub const SETUP_CYCLES_SHORT: u64 = SETUP_STAGES as u64 + 1;
 /// Steps of the restoring divider (RECIP_BITS + 1).
 pub const RECIP_STEPS: u32 = 25;
 /// Width of a triangle index on the ports.
@@ -219,12 +230,38 @@ enum Record {
     Walk { index: u32, setup: Setup },
 }
 
-/// One stage of the setup: empty, or holding a record that is ready (to hand over, or to offer) after
-/// `n` more cycles (n = 0: ready now).
-#[derive(Copy, Clone, Debug, PartialEq)]
-enum SetupState {
-    Idle,
-    Busy(u64),
+impl Record {
+    fn walks(&self) -> bool {
+        matches!(self, Record::Walk { .. })
+    }
+    /// Cycles this record spends in setup stage `k` when nothing waits.
+    fn stage_cycles(&self, k: usize) -> u8 {
+        if self.walks() {
+            STAGE_CYCLES_DRAWN[k]
+        } else {
+            1
+        }
+    }
+}
+
+/// A record in a setup stage and the cycles it has spent there.
+#[derive(Copy, Clone, Debug)]
+struct Staged {
+    rec: Record,
+    phase: u8,
+}
+
+/// The setup pipeline's handshake in one cycle, found from the registers at the cycle's start.
+#[derive(Copy, Clone, Debug, Default)]
+struct SetupMoves {
+    /// Stage k hands its record on (to stage k + 1, or the last stage to the record queue).
+    leave: [bool; SETUP_STAGES],
+    /// S5 takes the reciprocal's result.
+    recip_take: bool,
+    /// The reciprocal pipeline advances (and accepts S1's request, if any).
+    recip_advance: bool,
+    /// The first stage accepts a command.
+    cmd_ready: bool,
 }
 
 /// A token entering the z-test stage.
@@ -296,12 +333,12 @@ pub fn walk_step(s: &Setup, x: i32, y: i32) -> WalkStep {
 pub struct RcModel {
     screen: Screen,
     // setup unit
-    /// The setup's first stage (det, cull, box, edges, numerators, reciprocal) and its record.
-    sstate: SetupState,
-    pending: Option<Record>,
-    /// The second stage (the depth plane, then the offer to the traversal) and its record.
-    bstate: SetupState,
-    bpending: Option<Record>,
+    /// The setup pipeline's stages S0..S6.
+    stages: [Option<Staged>; SETUP_STAGES],
+    /// The reciprocal pipeline: which of its stations hold a request (the last one: a result).
+    recip: [bool; RECIP_LATENCY],
+    /// The queue of set-up records, head first.
+    queue: std::collections::VecDeque<Record>,
     // traversal
     tstate: TravState,
     walking: Option<(u32, Setup)>,
@@ -309,32 +346,39 @@ pub struct RcModel {
     f1: Token,
     fwd: Option<(u32, u32)>,
     vis: bool,
-    // result register
-    res: Option<RcResult>,
+    // result queue, head first
+    res: std::collections::VecDeque<RcResult>,
     /// Cycles stepped so far.
     pub cycle: u64,
     /// Cycles the traversal spent walking triangles, and those of them that issued a fragment.
     pub walk_clocks: u64,
     pub walk_fragment_clocks: u64,
+    /// Hazard coverage: cycles the record queue was full, the result queue was full, and the
+    /// reciprocal's result waited for S5.
+    pub record_queue_full_cycles: u64,
+    pub result_queue_full_cycles: u64,
+    pub recip_stall_cycles: u64,
 }
 
 impl RcModel {
     pub fn new(screen: Screen) -> RcModel {
         RcModel {
             screen,
-            sstate: SetupState::Idle,
-            pending: None,
-            bstate: SetupState::Idle,
-            bpending: None,
+            stages: [None; SETUP_STAGES],
+            recip: [false; RECIP_LATENCY],
+            queue: std::collections::VecDeque::new(),
             tstate: TravState::Idle,
             walking: None,
             f1: Token::None,
             fwd: None,
             vis: false,
-            res: None,
+            res: std::collections::VecDeque::new(),
             cycle: 0,
             walk_clocks: 0,
             walk_fragment_clocks: 0,
+            record_queue_full_cycles: 0,
+            result_queue_full_cycles: 0,
+            recip_stall_cycles: 0,
         }
     }
 
@@ -344,7 +388,12 @@ impl RcModel {
 
     /// Whether nothing is in flight: no command in setup, the traversal idle, no result waiting.
     pub fn is_idle(&self) -> bool {
-        self.sstate == SetupState::Idle && self.bstate == SetupState::Idle && self.tstate == TravState::Idle && self.f1 == Token::None && self.res.is_none()
+        self.stages.iter().all(Option::is_none)
+            && !self.recip.iter().any(|&b| b)
+            && self.queue.is_empty()
+            && self.tstate == TravState::Idle
+            && self.f1 == Token::None
+            && self.res.is_empty()
     }
 
     fn addr(&self, x: i32, y: i32) -> u32 {
@@ -353,10 +402,27 @@ impl RcModel {
 
     /// The record the setup unit offers this cycle, if ready.
     fn offered(&self) -> Option<Record> {
-        match self.bstate {
-            SetupState::Busy(0) => self.bpending,
-            _ => None,
+        self.queue.front().copied()
+    }
+
+    /// The setup pipeline's handshake this cycle: a stage hands its record on when it is done with it
+    /// and the next stage is empty or hands its own on in the same cycle (the last stage: when the
+    /// queue has room at the cycle's start); S1 hands a drawn triangle on only when the reciprocal
+    /// pipeline accepts its request; the reciprocal pipeline advances unless its result waits for S5.
+    fn setup_moves(&self) -> SetupMoves {
+        let mut m = SetupMoves::default();
+        let done = |k: usize| self.stages[k].is_some_and(|s| s.phase + 1 >= s.rec.stage_cycles(k));
+        let recip_out = self.recip[RECIP_LATENCY - 1];
+        m.recip_take = recip_out && self.stages[GRAD_STAGE].is_some_and(|s| s.rec.walks() && s.phase == 0);
+        m.recip_advance = !recip_out || m.recip_take;
+        let mut free_next = self.queue.len() < RECORD_QUEUE;
+        for k in (0..SETUP_STAGES).rev() {
+            let waits_for_recip = k == 1 && self.stages[1].is_some_and(|s| s.rec.walks()) && !m.recip_advance;
+            m.leave[k] = done(k) && free_next && !waits_for_recip;
+            free_next = self.stages[k].is_none() || m.leave[k];
         }
+        m.cmd_ready = free_next;
+        m
     }
 
     /// This cycle's walk step, when walking (found once per cycle, used by the token and the edge).
@@ -370,7 +436,7 @@ impl RcModel {
     /// The token the traversal issues this cycle and whether it takes the offered record, given this
     /// cycle's walk step.
     fn traversal(&self, walk: Option<WalkStep>) -> (Token, bool) {
-        let result_free = self.res.is_none() && !self.f1.pushes_result();
+        let result_free = self.res.len() + (self.f1.pushes_result() as usize) < RESULT_QUEUE;
         match self.tstate {
             TravState::Clear { addr } => (Token::Clear { addr }, false),
             TravState::Walk { x, y } => {
@@ -448,8 +514,12 @@ impl RcModel {
             self.walk_fragment_clocks += matches!(tok, Token::Frag { inside: true, .. }) as u64;
         }
         let (write, pass) = self.z_test(inp.z_rd_data, inp.i_rd_data);
-        let mut out = RcOutputs { cmd_ready: self.sstate == SetupState::Idle, ..RcOutputs::default() };
-        if let Some(r) = self.res {
+        let moves = self.setup_moves();
+        self.record_queue_full_cycles += (self.queue.len() == RECORD_QUEUE) as u64;
+        self.result_queue_full_cycles += (self.res.len() == RESULT_QUEUE) as u64;
+        self.recip_stall_cycles += !moves.recip_advance as u64;
+        let mut out = RcOutputs { cmd_ready: moves.cmd_ready, ..RcOutputs::default() };
+        if let Some(&r) = self.res.front() {
             out.res_valid = true;
             out.res = r;
         }
@@ -463,14 +533,14 @@ impl RcModel {
         }
 
         // ---- rising edge ----
-        // Result register: pop, then push from the z-test stage.
+        // Result queue: pop, then push from the z-test stage.
         if out.res_valid && inp.res_ready {
-            self.res = None;
+            self.res.pop_front();
         }
         match self.f1 {
-            Token::Result(r) => self.res = Some(r),
+            Token::Result(r) => self.res.push_back(r),
             Token::Frag { last: true, index, .. } => {
-                self.res = Some(RcResult { index, visible: self.vis || pass, ..RcResult::default() });
+                self.res.push_back(RcResult { index, visible: self.vis || pass, ..RcResult::default() });
                 self.vis = false;
             }
             Token::Frag { .. } => self.vis |= pass,
@@ -506,47 +576,44 @@ impl RcModel {
             }
         }
 
-        // Setup, second stage: the offered record leaves when taken.
-        let b_was_idle = self.bstate == SetupState::Idle;
-        match self.bstate {
-            SetupState::Idle => {}
-            SetupState::Busy(0) => {
-                if take {
-                    self.bpending = None;
-                    self.bstate = SetupState::Idle;
-                }
-            }
-            SetupState::Busy(n) => self.bstate = SetupState::Busy(n - 1),
+        // The record queue: the traversal takes the head; the last setup stage appends.
+        if take {
+            self.queue.pop_front();
         }
-        // Setup, first stage: a finished record goes to the second stage when that was empty in this
-        // cycle; a command is taken when the first stage was empty.
-        match self.sstate {
-            SetupState::Idle => {
-                if inp.cmd_valid {
-                    let c = inp.cmd;
-                    let (rec, cycles) = match c.kind {
-                        CmdKind::Frame => (Record::Frame { clear: c.clear }, HAND_MARKER),
-                        CmdKind::EndOfFrame => (Record::EndOfFrame, HAND_MARKER),
-                        CmdKind::Triangle => match setup(&c.v, c.cull, c.front, self.screen) {
-                            Err(culled) => (Record::Skip { index: c.index, culled: Some(culled) }, HAND_SHORT),
-                            Ok(s) if s.bbox.is_empty() => (Record::Skip { index: c.index, culled: None }, HAND_SHORT),
-                            Ok(s) => (Record::Walk { index: c.index, setup: s }, HAND_DRAWN),
-                        },
-                    };
-                    self.pending = Some(rec);
-                    self.sstate = SetupState::Busy(cycles - 1);
+        if moves.leave[SETUP_STAGES - 1] {
+            self.queue.push_back(self.stages[SETUP_STAGES - 1].expect("a leaving record").rec);
+        }
+        // The reciprocal pipeline: S1's request enters when it advances.
+        if moves.recip_advance {
+            self.recip.rotate_right(1);
+            self.recip[0] = moves.leave[1] && self.stages[1].is_some_and(|s| s.rec.walks());
+        }
+        // The setup stages, last first: a record moves on, or spends another cycle (S5 waits in its
+        // first cycle for the reciprocal).
+        for k in (0..SETUP_STAGES).rev() {
+            let Some(st) = self.stages[k] else { continue };
+            if moves.leave[k] {
+                self.stages[k] = None;
+                if k + 1 < SETUP_STAGES {
+                    self.stages[k + 1] = Some(Staged { rec: st.rec, phase: 0 });
                 }
+            } else if st.phase + 1 < st.rec.stage_cycles(k) && !(k == GRAD_STAGE && st.phase == 0 && !moves.recip_take) {
+                self.stages[k] = Some(Staged { phase: st.phase + 1, ..st });
             }
-            SetupState::Busy(0) => {
-                if b_was_idle {
-                    let rec = self.pending.take().expect("a finished record");
-                    let plane = if let Record::Walk { .. } = rec { PLANE_CYCLES } else { 0 };
-                    self.bpending = Some(rec);
-                    self.bstate = SetupState::Busy(plane);
-                    self.sstate = SetupState::Idle;
-                }
-            }
-            SetupState::Busy(n) => self.sstate = SetupState::Busy(n - 1),
+        }
+        // S1 accepts a command; the triangle's arithmetic is the algorithmic model's.
+        if inp.cmd_valid && moves.cmd_ready {
+            let c = inp.cmd;
+            let rec = match c.kind {
+                CmdKind::Frame => Record::Frame { clear: c.clear },
+                CmdKind::EndOfFrame => Record::EndOfFrame,
+                CmdKind::Triangle => match setup(&c.v, c.cull, c.front, self.screen) {
+                    Err(culled) => Record::Skip { index: c.index, culled: Some(culled) },
+                    Ok(s) if s.bbox.is_empty() => Record::Skip { index: c.index, culled: None },
+                    Ok(s) => Record::Walk { index: c.index, setup: s },
+                },
+            };
+            self.stages[0] = Some(Staged { rec, phase: 0 });
         }
         self.cycle += 1;
         out
@@ -602,10 +669,10 @@ mod tests {
         let t = RcCmd::triangle(7, [v(0, 0, 10), v(64, 0, 10), v(0, 64, 10)], CullMode::None, FrontFace::Ccw).unwrap();
         let (mut z, mut i) = (vec![DEPTH_MAX; 256], vec![0; 256]);
         let (res, _) = run(&mut m, &[t], &mut z, &mut i);
-        // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN (21) and taken there. The walk:
+        // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN and taken there. The walk:
         // one clock per fragment (3 + 2 + 1), the last of a row ending the row because the window
         // reaches the box's edge, and one clock for the empty last row: 7 clocks. The last token's
-        // z-test one cycle later, the result in the register the cycle after that.
+        // z-test one cycle later, the result in the result queue the cycle after that.
         assert_eq!(res[0], (SETUP_CYCLES_DRAWN + 7 + 2, RcResult { index: 7, visible: true, ..Default::default() }));
         assert_eq!(i.iter().filter(|&&x| x == 7).count(), 6);
     }
@@ -676,8 +743,9 @@ mod tests {
         assert!(z.iter().all(|&d| d == DEPTH_MAX) && i.iter().all(|&x| x == 0));
         assert_eq!(res.len(), 1);
         assert!(res[0].1.eof);
-        // Frame accepted in 0, taken by the traversal in 1, clear tokens 2..=33 (32 pixels).
-        assert!(cycles >= 32 + 2 && cycles <= 32 + 8, "cycles {cycles}");
+        // Frame accepted in 0, offered to the traversal SETUP_CYCLES_SHORT cycles later, then one clear
+        // token per pixel (32), then the end of frame's result through the z-test and the result queue.
+        assert!(cycles >= 32 + SETUP_CYCLES_SHORT && cycles <= 32 + SETUP_CYCLES_SHORT + 4, "cycles {cycles}");
     }
 
     #[test]

@@ -1,45 +1,44 @@
 //! `setup`: the RC's triangle setup (seed 001 §2.3.1: Pineda edge functions, eq. 5; the depth plane
-//! with one reciprocal per triangle, eqs. 6-7), bit-exact with `golden::raster::setup`.
+//! with one reciprocal per triangle, eqs. 6-7), bit-exact with `golden::raster::setup`, as a pipeline
+//! of seven stages with a pipelined reciprocal and a queue of set-up records in front of the traversal.
 //!
 //! ```text
-//!              +--------------------------------------------+
-//!  cmd ------->| first stage: Idle -> Det -> Order ->       |
-//!  (valid/     |   Edges(6) -> WaitRecip -> Hand            |
-//!   ready)     |   2 x MulS 25x18 (a*b - c*d per clock),    |
-//!              |   reciprocal (25 steps, 3 per clock)       |
-//!              |        | record copied at Hand (b_*)       |
-//!              |        v                                   |--> rec_valid, rec_kind, rec_index,
-//!              | second stage: Empty -> Plane(7) -> Out     |    rec_culled, rec_zero_area,
-//!              |   1 x MulS 44x26 (plane products)          |    rec_bx0/bx1/by0/by1, rec_addr,
-//!  clock ----->|                                            |    rec_e0..2, rec_sx0..2, rec_sy0..2,
-//!              +--------------------------------------------+    rec_raw, rec_a, rec_b <-- rec_ready
+//!          +------+  +-------+  +---------+  +------+------+  +--------+  +---------+  +---------+
+//!  cmd --->| S0   |->| S1    |->| S2      |->| S3   | S4   |->| S5     |->| S6      |->| record  |-> rec_*
+//! (valid/  | Det  |  | Order |  | Edges   |  | Hold | Hold |  | Grad   |  | Plane   |  | queue   |   (valid/
+//!  ready)  | 2x   |  |       |  | 4x      |  |      |      |  | 1x     |  | 2x      |  | 4 deep  |    ready)
+//!          |17x17 |  |       |  | 25x18   |  |      |      |  | 44x26  |  | 44x26   |  +---------+
+//!          +------+  +---+---+  +---------+  +------+------+  +---^----+  +---------+
+//!                        | abs(det)  +--------------------------+  | mant, shift
+//!                        +---------->| reciprocal, 10 stations  |--+
+//!                                    +--------------------------+
 //! ```
 //!
-//! Two stages, each holding one triangle, so that the first stage works on the next triangle while
-//! the second computes the depth plane of the last (`golden::cycle::rc` models the same schedule).
-//! Schedule of a command accepted in cycle t (one state per cycle unless said otherwise):
-//! * t+1 `Det`: det = dx10*dy20 - dx20*dy10 (two 17x17 products on the dot-difference unit).
-//! * t+1 `Det` also finds the clamped bounding box `[(min+7)>>4, (max-8)>>4]` (it does not depend on
-//!   the vertex order) and registers it.
-//! * t+2 `Order`: zero area / cull decision from det's sign, the cull mode and the front face; swap
-//!   vertices 1 and 2 if det < 0 (canonical order); start the reciprocal of |det|. Culled or empty
-//!   box: go to `Hand`. (A frame start or end of frame goes from `Idle` to `Hand` at t+1.)
-//! * t+3..t+8 `Edges` 0..5 (during the division; edge k's operands are found in phase k and multiplied
-//!   in phase k + 1): edge k's value at the box's first pixel
-//!   `E = dx*(16*Y0+8-a.y) - dy*(16*X0+8-a.x) - bias` and its steps (-16*dy, 16*dx); then the depth
-//!   numerators na = dz10*dy20 - dz20*dy10 and nb = dz20*dx10 - dz10*dx20; the start address
-//!   Y0*W + X0.
-//! * `WaitRecip` until the reciprocal is ready (t+12 for a request accepted in t+2: three division
-//!   steps per clock).
-//! * t+13 `Hand`: when the second stage is `Empty` in this cycle, the record (and the vertex 0, the
-//!   numerators and the reciprocal the plane needs) is copied into its `b_*` registers and the first
-//!   stage is `Idle` (`cmd.ready`) from the next cycle; otherwise it waits in `Hand`.
-//! * Second stage, t+14..t+20 `Plane` 0..6 (a drawn triangle) on one 44x26 multiplier whose product is
-//!   registered (each product is used in the phase after its operands):
-//!   `A = sat40(round(na*mant >> (shift+4)))`, B likewise, `C = (z0 << 16) + round(A*(8-x0) +
-//!   B*(8-y0) >> 4)`, raw = C + A*X0 + B*Y0 (the depth plane's raw value at the box's first pixel).
-//! * t+21 `Out` (any other record: the cycle after its hand-over): the record is offered until
-//!   `rec_ready`; `Empty` the cycle after. Drawn triangles back to back: one every 14 cycles.
+//! Each stage holds one record (docs/rc.md, "Setup"; `golden::cycle::rc` models the same schedule).
+//! A drawn triangle spends 1, 1, 3, 1, 1, 3 and 4 cycles in S0..S6 when nothing waits; any other
+//! command (frame start, end of frame, a culled or empty-box triangle) one cycle in each.
+//! * S0 `Det`: det = dx10*dy20 - dx20*dy10 (two 17x17 products); the clamped bounding box
+//!   `[(min+7)>>4, (max-8)>>4]`.
+//! * S1 `Order`: zero area / cull decision from det's sign, the cull mode and the front face;
+//!   canonical order (swap vertices 1 and 2 if det < 0); all three edges' multiplier operands, fill-rule
+//!   flags and steps (-16*dy, 16*dx); the start address Y0*W + X0; the reciprocal request of abs(det).
+//! * S2 `Edges` on two dot units (a*b - c*d each): phase 0 E0, E1; phase 1 E2 and
+//!   na = dz10*dy20 - dz20*dy10; phase 2 nb = dz20*dx10 - dz10*dx20.
+//!   `E = dx*(16*Y0+8-a.y) - dy*(16*X0+8-a.x) - bias` (bias 0 on a top or left edge, else 1).
+//! * S3, S4 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 10, is longer
+//!   than S2's three cycles).
+//! * S5 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1
+//!   `A = sat40(round(na*mant >> (shift+4)))` and nb*mant; phase 2 B likewise.
+//! * S6 `Plane`: phase 0 A*(8-x0), B*(8-y0); phase 1 their sum, A*X0, B*Y0;
+//!   phase 2 `C = (z0 << 16) + round(sum >> 4)` and A*X0 + B*Y0; phase 3 raw = C + A*X0 + B*Y0 (the
+//!   depth plane's raw value at the box's first pixel) goes into the queue with the record.
+//!
+//! Handshake, from the registers at the start of a cycle, last stage first: stage k hands its record on
+//! when it has spent its cycles and stage k+1 is empty or hands its own on in the same cycle; S6 when the
+//! queue holds fewer than four records; S1 hands a drawn triangle on only when the reciprocal advances
+//! (takes its request). `cmd.ready` = S0 is empty or hands on. The reciprocal advances when its result
+//! station is empty or S5 takes the result. Everything is first in, first out: records leave in command
+//! order.
 //!
 //! Widths: inputs are any 16-bit S11.4 values, so |dx|, |dy| < 2^16; E stays below 2^34 in magnitude
 //! on the screen (36-bit registers). na, nb < 2^42; na*mant < 2^67 (70-bit product). C never
@@ -56,33 +55,51 @@ pub const REC_FRAME: u64 = 0;
 pub const REC_SKIP: u64 = 1;
 pub const REC_WALK: u64 = 2;
 pub const REC_EOF: u64 = 3;
+/// Records the queue in front of the traversal holds.
+pub const RECORD_QUEUE: u64 = 4;
 
-/// The first stage: a command from `Idle` to `Hand` (its record moves to the second stage).
-#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
-pub enum SetupState {
-    Idle,
-    Det,
-    Order,
-    Edges,
-    WaitRecip,
-    Hand,
-}
-
-/// The second stage: a drawn triangle's depth plane, then the record offered to the traversal.
-#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
-pub enum PlaneState {
-    Empty,
-    Plane,
-    Out,
+/// A record on its way through S2..S6 and the queue. Signed values are kept as their bits.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct SetupRec {
+    /// REC_FRAME, REC_SKIP, REC_WALK or REC_EOF.
+    pub kind: Bits<2>,
+    pub clear: Bit,
+    pub index: Bits<16>,
+    pub culled: Bit,
+    pub zero_area: Bit,
+    pub bx0: Bits<10>,
+    pub bx1: Bits<10>,
+    pub by0: Bits<10>,
+    pub by1: Bits<10>,
+    pub addr: Bits<20>,
+    pub e0: Bits<36>,
+    pub e1: Bits<36>,
+    pub e2: Bits<36>,
+    pub sx0: Bits<22>,
+    pub sx1: Bits<22>,
+    pub sx2: Bits<22>,
+    pub sy0: Bits<22>,
+    pub sy1: Bits<22>,
+    pub sy2: Bits<22>,
+    pub na: Bits<44>,
+    pub nb: Bits<44>,
+    pub x0: Bits<16>,
+    pub y0: Bits<16>,
+    pub z0: Bits<24>,
+    pub mant: Bits<25>,
+    pub shift: Bits<6>,
+    pub a: Bits<40>,
+    pub b: Bits<40>,
+    pub raw: Bits<56>,
 }
 
 #[derive(LogicBlock)]
 pub struct Setup {
     pub clock: Signal<In, Clock>,
     // From the command port
-    /// Commands; `ready` is high exactly in `Idle`.
+    /// Commands; `ready` when S0 is empty or hands its command on in this cycle.
     pub cmd: StreamIn<RcCommand>,
-    // To the traversal (held while `rec_valid`, taken with `rec_ready`)
+    // To the traversal: the queue's head (held while `rec_valid`, taken with `rec_ready`)
     /// A record is offered.
     pub rec_valid: Signal<Out, Bit>,
     /// The traversal takes the record this cycle.
@@ -121,118 +138,120 @@ pub struct Setup {
 
     // Children
     recip: Reciprocal,
-    mul_l: MulS<25, 18, 43>,
-    mul_r: MulS<25, 18, 43>,
-    mul_w: MulS<44, 26, 70>,
+    /// S0: det's two products.
+    mul_d0: MulS<17, 17, 34>,
+    mul_d1: MulS<17, 17, 34>,
+    /// S2: two dot units, a0*b0 - a1*b1 and c0*d0 - c1*d1.
+    mul_a0: MulS<25, 18, 43>,
+    mul_a1: MulS<25, 18, 43>,
+    mul_b0: MulS<25, 18, 43>,
+    mul_b1: MulS<25, 18, 43>,
+    /// S5: the gradients.
+    mul_g: MulS<44, 26, 70>,
+    /// S6: the plane's two products per cycle.
+    mul_p: MulS<44, 26, 70>,
+    mul_q: MulS<44, 26, 70>,
 
-    // Registers
-    state: DFF<SetupState>,
-    phase: DFF<Bits<3>>,
-    kind: DFF<Bits<2>>,
-    /// The clamped bounding box and whether it is empty, found in `Det` (order-independent).
-    nbx0: DFF<Bits<10>>,
-    nbx1: DFF<Bits<10>>,
-    nby0: DFF<Bits<10>>,
-    nby1: DFF<Bits<10>>,
-    nbox_empty: DFF<Bit>,
-    clear: DFF<Bit>,
-    index: DFF<Bits<16>>,
-    cull: DFF<Bits<2>>,
-    front_cw: DFF<Bit>,
-    vx0: DFF<Signed<16>>,
-    vy0: DFF<Signed<16>>,
-    vz0: DFF<Bits<24>>,
-    vx1: DFF<Signed<16>>,
-    vy1: DFF<Signed<16>>,
-    vz1: DFF<Bits<24>>,
-    vx2: DFF<Signed<16>>,
-    vy2: DFF<Signed<16>>,
-    vz2: DFF<Bits<24>>,
-    det: DFF<Signed<36>>,
-    culled: DFF<Bit>,
-    zero_area: DFF<Bit>,
-    bx0: DFF<Bits<10>>,
-    bx1: DFF<Bits<10>>,
-    by0: DFF<Bits<10>>,
-    by1: DFF<Bits<10>>,
-    addr: DFF<Bits<20>>,
-    e0: DFF<Signed<36>>,
-    e1: DFF<Signed<36>>,
-    e2: DFF<Signed<36>>,
-    sx0: DFF<Signed<22>>,
-    /// An edge's multiplier operands, fill-rule flag and steps, found in the `Edges` phase of its
-    /// number and used in the next: the vertex mux and differences and the products are never one
-    /// clock period.
-    r_la: DFF<Signed<25>>,
-    r_lb: DFF<Signed<18>>,
-    r_ra: DFF<Signed<25>>,
-    r_rb: DFF<Signed<18>>,
-    r_tl: DFF<Bit>,
-    r_sx: DFF<Signed<22>>,
-    r_sy: DFF<Signed<22>>,
-    sx1: DFF<Signed<22>>,
-    sx2: DFF<Signed<22>>,
-    sy0: DFF<Signed<22>>,
-    sy1: DFF<Signed<22>>,
-    sy2: DFF<Signed<22>>,
-    na: DFF<Signed<44>>,
-    nb: DFF<Signed<44>>,
-    mant: DFF<Bits<25>>,
-    shamt: DFF<Bits<6>>,
-    prod: DFF<Bits<70>>,
-    grad_a: DFF<Signed<40>>,
-    grad_b: DFF<Signed<40>>,
-    acc: DFF<Signed<58>>,
-    raw: DFF<Signed<56>>,
-    /// The second stage's state, phase and copy of the record (taken at the hand-over).
-    bstate: DFF<PlaneState>,
-    bphase: DFF<Bits<3>>,
-    b_kind: DFF<Bits<2>>,
-    b_clear: DFF<Bit>,
-    b_index: DFF<Bits<16>>,
-    b_culled: DFF<Bit>,
-    b_zero_area: DFF<Bit>,
-    b_bx0: DFF<Bits<10>>,
-    b_bx1: DFF<Bits<10>>,
-    b_by0: DFF<Bits<10>>,
-    b_by1: DFF<Bits<10>>,
-    b_addr: DFF<Bits<20>>,
-    b_e0: DFF<Signed<36>>,
-    b_e1: DFF<Signed<36>>,
-    b_e2: DFF<Signed<36>>,
-    b_sx0: DFF<Signed<22>>,
-    b_sx1: DFF<Signed<22>>,
-    b_sx2: DFF<Signed<22>>,
-    b_sy0: DFF<Signed<22>>,
-    b_sy1: DFF<Signed<22>>,
-    b_sy2: DFF<Signed<22>>,
-    b_na: DFF<Signed<44>>,
-    b_nb: DFF<Signed<44>>,
-    b_mant: DFF<Bits<25>>,
-    b_shamt: DFF<Bits<6>>,
-    b_vx0: DFF<Signed<16>>,
-    b_vy0: DFF<Signed<16>>,
-    b_vz0: DFF<Bits<24>>,
+    // S0 `Det`: the command.
+    s0_v: DFF<Bit>,
+    s0: DFF<RcCommand>,
+    // S1 `Order`: the command, det and the clamped box.
+    s1_v: DFF<Bit>,
+    s1: DFF<RcCommand>,
+    s1_det: DFF<Signed<36>>,
+    s1_bx0: DFF<Bits<10>>,
+    s1_bx1: DFF<Bits<10>>,
+    s1_by0: DFF<Bits<10>>,
+    s1_by1: DFF<Bits<10>>,
+    s1_box_empty: DFF<Bit>,
+    // S2 `Edges`: the record, its phase and the dot units' operands (edge k: la*lb - ra*rb).
+    s2_v: DFF<Bit>,
+    s2_phase: DFF<Bits<2>>,
+    s2: DFF<SetupRec>,
+    la0: DFF<Signed<25>>,
+    lb0: DFF<Signed<18>>,
+    ra0: DFF<Signed<25>>,
+    rb0: DFF<Signed<18>>,
+    tl0: DFF<Bit>,
+    la1: DFF<Signed<25>>,
+    lb1: DFF<Signed<18>>,
+    ra1: DFF<Signed<25>>,
+    rb1: DFF<Signed<18>>,
+    tl1: DFF<Bit>,
+    la2: DFF<Signed<25>>,
+    lb2: DFF<Signed<18>>,
+    ra2: DFF<Signed<25>>,
+    rb2: DFF<Signed<18>>,
+    tl2: DFF<Bit>,
+    n_dz10: DFF<Signed<25>>,
+    n_dz20: DFF<Signed<25>>,
+    n_dx10: DFF<Signed<18>>,
+    n_dx20: DFF<Signed<18>>,
+    n_dy10: DFF<Signed<18>>,
+    n_dy20: DFF<Signed<18>>,
+    // S3, S4 `Hold`.
+    s3_v: DFF<Bit>,
+    s3: DFF<SetupRec>,
+    s4_v: DFF<Bit>,
+    s4: DFF<SetupRec>,
+    // S5 `Grad`: the record, its phase, the product register.
+    s5_v: DFF<Bit>,
+    s5_phase: DFF<Bits<2>>,
+    s5: DFF<SetupRec>,
+    g_prod: DFF<Bits<70>>,
+    // S6 `Plane`: the record, its phase, the two product registers, their sum, C and the sum of the
+    // start terms.
+    s6_v: DFF<Bit>,
+    s6_phase: DFF<Bits<2>>,
+    s6: DFF<SetupRec>,
+    p_prod: DFF<Bits<70>>,
+    q_prod: DFF<Bits<70>>,
+    p_acc: DFF<Signed<58>>,
+    p_c: DFF<Signed<56>>,
+    p_s: DFF<Signed<56>>,
+    // The record queue, head first, and its length.
+    q0: DFF<SetupRec>,
+    q1: DFF<SetupRec>,
+    q2: DFF<SetupRec>,
+    q3: DFF<SetupRec>,
+    q_len: DFF<Bits<3>>,
 
-    // Combinational
+    // Combinational: the handshake
+    leave0: Signal<Local, Bit>,
+    leave1: Signal<Local, Bit>,
+    leave2: Signal<Local, Bit>,
+    leave3: Signal<Local, Bit>,
+    leave4: Signal<Local, Bit>,
+    leave5: Signal<Local, Bit>,
+    leave6: Signal<Local, Bit>,
+    free1: Signal<Local, Bit>,
+    free2: Signal<Local, Bit>,
+    free3: Signal<Local, Bit>,
+    free4: Signal<Local, Bit>,
+    free5: Signal<Local, Bit>,
+    free6: Signal<Local, Bit>,
+    done2: Signal<Local, Bit>,
+    done5: Signal<Local, Bit>,
+    done6: Signal<Local, Bit>,
+    walk2: Signal<Local, Bit>,
+    walk5: Signal<Local, Bit>,
+    walk6: Signal<Local, Bit>,
+    take: Signal<Local, Bit>,
+    pop: Signal<Local, Bit>,
+    q_after: Signal<Local, Bits<3>>,
+    pushed: Signal<Local, SetupRec>,
+    // S0
+    v0x: Signal<Local, Signed<16>>,
+    v0y: Signal<Local, Signed<16>>,
+    v1x: Signal<Local, Signed<16>>,
+    v1y: Signal<Local, Signed<16>>,
+    v2x: Signal<Local, Signed<16>>,
+    v2y: Signal<Local, Signed<16>>,
     dx10: Signal<Local, Signed<17>>,
     dy10: Signal<Local, Signed<17>>,
     dx20: Signal<Local, Signed<17>>,
     dy20: Signal<Local, Signed<17>>,
-    dz10: Signal<Local, Signed<25>>,
-    dz20: Signal<Local, Signed<25>>,
-    op_la: Signal<Local, Signed<25>>,
-    op_lb: Signal<Local, Signed<18>>,
-    op_ra: Signal<Local, Signed<25>>,
-    op_rb: Signal<Local, Signed<18>>,
-    op_wa: Signal<Local, Signed<44>>,
-    op_wb: Signal<Local, Signed<26>>,
-    dot: Signal<Local, Signed<44>>,
-    det_abs: Signal<Local, Bits<36>>,
-    det_neg: Signal<Local, Bit>,
-    det_zero: Signal<Local, Bit>,
-    is_front: Signal<Local, Bit>,
-    culled_now: Signal<Local, Bit>,
+    det: Signal<Local, Signed<36>>,
     xmin: Signal<Local, Signed<16>>,
     xmax: Signal<Local, Signed<16>>,
     ymin: Signal<Local, Signed<16>>,
@@ -256,39 +275,104 @@ pub struct Setup {
     box_x1_u: Signal<Local, Bits<13>>,
     box_y0_u: Signal<Local, Bits<13>>,
     box_y1_u: Signal<Local, Bits<13>>,
-    prod_u: Signal<Local, Bits<70>>,
-    // edge k's endpoints a -> b
-    ea_x: Signal<Local, Signed<16>>,
-    ea_y: Signal<Local, Signed<16>>,
-    eb_x: Signal<Local, Signed<16>>,
-    eb_y: Signal<Local, Signed<16>>,
-    edx: Signal<Local, Signed<17>>,
-    edy: Signal<Local, Signed<17>>,
+    // S1
+    is_tri: Signal<Local, Bit>,
+    det_neg: Signal<Local, Bit>,
+    det_zero: Signal<Local, Bit>,
+    is_front: Signal<Local, Bit>,
+    culled_now: Signal<Local, Bit>,
+    walk1: Signal<Local, Bit>,
+    det_abs: Signal<Local, Bits<36>>,
+    rkind: Signal<Local, Bits<2>>,
+    // canonical vertices
+    cx0: Signal<Local, Signed<16>>,
+    cy0: Signal<Local, Signed<16>>,
+    cz0: Signal<Local, Bits<24>>,
+    cx1: Signal<Local, Signed<16>>,
+    cy1: Signal<Local, Signed<16>>,
+    cz1: Signal<Local, Bits<24>>,
+    cx2: Signal<Local, Signed<16>>,
+    cy2: Signal<Local, Signed<16>>,
+    cz2: Signal<Local, Bits<24>>,
+    cdx10: Signal<Local, Signed<17>>,
+    cdy10: Signal<Local, Signed<17>>,
+    cdx20: Signal<Local, Signed<17>>,
+    cdy20: Signal<Local, Signed<17>>,
+    cdz10: Signal<Local, Signed<25>>,
+    cdz20: Signal<Local, Signed<25>>,
     cx16: Signal<Local, Bits<18>>,
     cy16: Signal<Local, Bits<18>>,
-    px: Signal<Local, Signed<18>>,
-    py: Signal<Local, Signed<18>>,
-    top_left: Signal<Local, Bit>,
-    e_val: Signal<Local, Signed<36>>,
-    neg_dy: Signal<Local, Signed<17>>,
-    neg_dy_w: Signal<Local, Signed<22>>,
-    edx_w: Signal<Local, Signed<22>>,
-    step_x: Signal<Local, Signed<22>>,
-    step_y: Signal<Local, Signed<22>>,
     addr_prod: Signal<Local, Bits<32>>,
-    // plane
+    edx_0: Signal<Local, Signed<17>>,
+    edy_0: Signal<Local, Signed<17>>,
+    px_0: Signal<Local, Signed<18>>,
+    py_0: Signal<Local, Signed<18>>,
+    tl_0: Signal<Local, Bit>,
+    negdy_0: Signal<Local, Signed<17>>,
+    negdyw_0: Signal<Local, Signed<22>>,
+    edxw_0: Signal<Local, Signed<22>>,
+    stx_0: Signal<Local, Signed<22>>,
+    sty_0: Signal<Local, Signed<22>>,
+    edx_1: Signal<Local, Signed<17>>,
+    edy_1: Signal<Local, Signed<17>>,
+    px_1: Signal<Local, Signed<18>>,
+    py_1: Signal<Local, Signed<18>>,
+    tl_1: Signal<Local, Bit>,
+    negdy_1: Signal<Local, Signed<17>>,
+    negdyw_1: Signal<Local, Signed<22>>,
+    edxw_1: Signal<Local, Signed<22>>,
+    stx_1: Signal<Local, Signed<22>>,
+    sty_1: Signal<Local, Signed<22>>,
+    edx_2: Signal<Local, Signed<17>>,
+    edy_2: Signal<Local, Signed<17>>,
+    px_2: Signal<Local, Signed<18>>,
+    py_2: Signal<Local, Signed<18>>,
+    tl_2: Signal<Local, Bit>,
+    negdy_2: Signal<Local, Signed<17>>,
+    negdyw_2: Signal<Local, Signed<22>>,
+    edxw_2: Signal<Local, Signed<22>>,
+    stx_2: Signal<Local, Signed<22>>,
+    sty_2: Signal<Local, Signed<22>>,
+    // S2
+    op_a0: Signal<Local, Signed<25>>,
+    op_a1: Signal<Local, Signed<18>>,
+    op_a2: Signal<Local, Signed<25>>,
+    op_a3: Signal<Local, Signed<18>>,
+    op_b0: Signal<Local, Signed<25>>,
+    op_b1: Signal<Local, Signed<18>>,
+    op_b2: Signal<Local, Signed<25>>,
+    op_b3: Signal<Local, Signed<18>>,
+    tl_a: Signal<Local, Bit>,
+    tl_b: Signal<Local, Bit>,
+    dot_a: Signal<Local, Signed<44>>,
+    dot_b: Signal<Local, Signed<44>>,
+    e_a: Signal<Local, Signed<36>>,
+    e_b: Signal<Local, Signed<36>>,
+    // S5
+    op_ga: Signal<Local, Signed<44>>,
+    op_gb: Signal<Local, Signed<26>>,
     round_half: Signal<Local, Bits<70>>,
     rounded: Signal<Local, Bits<70>>,
     shifted: Signal<Local, Bits<70>>,
     grad_hi: Signal<Local, Bits<31>>,
     grad: Signal<Local, Signed<40>>,
+    // S6
+    ga: Signal<Local, Signed<40>>,
+    gb: Signal<Local, Signed<40>>,
+    op_pa: Signal<Local, Signed<44>>,
+    op_pb: Signal<Local, Signed<26>>,
+    op_qa: Signal<Local, Signed<44>>,
+    op_qb: Signal<Local, Signed<26>>,
     off_x: Signal<Local, Signed<17>>,
     off_y: Signal<Local, Signed<17>>,
+    p58: Signal<Local, Signed<58>>,
+    q58: Signal<Local, Signed<58>>,
+    p56: Signal<Local, Signed<56>>,
+    q56: Signal<Local, Signed<56>>,
     acc_round: Signal<Local, Bits<58>>,
     c_frac: Signal<Local, Signed<56>>,
     z0_plane: Signal<Local, Signed<56>>,
-    prod56: Signal<Local, Signed<56>>,
-    c_plane: Signal<Local, Signed<56>>,
+    raw_now: Signal<Local, Signed<56>>,
 
     // Constants
     w_minus_1: Constant<Signed<13>>,
@@ -303,16 +387,16 @@ pub struct Setup {
     k0_36: Constant<Signed<36>>,
     k1_36: Constant<Signed<36>>,
     k0_17: Constant<Signed<17>>,
-    k1_3: Constant<Bits<3>>,
+    k0_2: Constant<Bits<2>>,
+    k1_2: Constant<Bits<2>>,
+    k2_2: Constant<Bits<2>>,
+    k3_2: Constant<Bits<2>>,
     k0_3: Constant<Bits<3>>,
+    k1_3: Constant<Bits<3>>,
     k2_3: Constant<Bits<3>>,
     k3_3: Constant<Bits<3>>,
-    k5_3: Constant<Bits<3>>,
-    k6_3: Constant<Bits<3>>,
     k4_3: Constant<Bits<3>>,
     k0_31: Constant<Bits<31>>,
-    k0_70: Constant<Bits<70>>,
-    k0_56: Constant<Signed<56>>,
     k16_6: Constant<Bits<6>>,
     k1s_31: Constant<Bits<31>>,
     k8_58: Constant<Bits<58>>,
@@ -360,109 +444,104 @@ impl Setup {
             rec_a: Default::default(),
             rec_b: Default::default(),
             recip: Default::default(),
-            mul_l: Default::default(),
-            mul_r: Default::default(),
-            mul_w: Default::default(),
-            state: Default::default(),
-            phase: Default::default(),
-            kind: Default::default(),
-            nbx0: Default::default(),
-            nbx1: Default::default(),
-            nby0: Default::default(),
-            nby1: Default::default(),
-            nbox_empty: Default::default(),
-            clear: Default::default(),
-            index: Default::default(),
-            cull: Default::default(),
-            front_cw: Default::default(),
-            vx0: Default::default(),
-            vy0: Default::default(),
-            vz0: Default::default(),
-            vx1: Default::default(),
-            vy1: Default::default(),
-            vz1: Default::default(),
-            vx2: Default::default(),
-            vy2: Default::default(),
-            vz2: Default::default(),
-            det: Default::default(),
-            culled: Default::default(),
-            zero_area: Default::default(),
-            bx0: Default::default(),
-            bx1: Default::default(),
-            by0: Default::default(),
-            by1: Default::default(),
-            addr: Default::default(),
-            e0: Default::default(),
-            e1: Default::default(),
-            e2: Default::default(),
-            sx0: Default::default(),
-            r_la: Default::default(),
-            r_lb: Default::default(),
-            r_ra: Default::default(),
-            r_rb: Default::default(),
-            r_tl: Default::default(),
-            r_sx: Default::default(),
-            r_sy: Default::default(),
-            sx1: Default::default(),
-            sx2: Default::default(),
-            sy0: Default::default(),
-            sy1: Default::default(),
-            sy2: Default::default(),
-            na: Default::default(),
-            nb: Default::default(),
-            mant: Default::default(),
-            shamt: Default::default(),
-            bstate: Default::default(),
-            bphase: Default::default(),
-            b_kind: Default::default(),
-            b_clear: Default::default(),
-            b_index: Default::default(),
-            b_culled: Default::default(),
-            b_zero_area: Default::default(),
-            b_bx0: Default::default(),
-            b_bx1: Default::default(),
-            b_by0: Default::default(),
-            b_by1: Default::default(),
-            b_addr: Default::default(),
-            b_e0: Default::default(),
-            b_e1: Default::default(),
-            b_e2: Default::default(),
-            b_sx0: Default::default(),
-            b_sx1: Default::default(),
-            b_sx2: Default::default(),
-            b_sy0: Default::default(),
-            b_sy1: Default::default(),
-            b_sy2: Default::default(),
-            b_na: Default::default(),
-            b_nb: Default::default(),
-            b_mant: Default::default(),
-            b_shamt: Default::default(),
-            b_vx0: Default::default(),
-            b_vy0: Default::default(),
-            b_vz0: Default::default(),
-            prod: Default::default(),
-            grad_a: Default::default(),
-            grad_b: Default::default(),
-            acc: Default::default(),
-            raw: Default::default(),
+            mul_d0: Default::default(),
+            mul_d1: Default::default(),
+            mul_a0: Default::default(),
+            mul_a1: Default::default(),
+            mul_b0: Default::default(),
+            mul_b1: Default::default(),
+            mul_g: Default::default(),
+            mul_p: Default::default(),
+            mul_q: Default::default(),
+            s0_v: Default::default(),
+            s0: Default::default(),
+            s1_v: Default::default(),
+            s1: Default::default(),
+            s1_det: Default::default(),
+            s1_bx0: Default::default(),
+            s1_bx1: Default::default(),
+            s1_by0: Default::default(),
+            s1_by1: Default::default(),
+            s1_box_empty: Default::default(),
+            s2_v: Default::default(),
+            s2_phase: Default::default(),
+            s2: Default::default(),
+            la0: Default::default(),
+            lb0: Default::default(),
+            ra0: Default::default(),
+            rb0: Default::default(),
+            tl0: Default::default(),
+            la1: Default::default(),
+            lb1: Default::default(),
+            ra1: Default::default(),
+            rb1: Default::default(),
+            tl1: Default::default(),
+            la2: Default::default(),
+            lb2: Default::default(),
+            ra2: Default::default(),
+            rb2: Default::default(),
+            tl2: Default::default(),
+            n_dz10: Default::default(),
+            n_dz20: Default::default(),
+            n_dx10: Default::default(),
+            n_dx20: Default::default(),
+            n_dy10: Default::default(),
+            n_dy20: Default::default(),
+            s3_v: Default::default(),
+            s3: Default::default(),
+            s4_v: Default::default(),
+            s4: Default::default(),
+            s5_v: Default::default(),
+            s5_phase: Default::default(),
+            s5: Default::default(),
+            g_prod: Default::default(),
+            s6_v: Default::default(),
+            s6_phase: Default::default(),
+            s6: Default::default(),
+            p_prod: Default::default(),
+            q_prod: Default::default(),
+            p_acc: Default::default(),
+            p_c: Default::default(),
+            p_s: Default::default(),
+            q0: Default::default(),
+            q1: Default::default(),
+            q2: Default::default(),
+            q3: Default::default(),
+            q_len: Default::default(),
+            leave0: Default::default(),
+            leave1: Default::default(),
+            leave2: Default::default(),
+            leave3: Default::default(),
+            leave4: Default::default(),
+            leave5: Default::default(),
+            leave6: Default::default(),
+            free1: Default::default(),
+            free2: Default::default(),
+            free3: Default::default(),
+            free4: Default::default(),
+            free5: Default::default(),
+            free6: Default::default(),
+            done2: Default::default(),
+            done5: Default::default(),
+            done6: Default::default(),
+            walk2: Default::default(),
+            walk5: Default::default(),
+            walk6: Default::default(),
+            take: Default::default(),
+            pop: Default::default(),
+            q_after: Default::default(),
+            pushed: Default::default(),
+            v0x: Default::default(),
+            v0y: Default::default(),
+            v1x: Default::default(),
+            v1y: Default::default(),
+            v2x: Default::default(),
+            v2y: Default::default(),
             dx10: Default::default(),
             dy10: Default::default(),
             dx20: Default::default(),
             dy20: Default::default(),
-            dz10: Default::default(),
-            dz20: Default::default(),
-            op_la: Default::default(),
-            op_lb: Default::default(),
-            op_ra: Default::default(),
-            op_rb: Default::default(),
-            op_wa: Default::default(),
-            op_wb: Default::default(),
-            dot: Default::default(),
-            det_abs: Default::default(),
-            det_neg: Default::default(),
-            det_zero: Default::default(),
-            is_front: Default::default(),
-            culled_now: Default::default(),
+            det: Default::default(),
             xmin: Default::default(),
             xmax: Default::default(),
             ymin: Default::default(),
@@ -486,37 +565,99 @@ impl Setup {
             box_x1_u: Default::default(),
             box_y0_u: Default::default(),
             box_y1_u: Default::default(),
-            prod_u: Default::default(),
-            ea_x: Default::default(),
-            ea_y: Default::default(),
-            eb_x: Default::default(),
-            eb_y: Default::default(),
-            edx: Default::default(),
-            edy: Default::default(),
+            is_tri: Default::default(),
+            det_neg: Default::default(),
+            det_zero: Default::default(),
+            is_front: Default::default(),
+            culled_now: Default::default(),
+            walk1: Default::default(),
+            det_abs: Default::default(),
+            rkind: Default::default(),
+            cx0: Default::default(),
+            cy0: Default::default(),
+            cz0: Default::default(),
+            cx1: Default::default(),
+            cy1: Default::default(),
+            cz1: Default::default(),
+            cx2: Default::default(),
+            cy2: Default::default(),
+            cz2: Default::default(),
+            cdx10: Default::default(),
+            cdy10: Default::default(),
+            cdx20: Default::default(),
+            cdy20: Default::default(),
+            cdz10: Default::default(),
+            cdz20: Default::default(),
             cx16: Default::default(),
             cy16: Default::default(),
-            px: Default::default(),
-            py: Default::default(),
-            top_left: Default::default(),
-            e_val: Default::default(),
-            neg_dy: Default::default(),
-            neg_dy_w: Default::default(),
-            edx_w: Default::default(),
-            step_x: Default::default(),
-            step_y: Default::default(),
             addr_prod: Default::default(),
+            edx_0: Default::default(),
+            edy_0: Default::default(),
+            px_0: Default::default(),
+            py_0: Default::default(),
+            tl_0: Default::default(),
+            negdy_0: Default::default(),
+            negdyw_0: Default::default(),
+            edxw_0: Default::default(),
+            stx_0: Default::default(),
+            sty_0: Default::default(),
+            edx_1: Default::default(),
+            edy_1: Default::default(),
+            px_1: Default::default(),
+            py_1: Default::default(),
+            tl_1: Default::default(),
+            negdy_1: Default::default(),
+            negdyw_1: Default::default(),
+            edxw_1: Default::default(),
+            stx_1: Default::default(),
+            sty_1: Default::default(),
+            edx_2: Default::default(),
+            edy_2: Default::default(),
+            px_2: Default::default(),
+            py_2: Default::default(),
+            tl_2: Default::default(),
+            negdy_2: Default::default(),
+            negdyw_2: Default::default(),
+            edxw_2: Default::default(),
+            stx_2: Default::default(),
+            sty_2: Default::default(),
+            op_a0: Default::default(),
+            op_a1: Default::default(),
+            op_a2: Default::default(),
+            op_a3: Default::default(),
+            op_b0: Default::default(),
+            op_b1: Default::default(),
+            op_b2: Default::default(),
+            op_b3: Default::default(),
+            tl_a: Default::default(),
+            tl_b: Default::default(),
+            dot_a: Default::default(),
+            dot_b: Default::default(),
+            e_a: Default::default(),
+            e_b: Default::default(),
+            op_ga: Default::default(),
+            op_gb: Default::default(),
             round_half: Default::default(),
             rounded: Default::default(),
             shifted: Default::default(),
             grad_hi: Default::default(),
             grad: Default::default(),
+            ga: Default::default(),
+            gb: Default::default(),
+            op_pa: Default::default(),
+            op_pb: Default::default(),
+            op_qa: Default::default(),
+            op_qb: Default::default(),
             off_x: Default::default(),
             off_y: Default::default(),
+            p58: Default::default(),
+            q58: Default::default(),
+            p56: Default::default(),
+            q56: Default::default(),
             acc_round: Default::default(),
             c_frac: Default::default(),
             z0_plane: Default::default(),
-            prod56: Default::default(),
-            c_plane: Default::default(),
+            raw_now: Default::default(),
             w_minus_1: Constant::new((width as i64 - 1).into()),
             h_minus_1: Constant::new((height as i64 - 1).into()),
             width: Constant::new((width as u64).into()),
@@ -529,16 +670,16 @@ impl Setup {
             k0_36: Constant::new(0.into()),
             k1_36: Constant::new(1.into()),
             k0_17: Constant::new(0.into()),
-            k1_3: Constant::new(1.into()),
+            k0_2: Constant::new(0.into()),
+            k1_2: Constant::new(1.into()),
+            k2_2: Constant::new(2.into()),
+            k3_2: Constant::new(3.into()),
             k0_3: Constant::new(0.into()),
+            k1_3: Constant::new(1.into()),
             k2_3: Constant::new(2.into()),
             k3_3: Constant::new(3.into()),
-            k5_3: Constant::new(5.into()),
-            k6_3: Constant::new(6.into()),
             k4_3: Constant::new(4.into()),
             k0_31: Constant::new(0.into()),
-            k0_70: Constant::new(0.into()),
-            k0_56: Constant::new(0.into()),
             k16_6: Constant::new(16.into()),
             k1s_31: Constant::new(((1u64 << 31) - 1).into()),
             k8_58: Constant::new(8.into()),
@@ -560,149 +701,59 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self, clock, state, phase, kind, r_la, r_lb, r_ra, r_rb, r_tl, r_sx, r_sy, nbx0, nbx1, nby0, nby1, nbox_empty, clear, index, cull, front_cw, vx0, vy0, vz0, vx1, vy1, vz1, vx2, vy2, vz2, det,
-            culled, zero_area, bx0, bx1, by0, by1, addr, e0, e1, e2, sx0, sx1, sx2, sy0, sy1, sy2, na, nb, mant, shamt,
-            prod, grad_a, grad_b, acc, raw, bstate, bphase, b_kind, b_clear, b_index, b_culled, b_zero_area, b_bx0, b_bx1, b_by0, b_by1, b_addr, b_e0, b_e1, b_e2, b_sx0, b_sx1, b_sx2, b_sy0, b_sy1, b_sy2, b_na, b_nb, b_mant, b_shamt, b_vx0, b_vy0, b_vz0
-        );
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s4_v, s4, s5_v, s5_phase, s5, g_prod, s6_v, s6_phase, s6, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_len);
         clock!(self, clock, recip);
 
-        // Vertex differences (current vertex order).
-        self.dx10.next = signed_bit_cast_safe::<17, 16>(self.vx1.q.val()) - signed_bit_cast_safe::<17, 16>(self.vx0.q.val());
-        self.dy10.next = signed_bit_cast_safe::<17, 16>(self.vy1.q.val()) - signed_bit_cast_safe::<17, 16>(self.vy0.q.val());
-        self.dx20.next = signed_bit_cast_safe::<17, 16>(self.vx2.q.val()) - signed_bit_cast_safe::<17, 16>(self.vx0.q.val());
-        self.dy20.next = signed_bit_cast_safe::<17, 16>(self.vy2.q.val()) - signed_bit_cast_safe::<17, 16>(self.vy0.q.val());
-        self.dz10.next = signed_cast(bit_cast::<25, 24>(self.vz1.q.val())) - signed_cast(bit_cast::<25, 24>(self.vz0.q.val()));
-        self.dz20.next = signed_cast(bit_cast::<25, 24>(self.vz2.q.val())) - signed_cast(bit_cast::<25, 24>(self.vz0.q.val()));
-
-        // Edge `phase` (0, 1, 2) runs from vertex a to vertex b.
-        self.ea_x.next = self.vx0.q.val();
-        self.ea_y.next = self.vy0.q.val();
-        self.eb_x.next = self.vx1.q.val();
-        self.eb_y.next = self.vy1.q.val();
-        if self.phase.q.val() == self.k1_3.val() {
-            self.ea_x.next = self.vx1.q.val();
-            self.ea_y.next = self.vy1.q.val();
-            self.eb_x.next = self.vx2.q.val();
-            self.eb_y.next = self.vy2.q.val();
-        }
-        if self.phase.q.val() == self.k2_3.val() {
-            self.ea_x.next = self.vx2.q.val();
-            self.ea_y.next = self.vy2.q.val();
-            self.eb_x.next = self.vx0.q.val();
-            self.eb_y.next = self.vy0.q.val();
-        }
-        self.edx.next = signed_bit_cast_safe::<17, 16>(self.eb_x.val()) - signed_bit_cast_safe::<17, 16>(self.ea_x.val());
-        self.edy.next = signed_bit_cast_safe::<17, 16>(self.eb_y.val()) - signed_bit_cast_safe::<17, 16>(self.ea_y.val());
-        // Pixel centre of the box's first pixel in subpixels, relative to a: 16*X0 + 8 - a.x.
-        self.cx16.next = (bit_cast::<18, 10>(self.bx0.q.val()) << self.k4_6.val()) | self.k8_18.val();
-        self.cy16.next = (bit_cast::<18, 10>(self.by0.q.val()) << self.k4_6.val()) | self.k8_18.val();
-        self.px.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.ea_x.val());
-        self.py.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.ea_y.val());
-        // Top-left rule: a top edge (dy == 0, dx > 0) or a left edge (dy < 0) keeps its centres.
-        self.top_left.next = self.edy.val().get_bit(16)
-            | ((self.edy.val() == self.k0_17.val()) & !self.edx.val().get_bit(16) & (self.edx.val() != self.k0_17.val()));
-        // Steps per pixel: -16*dy in x, 16*dx in y.
-        // Widen in a statement of its own, then shift: `signed_bit_cast_safe` emits `$signed(x)` without
-        // the new width, so inside `$unsigned(...) << 4` the Verilog shifted in 17 bits and lost the top
-        // bits of every step of an edge of 256 px or more (GUIDE §1, rule 1; the RustHDL simulation was
-        // right). tb/tests/rc_verilog.rs replays such edges.
-        self.neg_dy.next = self.k0_17.val() - self.edy.val();
-        self.neg_dy_w.next = signed_bit_cast_safe::<22, 17>(self.neg_dy.val());
-        self.edx_w.next = signed_bit_cast_safe::<22, 17>(self.edx.val());
-        self.step_x.next = signed_cast(unsigned_cast(self.neg_dy_w.val()) << self.k4_6.val());
-        self.step_y.next = signed_cast(unsigned_cast(self.edx_w.val()) << self.k4_6.val());
-
-        // The dot-difference unit: dot = l.a*l.b - r.a*r.b; operands chosen by state and phase.
-        self.op_la.next = signed_bit_cast_safe::<25, 17>(self.dx10.val());
-        self.op_lb.next = signed_bit_cast_safe::<18, 17>(self.dy20.val());
-        self.op_ra.next = signed_bit_cast_safe::<25, 17>(self.dx20.val());
-        self.op_rb.next = signed_bit_cast_safe::<18, 17>(self.dy10.val());
-        // Edge `phase` (0, 1, 2): its operands, fill-rule flag and steps into the r_ registers.
-        self.r_la.d.next = signed_bit_cast_safe::<25, 17>(self.edx.val());
-        self.r_lb.d.next = self.py.val();
-        self.r_ra.d.next = signed_bit_cast_safe::<25, 17>(self.edy.val());
-        self.r_rb.d.next = self.px.val();
-        self.r_tl.d.next = self.top_left.val();
-        self.r_sx.d.next = self.step_x.val();
-        self.r_sy.d.next = self.step_y.val();
-        if self.state.q.val() == SetupState::Edges {
-            if (self.phase.q.val() != self.k0_3.val()) & (self.phase.q.val() < self.k4_3.val()) {
-                self.op_la.next = self.r_la.q.val();
-                self.op_lb.next = self.r_lb.q.val();
-                self.op_ra.next = self.r_ra.q.val();
-                self.op_rb.next = self.r_rb.q.val();
-            }
-            if self.phase.q.val() == self.k4_3.val() {
-                self.op_la.next = self.dz10.val();
-                self.op_lb.next = signed_bit_cast_safe::<18, 17>(self.dy20.val());
-                self.op_ra.next = self.dz20.val();
-                self.op_rb.next = signed_bit_cast_safe::<18, 17>(self.dy10.val());
-            }
-            if self.phase.q.val() == self.k5_3.val() {
-                self.op_la.next = self.dz20.val();
-                self.op_lb.next = signed_bit_cast_safe::<18, 17>(self.dx10.val());
-                self.op_ra.next = self.dz10.val();
-                self.op_rb.next = signed_bit_cast_safe::<18, 17>(self.dx20.val());
-            }
-        }
-        self.dot.next = signed_bit_cast_safe::<44, 43>(self.mul_l.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_r.p.val());
-        self.e_val.next = signed_bit_cast_safe::<36, 44>(self.dot.val()) - self.k1_36.val();
-        if self.r_tl.q.val() {
-            self.e_val.next = signed_bit_cast_safe::<36, 44>(self.dot.val());
-        }
-        self.addr_prod.next = bit_cast::<16, 10>(self.by0.q.val()) * self.width.val();
-
-        // Culling (det > 0 is clockwise on the screen) and the bounding box.
-        self.det_neg.next = self.det.q.val().get_bit(35);
-        self.det_zero.next = self.det.q.val() == self.k0_36.val();
-        self.is_front.next = self.det_neg.val();
-        if self.front_cw.q.val() {
-            self.is_front.next = !self.det_neg.val();
-        }
-        self.culled_now.next = self.det_zero.val()
-            | ((self.cull.q.val() == self.cull_back.val()) & !self.is_front.val())
-            | ((self.cull.q.val() == self.cull_front.val()) & self.is_front.val());
-        self.xmin.next = self.vx0.q.val();
-        self.xmax.next = self.vx0.q.val();
-        self.ymin.next = self.vy0.q.val();
-        self.ymax.next = self.vy0.q.val();
+        // ---- S0 `Det` ----
+        self.v0x.next = signed_cast(self.s0.q.val().x0);
+        self.v0y.next = signed_cast(self.s0.q.val().y0);
+        self.v1x.next = signed_cast(self.s0.q.val().x1);
+        self.v1y.next = signed_cast(self.s0.q.val().y1);
+        self.v2x.next = signed_cast(self.s0.q.val().x2);
+        self.v2y.next = signed_cast(self.s0.q.val().y2);
+        self.dx10.next = signed_bit_cast_safe::<17, 16>(self.v1x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
+        self.dy10.next = signed_bit_cast_safe::<17, 16>(self.v1y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
+        self.dx20.next = signed_bit_cast_safe::<17, 16>(self.v2x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
+        self.dy20.next = signed_bit_cast_safe::<17, 16>(self.v2y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
+        self.mul_d0.a.next = self.dx10.val();
+        self.mul_d0.b.next = self.dy20.val();
+        self.mul_d1.a.next = self.dx20.val();
+        self.mul_d1.b.next = self.dy10.val();
+        self.det.next = signed_bit_cast_safe::<36, 34>(self.mul_d0.p.val()) - signed_bit_cast_safe::<36, 34>(self.mul_d1.p.val());
+        // The bounding box does not depend on the vertex order. Signed compares are slow in
+        // simulation: only evaluated while S0 holds a command.
+        self.xmin.next = self.v0x.val();
+        self.xmax.next = self.v0x.val();
+        self.ymin.next = self.v0y.val();
+        self.ymax.next = self.v0y.val();
         self.lo_x.next = self.k0_17.val();
         self.hi_x.next = self.k0_17.val();
         self.lo_y.next = self.k0_17.val();
         self.hi_y.next = self.k0_17.val();
-        self.box_x0.next = self.k0_13.val();
-        self.box_x1.next = self.k0_13.val();
-        self.box_y0.next = self.k0_13.val();
-        self.box_y1.next = self.k0_13.val();
-        self.box_empty.next = false;
-        // The bounding box does not depend on the vertex order: it is found in `Det`, beside det, and
-        // registered, so that `Order`'s reciprocal request does not wait for min/max, round and clamp.
-        if self.state.q.val() == SetupState::Det {
-            // Signed compares are slow in simulation: only evaluated where needed.
-            if self.vx1.q.val() < self.vx0.q.val() {
-                self.xmin.next = self.vx1.q.val();
+        if self.s0_v.q.val() {
+            if self.v1x.val() < self.v0x.val() {
+                self.xmin.next = self.v1x.val();
             }
-            if (self.vx2.q.val() < self.vx1.q.val()) & (self.vx2.q.val() < self.vx0.q.val()) {
-                self.xmin.next = self.vx2.q.val();
+            if (self.v2x.val() < self.v1x.val()) & (self.v2x.val() < self.v0x.val()) {
+                self.xmin.next = self.v2x.val();
             }
-            if self.vx1.q.val() > self.vx0.q.val() {
-                self.xmax.next = self.vx1.q.val();
+            if self.v1x.val() > self.v0x.val() {
+                self.xmax.next = self.v1x.val();
             }
-            if (self.vx2.q.val() > self.vx1.q.val()) & (self.vx2.q.val() > self.vx0.q.val()) {
-                self.xmax.next = self.vx2.q.val();
+            if (self.v2x.val() > self.v1x.val()) & (self.v2x.val() > self.v0x.val()) {
+                self.xmax.next = self.v2x.val();
             }
-            if self.vy1.q.val() < self.vy0.q.val() {
-                self.ymin.next = self.vy1.q.val();
+            if self.v1y.val() < self.v0y.val() {
+                self.ymin.next = self.v1y.val();
             }
-            if (self.vy2.q.val() < self.vy1.q.val()) & (self.vy2.q.val() < self.vy0.q.val()) {
-                self.ymin.next = self.vy2.q.val();
+            if (self.v2y.val() < self.v1y.val()) & (self.v2y.val() < self.v0y.val()) {
+                self.ymin.next = self.v2y.val();
             }
-            if self.vy1.q.val() > self.vy0.q.val() {
-                self.ymax.next = self.vy1.q.val();
+            if self.v1y.val() > self.v0y.val() {
+                self.ymax.next = self.v1y.val();
             }
-            if (self.vy2.q.val() > self.vy1.q.val()) & (self.vy2.q.val() > self.vy0.q.val()) {
-                self.ymax.next = self.vy2.q.val();
+            if (self.v2y.val() > self.v1y.val()) & (self.v2y.val() > self.v0y.val()) {
+                self.ymax.next = self.v2y.val();
             }
             self.lo_x.next = signed_bit_cast_safe::<17, 16>(self.xmin.val()) + self.k7_17.val();
             self.hi_x.next = signed_bit_cast_safe::<17, 16>(self.xmax.val()) - self.k8_17.val();
@@ -716,7 +767,12 @@ impl Logic for Setup {
         self.hi_y_u.next = unsigned_cast(self.hi_y.val());
         self.box_x1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_x_u.val().get_bits::<13>(4)));
         self.box_y1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_y_u.val().get_bits::<13>(4)));
-        if self.state.q.val() == SetupState::Det {
+        self.box_x0.next = self.k0_13.val();
+        self.box_x1.next = self.k0_13.val();
+        self.box_y0.next = self.k0_13.val();
+        self.box_y1.next = self.k0_13.val();
+        self.box_empty.next = false;
+        if self.s0_v.q.val() {
             // >> 4 (arithmetic), then clamp to the screen.
             self.box_x0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_x_u.val().get_bits::<13>(4)));
             self.box_x1.next = self.box_x1_raw.val();
@@ -740,290 +796,419 @@ impl Logic for Setup {
         self.box_x1_u.next = unsigned_cast(self.box_x1.val());
         self.box_y0_u.next = unsigned_cast(self.box_y0.val());
         self.box_y1_u.next = unsigned_cast(self.box_y1.val());
-        self.prod_u.next = self.prod.q.val();
 
-        // Plane gradient from the product register: sat40((prod + 2^(sh-1)) >> sh), sh = shift + 4.
-        self.round_half.next = self.k8_70.val() << self.b_shamt.q.val();
-        self.rounded.next = self.prod.q.val() + self.round_half.val();
-        self.shifted.next = self.k0_70.val();
-        self.grad_hi.next = self.k0_31.val();
-        self.grad.next = self.min40.val();
-        self.off_x.next = self.k0_17.val();
-        self.off_y.next = self.k0_17.val();
-        self.acc_round.next = self.k8_58.val();
-        self.c_frac.next = self.k0_56.val();
-        self.z0_plane.next = self.k0_56.val();
-        self.prod56.next = self.k0_56.val();
-        self.c_plane.next = self.k0_56.val();
-        if self.bstate.q.val() == PlaneState::Plane {
-            self.shifted.next = (self.rounded.val() >> self.b_shamt.q.val()) >> self.k4_6.val();
-            if self.rounded.val().get_bit(69) {
-                // arithmetic shift of a negative value: complement, shift, complement
-                self.shifted.next = !((!self.rounded.val() >> self.b_shamt.q.val()) >> self.k4_6.val());
+        // ---- S1 `Order` ----
+        self.is_tri.next = self.s1.q.val().kind == self.kind_tri.val();
+        self.det_neg.next = self.s1_det.q.val().get_bit(35);
+        self.det_zero.next = self.s1_det.q.val() == self.k0_36.val();
+        self.is_front.next = self.det_neg.val();
+        if self.s1.q.val().front_cw {
+            self.is_front.next = !self.det_neg.val();
+        }
+        self.culled_now.next = self.det_zero.val()
+            | ((self.s1.q.val().cull == self.cull_back.val()) & !self.is_front.val())
+            | ((self.s1.q.val().cull == self.cull_front.val()) & self.is_front.val());
+        self.walk1.next = self.is_tri.val() & !self.culled_now.val() & !self.s1_box_empty.q.val();
+        self.rkind.next = self.rec_frame.val();
+        if self.s1.q.val().kind == self.kind_eof.val() {
+            self.rkind.next = self.rec_eof.val();
+        }
+        if self.is_tri.val() {
+            self.rkind.next = self.rec_skip.val();
+            if self.walk1.val() {
+                self.rkind.next = self.rec_walk.val();
             }
-            self.grad_hi.next = self.shifted.val().get_bits::<31>(39);
-            if (self.grad_hi.val() == self.k0_31.val()) | (self.grad_hi.val() == self.k1s_31.val()) {
-                self.grad.next = signed_cast(self.shifted.val().get_bits::<40>(0));
-            } else if !self.rounded.val().get_bit(69) {
-                self.grad.next = self.max40.val();
-            }
-            self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(self.b_vx0.q.val());
-            self.off_y.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(self.b_vy0.q.val());
-            // C = (z0 << 16) + round(acc >> 4): never saturates (see the module doc).
-            self.acc_round.next = unsigned_cast(self.acc.q.val()) + self.k8_58.val();
-            self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(4)));
-            self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.b_vz0.q.val()) << self.k16_6.val());
-            self.prod56.next = signed_cast(self.prod_u.val().get_bits::<56>(0));
-            self.c_plane.next = self.z0_plane.val() + self.c_frac.val();
         }
-        // The plane multiplier's operands by phase.
-        self.op_wa.next = self.b_na.q.val();
-        self.op_wb.next = signed_cast(bit_cast::<26, 25>(self.b_mant.q.val()));
-        if self.bphase.q.val() == self.k1_3.val() {
-            self.op_wa.next = self.b_nb.q.val();
-        }
-        if self.bphase.q.val() == self.k2_3.val() {
-            self.op_wa.next = signed_bit_cast_safe::<44, 40>(self.grad_a.q.val());
-            self.op_wb.next = signed_bit_cast_safe::<26, 17>(self.off_x.val());
-        }
-        if self.bphase.q.val() == self.k3_3.val() {
-            self.op_wa.next = signed_bit_cast_safe::<44, 40>(self.grad_b.q.val());
-            self.op_wb.next = signed_bit_cast_safe::<26, 17>(self.off_y.val());
-        }
-        if self.bphase.q.val() == self.k4_3.val() {
-            self.op_wa.next = signed_bit_cast_safe::<44, 40>(self.grad_a.q.val());
-            self.op_wb.next = signed_cast(bit_cast::<26, 10>(self.b_bx0.q.val()));
-        }
-        if self.bphase.q.val() == self.k5_3.val() {
-            self.op_wa.next = signed_bit_cast_safe::<44, 40>(self.grad_b.q.val());
-            self.op_wb.next = signed_cast(bit_cast::<26, 10>(self.b_by0.q.val()));
-        }
-
-        // Each multiplier input is driven exactly once per evaluation: an event-driven simulator
-        // (Icarus) would otherwise see the default value first, re-evaluate the product, re-run this
-        // block, and never settle.
-        self.mul_l.a.next = self.op_la.val();
-        self.mul_l.b.next = self.op_lb.val();
-        self.mul_r.a.next = self.op_ra.val();
-        self.mul_r.b.next = self.op_rb.val();
-        self.mul_w.a.next = self.op_wa.val();
-        self.mul_w.b.next = self.op_wb.val();
-        // The reciprocal of |det|.
-        self.det_abs.next = unsigned_cast(self.det.q.val());
+        // Canonical order: vertices 1 and 2 swapped where det < 0.
+        self.cx0.next = signed_cast(self.s1.q.val().x0);
+        self.cy0.next = signed_cast(self.s1.q.val().y0);
+        self.cz0.next = self.s1.q.val().z0;
+        self.cx1.next = signed_cast(self.s1.q.val().x1);
+        self.cy1.next = signed_cast(self.s1.q.val().y1);
+        self.cz1.next = self.s1.q.val().z1;
+        self.cx2.next = signed_cast(self.s1.q.val().x2);
+        self.cy2.next = signed_cast(self.s1.q.val().y2);
+        self.cz2.next = self.s1.q.val().z2;
         if self.det_neg.val() {
-            self.det_abs.next = unsigned_cast(self.k0_36.val() - self.det.q.val());
+            self.cx1.next = signed_cast(self.s1.q.val().x2);
+            self.cy1.next = signed_cast(self.s1.q.val().y2);
+            self.cz1.next = self.s1.q.val().z2;
+            self.cx2.next = signed_cast(self.s1.q.val().x1);
+            self.cy2.next = signed_cast(self.s1.q.val().y1);
+            self.cz2.next = self.s1.q.val().z1;
+        }
+        self.cdx10.next = signed_bit_cast_safe::<17, 16>(self.cx1.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
+        self.cdy10.next = signed_bit_cast_safe::<17, 16>(self.cy1.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
+        self.cdx20.next = signed_bit_cast_safe::<17, 16>(self.cx2.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
+        self.cdy20.next = signed_bit_cast_safe::<17, 16>(self.cy2.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
+        self.cdz10.next = signed_cast(bit_cast::<25, 24>(self.cz1.val())) - signed_cast(bit_cast::<25, 24>(self.cz0.val()));
+        self.cdz20.next = signed_cast(bit_cast::<25, 24>(self.cz2.val())) - signed_cast(bit_cast::<25, 24>(self.cz0.val()));
+        // Pixel centre of the box's first pixel in subpixels: 16*X0 + 8.
+        self.cx16.next = (bit_cast::<18, 10>(self.s1_bx0.q.val()) << self.k4_6.val()) | self.k8_18.val();
+        self.cy16.next = (bit_cast::<18, 10>(self.s1_by0.q.val()) << self.k4_6.val()) | self.k8_18.val();
+        self.addr_prod.next = bit_cast::<16, 10>(self.s1_by0.q.val()) * self.width.val();
+        // Edge 0: from (cx0, cy0) to (cx1, cy1).
+        self.edx_0.next = signed_bit_cast_safe::<17, 16>(self.cx1.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
+        self.edy_0.next = signed_bit_cast_safe::<17, 16>(self.cy1.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
+        self.px_0.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx0.val());
+        self.py_0.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy0.val());
+        self.tl_0.next = self.edy_0.val().get_bit(16)
+            | ((self.edy_0.val() == self.k0_17.val()) & !self.edx_0.val().get_bit(16) & (self.edx_0.val() != self.k0_17.val()));
+        self.negdy_0.next = self.k0_17.val() - self.edy_0.val();
+        self.negdyw_0.next = signed_bit_cast_safe::<22, 17>(self.negdy_0.val());
+        self.edxw_0.next = signed_bit_cast_safe::<22, 17>(self.edx_0.val());
+        self.stx_0.next = signed_cast(unsigned_cast(self.negdyw_0.val()) << self.k4_6.val());
+        self.sty_0.next = signed_cast(unsigned_cast(self.edxw_0.val()) << self.k4_6.val());
+        // Edge 1: from (cx1, cy1) to (cx2, cy2).
+        self.edx_1.next = signed_bit_cast_safe::<17, 16>(self.cx2.val()) - signed_bit_cast_safe::<17, 16>(self.cx1.val());
+        self.edy_1.next = signed_bit_cast_safe::<17, 16>(self.cy2.val()) - signed_bit_cast_safe::<17, 16>(self.cy1.val());
+        self.px_1.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx1.val());
+        self.py_1.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy1.val());
+        self.tl_1.next = self.edy_1.val().get_bit(16)
+            | ((self.edy_1.val() == self.k0_17.val()) & !self.edx_1.val().get_bit(16) & (self.edx_1.val() != self.k0_17.val()));
+        self.negdy_1.next = self.k0_17.val() - self.edy_1.val();
+        self.negdyw_1.next = signed_bit_cast_safe::<22, 17>(self.negdy_1.val());
+        self.edxw_1.next = signed_bit_cast_safe::<22, 17>(self.edx_1.val());
+        self.stx_1.next = signed_cast(unsigned_cast(self.negdyw_1.val()) << self.k4_6.val());
+        self.sty_1.next = signed_cast(unsigned_cast(self.edxw_1.val()) << self.k4_6.val());
+        // Edge 2: from (cx2, cy2) to (cx0, cy0).
+        self.edx_2.next = signed_bit_cast_safe::<17, 16>(self.cx0.val()) - signed_bit_cast_safe::<17, 16>(self.cx2.val());
+        self.edy_2.next = signed_bit_cast_safe::<17, 16>(self.cy0.val()) - signed_bit_cast_safe::<17, 16>(self.cy2.val());
+        self.px_2.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx2.val());
+        self.py_2.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy2.val());
+        self.tl_2.next = self.edy_2.val().get_bit(16)
+            | ((self.edy_2.val() == self.k0_17.val()) & !self.edx_2.val().get_bit(16) & (self.edx_2.val() != self.k0_17.val()));
+        self.negdy_2.next = self.k0_17.val() - self.edy_2.val();
+        self.negdyw_2.next = signed_bit_cast_safe::<22, 17>(self.negdy_2.val());
+        self.edxw_2.next = signed_bit_cast_safe::<22, 17>(self.edx_2.val());
+        self.stx_2.next = signed_cast(unsigned_cast(self.negdyw_2.val()) << self.k4_6.val());
+        self.sty_2.next = signed_cast(unsigned_cast(self.edxw_2.val()) << self.k4_6.val());
+        // ---- The handshake, last stage first ----
+        self.walk2.next = self.s2.q.val().kind == self.rec_walk.val();
+        self.walk5.next = self.s5.q.val().kind == self.rec_walk.val();
+        self.walk6.next = self.s6.q.val().kind == self.rec_walk.val();
+        self.done2.next = self.s2_v.q.val() & (!self.walk2.val() | (self.s2_phase.q.val() == self.k2_2.val()));
+        self.done5.next = self.s5_v.q.val() & (!self.walk5.val() | (self.s5_phase.q.val() == self.k2_2.val()));
+        self.done6.next = self.s6_v.q.val() & (!self.walk6.val() | (self.s6_phase.q.val() == self.k3_2.val()));
+        self.take.next = self.recip.result.valid.val() & self.s5_v.q.val() & self.walk5.val() & (self.s5_phase.q.val() == self.k0_2.val());
+        self.leave6.next = self.done6.val() & (self.q_len.q.val() < self.k4_3.val());
+        self.free6.next = !self.s6_v.q.val() | self.leave6.val();
+        self.leave5.next = self.done5.val() & self.free6.val();
+        self.free5.next = !self.s5_v.q.val() | self.leave5.val();
+        self.leave4.next = self.s4_v.q.val() & self.free5.val();
+        self.free4.next = !self.s4_v.q.val() | self.leave4.val();
+        self.leave3.next = self.s3_v.q.val() & self.free4.val();
+        self.free3.next = !self.s3_v.q.val() | self.leave3.val();
+        self.leave2.next = self.done2.val() & self.free3.val();
+        self.free2.next = !self.s2_v.q.val() | self.leave2.val();
+        // S1 hands a drawn triangle on only when the reciprocal takes its request.
+        self.leave1.next = self.s1_v.q.val() & self.free2.val() & (!self.walk1.val() | self.recip.request.ready.val());
+        self.free1.next = !self.s1_v.q.val() | self.leave1.val();
+        self.leave0.next = self.s0_v.q.val() & self.free1.val();
+        self.cmd.ready.next = !self.s0_v.q.val() | self.leave0.val();
+
+        // The reciprocal of abs(det), requested when S1 holds a drawn triangle that S2 can take.
+        self.det_abs.next = unsigned_cast(self.s1_det.q.val());
+        if self.det_neg.val() {
+            self.det_abs.next = unsigned_cast(self.k0_36.val() - self.s1_det.q.val());
         }
         self.recip.request.data.next = self.det_abs.val();
-        self.recip.result.ready.next = self.state.q.val() == SetupState::WaitRecip;
-        // Started in Order exactly when the triangle is drawn (not culled, box not empty).
-        self.recip.request.valid.next = (self.state.q.val() == SetupState::Order) & !self.culled_now.val() & !self.nbox_empty.q.val();
+        self.recip.request.valid.next = self.s1_v.q.val() & self.walk1.val() & self.free2.val();
+        self.recip.result.ready.next = self.take.val();
 
-        // Ports.
-        self.cmd.ready.next = self.state.q.val() == SetupState::Idle;
-        self.rec_valid.next = self.bstate.q.val() == PlaneState::Out;
-        self.rec_kind.next = self.b_kind.q.val();
-        self.rec_clear.next = self.b_clear.q.val();
-        self.rec_index.next = self.b_index.q.val();
-        self.rec_culled.next = self.b_culled.q.val();
-        self.rec_zero_area.next = self.b_zero_area.q.val();
-        self.rec_bx0.next = self.b_bx0.q.val();
-        self.rec_bx1.next = self.b_bx1.q.val();
-        self.rec_by0.next = self.b_by0.q.val();
-        self.rec_by1.next = self.b_by1.q.val();
-        self.rec_addr.next = self.b_addr.q.val();
-        self.rec_e0.next = self.b_e0.q.val();
-        self.rec_e1.next = self.b_e1.q.val();
-        self.rec_e2.next = self.b_e2.q.val();
-        self.rec_sx0.next = self.b_sx0.q.val();
-        self.rec_sx1.next = self.b_sx1.q.val();
-        self.rec_sx2.next = self.b_sx2.q.val();
-        self.rec_sy0.next = self.b_sy0.q.val();
-        self.rec_sy1.next = self.b_sy1.q.val();
-        self.rec_sy2.next = self.b_sy2.q.val();
-        self.rec_raw.next = self.raw.q.val();
-        self.rec_a.next = self.grad_a.q.val();
-        self.rec_b.next = self.grad_b.q.val();
+        // ---- S2 `Edges`: two dot units ----
+        self.op_a0.next = self.la0.q.val();
+        self.op_a1.next = self.lb0.q.val();
+        self.op_a2.next = self.ra0.q.val();
+        self.op_a3.next = self.rb0.q.val();
+        self.tl_a.next = self.tl0.q.val();
+        self.op_b0.next = self.la1.q.val();
+        self.op_b1.next = self.lb1.q.val();
+        self.op_b2.next = self.ra1.q.val();
+        self.op_b3.next = self.rb1.q.val();
+        self.tl_b.next = self.tl1.q.val();
+        if self.s2_phase.q.val() != self.k0_2.val() {
+            self.op_a0.next = self.la2.q.val();
+            self.op_a1.next = self.lb2.q.val();
+            self.op_a2.next = self.ra2.q.val();
+            self.op_a3.next = self.rb2.q.val();
+            self.tl_a.next = self.tl2.q.val();
+            // na = dz10*dy20 - dz20*dy10
+            self.op_b0.next = self.n_dz10.q.val();
+            self.op_b1.next = self.n_dy20.q.val();
+            self.op_b2.next = self.n_dz20.q.val();
+            self.op_b3.next = self.n_dy10.q.val();
+        }
+        if self.s2_phase.q.val() == self.k2_2.val() {
+            // nb = dz20*dx10 - dz10*dx20
+            self.op_b0.next = self.n_dz20.q.val();
+            self.op_b1.next = self.n_dx10.q.val();
+            self.op_b2.next = self.n_dz10.q.val();
+            self.op_b3.next = self.n_dx20.q.val();
+        }
+        // Each multiplier input is driven exactly once per evaluation (Icarus settles only then).
+        self.mul_a0.a.next = self.op_a0.val();
+        self.mul_a0.b.next = self.op_a1.val();
+        self.mul_a1.a.next = self.op_a2.val();
+        self.mul_a1.b.next = self.op_a3.val();
+        self.mul_b0.a.next = self.op_b0.val();
+        self.mul_b0.b.next = self.op_b1.val();
+        self.mul_b1.a.next = self.op_b2.val();
+        self.mul_b1.b.next = self.op_b3.val();
+        self.dot_a.next = signed_bit_cast_safe::<44, 43>(self.mul_a0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_a1.p.val());
+        self.dot_b.next = signed_bit_cast_safe::<44, 43>(self.mul_b0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_b1.p.val());
+        self.e_a.next = signed_bit_cast_safe::<36, 44>(self.dot_a.val()) - self.k1_36.val();
+        if self.tl_a.val() {
+            self.e_a.next = signed_bit_cast_safe::<36, 44>(self.dot_a.val());
+        }
+        self.e_b.next = signed_bit_cast_safe::<36, 44>(self.dot_b.val()) - self.k1_36.val();
+        if self.tl_b.val() {
+            self.e_b.next = signed_bit_cast_safe::<36, 44>(self.dot_b.val());
+        }
 
-        match self.state.q.val() {
-            SetupState::Idle => {
-                if self.cmd.valid.val() {
-                    self.kind.d.next = self.rec_frame.val();
-                    self.culled.d.next = false;
-                    self.zero_area.d.next = false;
-                    self.clear.d.next = self.cmd.data.val().clear;
-                    self.index.d.next = self.cmd.data.val().index;
-                    self.cull.d.next = self.cmd.data.val().cull;
-                    self.front_cw.d.next = self.cmd.data.val().front_cw;
-                    self.vx0.d.next = signed_cast(self.cmd.data.val().x0);
-                    self.vy0.d.next = signed_cast(self.cmd.data.val().y0);
-                    self.vz0.d.next = self.cmd.data.val().z0;
-                    self.vx1.d.next = signed_cast(self.cmd.data.val().x1);
-                    self.vy1.d.next = signed_cast(self.cmd.data.val().y1);
-                    self.vz1.d.next = self.cmd.data.val().z1;
-                    self.vx2.d.next = signed_cast(self.cmd.data.val().x2);
-                    self.vy2.d.next = signed_cast(self.cmd.data.val().y2);
-                    self.vz2.d.next = self.cmd.data.val().z2;
-                    self.phase.d.next = self.k0_3.val();
-                    self.state.d.next = SetupState::Hand;
-                    if self.cmd.data.val().kind == self.kind_tri.val() {
-                        self.state.d.next = SetupState::Det;
-                    }
-                    if self.cmd.data.val().kind == self.kind_eof.val() {
-                        self.kind.d.next = self.rec_eof.val();
-                    }
-                    if self.cmd.data.val().kind != self.kind_frame.val() {
-                        self.clear.d.next = false;
-                    }
-                }
+        // ---- S5 `Grad`: one 44x26 multiplier ----
+        self.op_ga.next = signed_cast(self.s5.q.val().na);
+        self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.recip.result.data.val().mant));
+        if self.s5_phase.q.val() != self.k0_2.val() {
+            self.op_ga.next = signed_cast(self.s5.q.val().nb);
+            self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.s5.q.val().mant));
+        }
+        self.mul_g.a.next = self.op_ga.val();
+        self.mul_g.b.next = self.op_gb.val();
+        // The gradient from the product register: sat40((prod + 2^(sh-1)) >> sh), sh = shift + 4.
+        self.round_half.next = self.k8_70.val() << self.s5.q.val().shift;
+        self.rounded.next = self.g_prod.q.val() + self.round_half.val();
+        self.shifted.next = (self.rounded.val() >> self.s5.q.val().shift) >> self.k4_6.val();
+        if self.rounded.val().get_bit(69) {
+            // arithmetic shift of a negative value: complement, shift, complement
+            self.shifted.next = !((!self.rounded.val() >> self.s5.q.val().shift) >> self.k4_6.val());
+        }
+        self.grad_hi.next = self.shifted.val().get_bits::<31>(39);
+        self.grad.next = self.min40.val();
+        if (self.grad_hi.val() == self.k0_31.val()) | (self.grad_hi.val() == self.k1s_31.val()) {
+            self.grad.next = signed_cast(self.shifted.val().get_bits::<40>(0));
+        } else if !self.rounded.val().get_bit(69) {
+            self.grad.next = self.max40.val();
+        }
+
+        // ---- S6 `Plane`: two 44x26 multipliers ----
+        self.ga.next = signed_cast(self.s6.q.val().a);
+        self.gb.next = signed_cast(self.s6.q.val().b);
+        self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().x0));
+        self.off_y.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().y0));
+        self.op_pa.next = signed_bit_cast_safe::<44, 40>(self.ga.val());
+        self.op_qa.next = signed_bit_cast_safe::<44, 40>(self.gb.val());
+        self.op_pb.next = signed_bit_cast_safe::<26, 17>(self.off_x.val());
+        self.op_qb.next = signed_bit_cast_safe::<26, 17>(self.off_y.val());
+        if self.s6_phase.q.val() != self.k0_2.val() {
+            self.op_pb.next = signed_cast(bit_cast::<26, 10>(self.s6.q.val().bx0));
+            self.op_qb.next = signed_cast(bit_cast::<26, 10>(self.s6.q.val().by0));
+        }
+        self.mul_p.a.next = self.op_pa.val();
+        self.mul_p.b.next = self.op_pb.val();
+        self.mul_q.a.next = self.op_qa.val();
+        self.mul_q.b.next = self.op_qb.val();
+        self.p58.next = signed_cast(self.p_prod.q.val().get_bits::<58>(0));
+        self.q58.next = signed_cast(self.q_prod.q.val().get_bits::<58>(0));
+        self.p56.next = signed_cast(self.p_prod.q.val().get_bits::<56>(0));
+        self.q56.next = signed_cast(self.q_prod.q.val().get_bits::<56>(0));
+        // C = (z0 << 16) + round(acc >> 4): never saturates (see the module doc).
+        self.acc_round.next = unsigned_cast(self.p_acc.q.val()) + self.k8_58.val();
+        self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(4)));
+        self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s6.q.val().z0) << self.k16_6.val());
+        self.raw_now.next = self.p_c.q.val() + self.p_s.q.val();
+
+        // ---- The record queue ----
+        self.pop.next = self.rec_ready.val() & (self.q_len.q.val() != self.k0_3.val());
+        self.q_after.next = self.q_len.q.val();
+        if self.pop.val() {
+            self.q_after.next = self.q_len.q.val() - self.k1_3.val();
+            self.q0.d.next = self.q1.q.val();
+            self.q1.d.next = self.q2.q.val();
+            self.q2.d.next = self.q3.q.val();
+        }
+        self.pushed.next = self.s6.q.val();
+        self.pushed.next.raw = unsigned_cast(self.raw_now.val());
+        self.q_len.d.next = self.q_after.val();
+        if self.leave6.val() {
+            self.q_len.d.next = self.q_after.val() + self.k1_3.val();
+            if self.q_after.val() == self.k0_3.val() {
+                self.q0.d.next = self.pushed.val();
             }
-            SetupState::Det => {
-                self.det.d.next = signed_bit_cast_safe::<36, 44>(self.dot.val());
-                self.nbx0.d.next = self.box_x0_u.val().get_bits::<10>(0);
-                self.nbx1.d.next = self.box_x1_u.val().get_bits::<10>(0);
-                self.nby0.d.next = self.box_y0_u.val().get_bits::<10>(0);
-                self.nby1.d.next = self.box_y1_u.val().get_bits::<10>(0);
-                self.nbox_empty.d.next = self.box_empty.val();
-                self.state.d.next = SetupState::Order;
+            if self.q_after.val() == self.k1_3.val() {
+                self.q1.d.next = self.pushed.val();
             }
-            SetupState::Order => {
-                self.kind.d.next = self.rec_skip.val();
-                self.culled.d.next = self.culled_now.val();
-                self.zero_area.d.next = self.det_zero.val();
-                self.state.d.next = SetupState::Hand;
-                if !self.culled_now.val() {
-                    if self.det_neg.val() {
-                        self.vx1.d.next = self.vx2.q.val();
-                        self.vy1.d.next = self.vy2.q.val();
-                        self.vz1.d.next = self.vz2.q.val();
-                        self.vx2.d.next = self.vx1.q.val();
-                        self.vy2.d.next = self.vy1.q.val();
-                        self.vz2.d.next = self.vz1.q.val();
-                    }
-                    self.bx0.d.next = self.nbx0.q.val();
-                    self.bx1.d.next = self.nbx1.q.val();
-                    self.by0.d.next = self.nby0.q.val();
-                    self.by1.d.next = self.nby1.q.val();
-                    if !self.nbox_empty.q.val() {
-                        self.kind.d.next = self.rec_walk.val();
-                        self.state.d.next = SetupState::Edges;
-                    }
-                }
+            if self.q_after.val() == self.k2_3.val() {
+                self.q2.d.next = self.pushed.val();
             }
-            SetupState::Edges => {
-                // Phase p < 3 finds edge p's operands; phase p + 1 multiplies them: edges in 1..=3,
-                // the depth numerators in 4 and 5 (all while the reciprocal runs).
-                self.phase.d.next = self.phase.q.val() + self.k1_3.val();
-                if self.phase.q.val() == self.k0_3.val() {
-                    self.addr.d.next = self.addr_prod.val().get_bits::<20>(0) + bit_cast::<20, 10>(self.bx0.q.val());
-                }
-                if self.phase.q.val() == self.k1_3.val() {
-                    self.e0.d.next = self.e_val.val();
-                    self.sx0.d.next = self.r_sx.q.val();
-                    self.sy0.d.next = self.r_sy.q.val();
-                }
-                if self.phase.q.val() == self.k2_3.val() {
-                    self.e1.d.next = self.e_val.val();
-                    self.sx1.d.next = self.r_sx.q.val();
-                    self.sy1.d.next = self.r_sy.q.val();
-                }
-                if self.phase.q.val() == self.k3_3.val() {
-                    self.e2.d.next = self.e_val.val();
-                    self.sx2.d.next = self.r_sx.q.val();
-                    self.sy2.d.next = self.r_sy.q.val();
-                }
-                if self.phase.q.val() == self.k4_3.val() {
-                    self.na.d.next = self.dot.val();
-                }
-                if self.phase.q.val() == self.k5_3.val() {
-                    self.nb.d.next = self.dot.val();
-                    self.state.d.next = SetupState::WaitRecip;
-                }
-            }
-            SetupState::WaitRecip => {
-                if self.recip.result.valid.val() {
-                    self.mant.d.next = self.recip.result.data.val().mant;
-                    self.shamt.d.next = self.recip.result.data.val().shift;
-                    self.state.d.next = SetupState::Hand;
-                }
-            }
-            SetupState::Hand => {
-                // The record moves to the second stage when that is empty in this cycle.
-                if self.bstate.q.val() == PlaneState::Empty {
-                    self.b_kind.d.next = self.kind.q.val();
-                    self.b_clear.d.next = self.clear.q.val();
-                    self.b_index.d.next = self.index.q.val();
-                    self.b_culled.d.next = self.culled.q.val();
-                    self.b_zero_area.d.next = self.zero_area.q.val();
-                    self.b_bx0.d.next = self.bx0.q.val();
-                    self.b_bx1.d.next = self.bx1.q.val();
-                    self.b_by0.d.next = self.by0.q.val();
-                    self.b_by1.d.next = self.by1.q.val();
-                    self.b_addr.d.next = self.addr.q.val();
-                    self.b_e0.d.next = self.e0.q.val();
-                    self.b_e1.d.next = self.e1.q.val();
-                    self.b_e2.d.next = self.e2.q.val();
-                    self.b_sx0.d.next = self.sx0.q.val();
-                    self.b_sx1.d.next = self.sx1.q.val();
-                    self.b_sx2.d.next = self.sx2.q.val();
-                    self.b_sy0.d.next = self.sy0.q.val();
-                    self.b_sy1.d.next = self.sy1.q.val();
-                    self.b_sy2.d.next = self.sy2.q.val();
-                    self.b_na.d.next = self.na.q.val();
-                    self.b_nb.d.next = self.nb.q.val();
-                    self.b_mant.d.next = self.mant.q.val();
-                    self.b_shamt.d.next = self.shamt.q.val();
-                    self.b_vx0.d.next = self.vx0.q.val();
-                    self.b_vy0.d.next = self.vy0.q.val();
-                    self.b_vz0.d.next = self.vz0.q.val();
-                    self.bphase.d.next = self.k0_3.val();
-                    self.bstate.d.next = PlaneState::Out;
-                    if self.kind.q.val() == self.rec_walk.val() {
-                        self.bstate.d.next = PlaneState::Plane;
-                    }
-                    self.state.d.next = SetupState::Idle;
-                }
-            }
-            _ => {
-                self.state.d.next = SetupState::Idle;
+            if self.q_after.val() == self.k3_3.val() {
+                self.q3.d.next = self.pushed.val();
             }
         }
-        // The second stage.
-        match self.bstate.q.val() {
-            PlaneState::Empty => {}
-            PlaneState::Plane => {
-                // One product per phase into `prod`, each used in the next phase (the product and the
-                // sum behind it are never one clock period): A and B in phases 1, 2; C's two terms
-                // in 3, 4; raw's two terms in 5, 6.
-                self.bphase.d.next = self.bphase.q.val() + self.k1_3.val();
-                self.prod.d.next = unsigned_cast(self.mul_w.p.val());
-                if self.bphase.q.val() == self.k1_3.val() {
-                    self.grad_a.d.next = self.grad.val();
-                }
-                if self.bphase.q.val() == self.k2_3.val() {
-                    self.grad_b.d.next = self.grad.val();
-                }
-                if self.bphase.q.val() == self.k3_3.val() {
-                    self.acc.d.next = signed_cast(self.prod_u.val().get_bits::<58>(0));
-                }
-                if self.bphase.q.val() == self.k4_3.val() {
-                    self.acc.d.next = self.acc.q.val() + signed_cast(self.prod_u.val().get_bits::<58>(0));
-                }
-                if self.bphase.q.val() == self.k5_3.val() {
-                    self.raw.d.next = self.c_plane.val() + self.prod56.val();
-                }
-                if self.bphase.q.val() == self.k6_3.val() {
-                    self.raw.d.next = self.raw.q.val() + self.prod56.val();
-                    self.bstate.d.next = PlaneState::Out;
-                }
+        self.rec_valid.next = self.q_len.q.val() != self.k0_3.val();
+        self.rec_kind.next = self.q0.q.val().kind;
+        self.rec_clear.next = self.q0.q.val().clear;
+        self.rec_index.next = self.q0.q.val().index;
+        self.rec_culled.next = self.q0.q.val().culled;
+        self.rec_zero_area.next = self.q0.q.val().zero_area;
+        self.rec_bx0.next = self.q0.q.val().bx0;
+        self.rec_bx1.next = self.q0.q.val().bx1;
+        self.rec_by0.next = self.q0.q.val().by0;
+        self.rec_by1.next = self.q0.q.val().by1;
+        self.rec_addr.next = self.q0.q.val().addr;
+        self.rec_e0.next = signed_cast(self.q0.q.val().e0);
+        self.rec_e1.next = signed_cast(self.q0.q.val().e1);
+        self.rec_e2.next = signed_cast(self.q0.q.val().e2);
+        self.rec_sx0.next = signed_cast(self.q0.q.val().sx0);
+        self.rec_sx1.next = signed_cast(self.q0.q.val().sx1);
+        self.rec_sx2.next = signed_cast(self.q0.q.val().sx2);
+        self.rec_sy0.next = signed_cast(self.q0.q.val().sy0);
+        self.rec_sy1.next = signed_cast(self.q0.q.val().sy1);
+        self.rec_sy2.next = signed_cast(self.q0.q.val().sy2);
+        self.rec_raw.next = signed_cast(self.q0.q.val().raw);
+        self.rec_a.next = signed_cast(self.q0.q.val().a);
+        self.rec_b.next = signed_cast(self.q0.q.val().b);
+
+        // ---- The stages' registers at the edge, last first ----
+        // S6: phase 0 the products of C's terms; 1 their sum and those of raw's; 2 C and raw's sum.
+        if self.s6_v.q.val() & self.walk6.val() & !self.done6.val() {
+            self.s6_phase.d.next = self.s6_phase.q.val() + self.k1_2.val();
+            self.p_prod.d.next = unsigned_cast(self.mul_p.p.val());
+            self.q_prod.d.next = unsigned_cast(self.mul_q.p.val());
+            if self.s6_phase.q.val() == self.k1_2.val() {
+                self.p_acc.d.next = self.p58.val() + self.q58.val();
             }
-            PlaneState::Out => {
-                if self.rec_ready.val() {
-                    self.bstate.d.next = PlaneState::Empty;
+            if self.s6_phase.q.val() == self.k2_2.val() {
+                self.p_c.d.next = self.z0_plane.val() + self.c_frac.val();
+                self.p_s.d.next = self.p56.val() + self.q56.val();
+            }
+        }
+        if self.leave6.val() {
+            self.s6_v.d.next = false;
+        }
+        if self.leave5.val() {
+            self.s6_v.d.next = true;
+            self.s6_phase.d.next = self.k0_2.val();
+            self.s6.d.next = self.s5.q.val();
+            self.s6.d.next.b = unsigned_cast(self.grad.val());
+        }
+        // S5: phase 0 takes the reciprocal and forms na*mant; phase 1 A and nb*mant; B on leaving.
+        if self.s5_v.q.val() & self.walk5.val() & !self.done5.val() {
+            if self.s5_phase.q.val() == self.k0_2.val() {
+                if self.take.val() {
+                    self.s5_phase.d.next = self.k1_2.val();
+                    self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
+                    self.s5.d.next.mant = self.recip.result.data.val().mant;
+                    self.s5.d.next.shift = self.recip.result.data.val().shift;
                 }
+            } else {
+                self.s5_phase.d.next = self.k2_2.val();
+                self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
+                self.s5.d.next.a = unsigned_cast(self.grad.val());
             }
-            _ => {
-                self.bstate.d.next = PlaneState::Empty;
+        }
+        if self.leave5.val() {
+            self.s5_v.d.next = false;
+        }
+        if self.leave4.val() {
+            self.s5_v.d.next = true;
+            self.s5_phase.d.next = self.k0_2.val();
+            self.s5.d.next = self.s4.q.val();
+        }
+        // S4, S3: hold.
+        if self.leave4.val() {
+            self.s4_v.d.next = false;
+        }
+        if self.leave3.val() {
+            self.s4_v.d.next = true;
+            self.s4.d.next = self.s3.q.val();
+        }
+        if self.leave3.val() {
+            self.s3_v.d.next = false;
+        }
+        if self.leave2.val() {
+            self.s3_v.d.next = true;
+            self.s3.d.next = self.s2.q.val();
+            self.s3.d.next.nb = unsigned_cast(self.dot_b.val());
+        }
+        // S2: phase 0 E0, E1; phase 1 E2, na; nb on leaving.
+        if self.s2_v.q.val() & self.walk2.val() & !self.done2.val() {
+            self.s2_phase.d.next = self.s2_phase.q.val() + self.k1_2.val();
+            if self.s2_phase.q.val() == self.k0_2.val() {
+                self.s2.d.next.e0 = unsigned_cast(self.e_a.val());
+                self.s2.d.next.e1 = unsigned_cast(self.e_b.val());
+            } else {
+                self.s2.d.next.e2 = unsigned_cast(self.e_a.val());
+                self.s2.d.next.na = unsigned_cast(self.dot_b.val());
             }
+        }
+        if self.leave2.val() {
+            self.s2_v.d.next = false;
+        }
+        if self.leave1.val() {
+            self.s2_v.d.next = true;
+            self.s2_phase.d.next = self.k0_2.val();
+            self.s2.d.next.kind = self.rkind.val();
+            self.s2.d.next.clear = self.s1.q.val().clear & (self.s1.q.val().kind == self.kind_frame.val());
+            self.s2.d.next.index = self.s1.q.val().index;
+            self.s2.d.next.culled = self.is_tri.val() & self.culled_now.val();
+            self.s2.d.next.zero_area = self.is_tri.val() & self.det_zero.val();
+            self.s2.d.next.bx0 = self.s1_bx0.q.val();
+            self.s2.d.next.bx1 = self.s1_bx1.q.val();
+            self.s2.d.next.by0 = self.s1_by0.q.val();
+            self.s2.d.next.by1 = self.s1_by1.q.val();
+            self.s2.d.next.addr = self.addr_prod.val().get_bits::<20>(0) + bit_cast::<20, 10>(self.s1_bx0.q.val());
+            self.s2.d.next.sx0 = unsigned_cast(self.stx_0.val());
+            self.s2.d.next.sx1 = unsigned_cast(self.stx_1.val());
+            self.s2.d.next.sx2 = unsigned_cast(self.stx_2.val());
+            self.s2.d.next.sy0 = unsigned_cast(self.sty_0.val());
+            self.s2.d.next.sy1 = unsigned_cast(self.sty_1.val());
+            self.s2.d.next.sy2 = unsigned_cast(self.sty_2.val());
+            self.s2.d.next.x0 = unsigned_cast(self.cx0.val());
+            self.s2.d.next.y0 = unsigned_cast(self.cy0.val());
+            self.s2.d.next.z0 = self.cz0.val();
+            self.la0.d.next = signed_bit_cast_safe::<25, 17>(self.edx_0.val());
+            self.lb0.d.next = self.py_0.val();
+            self.ra0.d.next = signed_bit_cast_safe::<25, 17>(self.edy_0.val());
+            self.rb0.d.next = self.px_0.val();
+            self.tl0.d.next = self.tl_0.val();
+            self.la1.d.next = signed_bit_cast_safe::<25, 17>(self.edx_1.val());
+            self.lb1.d.next = self.py_1.val();
+            self.ra1.d.next = signed_bit_cast_safe::<25, 17>(self.edy_1.val());
+            self.rb1.d.next = self.px_1.val();
+            self.tl1.d.next = self.tl_1.val();
+            self.la2.d.next = signed_bit_cast_safe::<25, 17>(self.edx_2.val());
+            self.lb2.d.next = self.py_2.val();
+            self.ra2.d.next = signed_bit_cast_safe::<25, 17>(self.edy_2.val());
+            self.rb2.d.next = self.px_2.val();
+            self.tl2.d.next = self.tl_2.val();
+            self.n_dz10.d.next = self.cdz10.val();
+            self.n_dz20.d.next = self.cdz20.val();
+            self.n_dx10.d.next = signed_bit_cast_safe::<18, 17>(self.cdx10.val());
+            self.n_dx20.d.next = signed_bit_cast_safe::<18, 17>(self.cdx20.val());
+            self.n_dy10.d.next = signed_bit_cast_safe::<18, 17>(self.cdy10.val());
+            self.n_dy20.d.next = signed_bit_cast_safe::<18, 17>(self.cdy20.val());
+        }
+        // S1 and S0.
+        if self.leave1.val() {
+            self.s1_v.d.next = false;
+        }
+        if self.leave0.val() {
+            self.s1_v.d.next = true;
+            self.s1.d.next = self.s0.q.val();
+            self.s1_det.d.next = self.det.val();
+            self.s1_bx0.d.next = self.box_x0_u.val().get_bits::<10>(0);
+            self.s1_bx1.d.next = self.box_x1_u.val().get_bits::<10>(0);
+            self.s1_by0.d.next = self.box_y0_u.val().get_bits::<10>(0);
+            self.s1_by1.d.next = self.box_y1_u.val().get_bits::<10>(0);
+            self.s1_box_empty.d.next = self.box_empty.val();
+        }
+        if self.leave0.val() {
+            self.s0_v.d.next = false;
+        }
+        if self.cmd.valid.val() & self.cmd.ready.val() {
+            self.s0_v.d.next = true;
+            self.s0.d.next = self.cmd.data.val();
         }
     }
 }

@@ -80,7 +80,7 @@ pub struct Traversal {
     /// The record is taken this cycle.
     pub rec_ready: Signal<Out, Bit>,
     // From the z-test stage
-    /// A result token issued now will find the result register empty.
+    /// A result token issued now will find room in the result queue.
     pub result_free: Signal<In, Bit>,
     // To the z-test stage (and the Z read port)
     pub tok_kind: Signal<Out, Bits<2>>,

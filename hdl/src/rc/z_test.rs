@@ -1,5 +1,5 @@
 //! `z_test`: the RC's Z-test stage (seed 001 §3.1: the index of a visible pixel goes to the I-buffer)
-//! and its result register.
+//! and its result queue (three results).
 //!
 //! ```text
 //!                 +-----------------------------------+
@@ -8,7 +8,7 @@
 //!  i_rd_data ---->|   : i_rd_data == 0 ? 2^24-1       |--> result (valid/ready/data)
 //!                 |   : z_rd_data                     |
 //!                 | pass = covered & z < old          |--> result_free
-//!  clock -------->| visible |= pass; result register  |
+//!  clock -------->| visible |= pass; result queue (3) |
 //!                 +-----------------------------------+
 //! ```
 //!
@@ -41,7 +41,7 @@ pub struct ZTest {
     pub tok_culled: Signal<In, Bit>,
     pub tok_zero_area: Signal<In, Bit>,
     // To the traversal
-    /// A result token issued this cycle will find the result register empty.
+    /// A result token issued this cycle will find room in the result queue.
     pub result_free: Signal<Out, Bit>,
     // From the Z-buffer
     /// Depth read one cycle earlier.
@@ -71,8 +71,14 @@ pub struct ZTest {
     fwd_addr: DFF<Bits<20>>,
     fwd_z: DFF<Bits<24>>,
     visible: DFF<Bit>,
-    res_valid: DFF<Bit>,
-    res: DFF<RcResult>,
+    /// The result queue, head first, and its length.
+    r0: DFF<RcResult>,
+    r1: DFF<RcResult>,
+    r2: DFF<RcResult>,
+    r_len: DFF<Bits<2>>,
+    r_pop: Signal<Local, Bit>,
+    r_after: Signal<Local, Bits<2>>,
+    r_new: Signal<Local, RcResult>,
 
     old_z: Signal<Local, Bits<24>>,
     pass: Signal<Local, Bit>,
@@ -85,6 +91,9 @@ pub struct ZTest {
     tok_clear: Constant<Bits<2>>,
     tok_frag: Constant<Bits<2>>,
     tok_result: Constant<Bits<2>>,
+    k0_2: Constant<Bits<2>>,
+    k1_2: Constant<Bits<2>>,
+    k2_2: Constant<Bits<2>>,
 }
 
 impl Default for ZTest {
@@ -123,8 +132,16 @@ impl Default for ZTest {
             fwd_addr: Default::default(),
             fwd_z: Default::default(),
             visible: Default::default(),
-            res_valid: Default::default(),
-            res: Default::default(),
+            r0: Default::default(),
+            r1: Default::default(),
+            r2: Default::default(),
+            r_len: Default::default(),
+            r_pop: Default::default(),
+            r_after: Default::default(),
+            r_new: Default::default(),
+            k0_2: Constant::new(0.into()),
+            k1_2: Constant::new(1.into()),
+            k2_2: Constant::new(2.into()),
             old_z: Default::default(),
             pass: Default::default(),
             pushes: Default::default(),
@@ -144,7 +161,7 @@ impl Logic for ZTest {
     fn update(&mut self) {
         dff_setup!(
             self, clock, f1_kind, f1_covered, f1_last, f1_addr, f1_z, f1_index, f1_eof, f1_culled, f1_zero_area, fwd_valid,
-            fwd_addr, fwd_z, visible, res_valid, res
+            fwd_addr, fwd_z, visible, r0, r1, r2, r_len
         );
         // F1 takes every token.
         self.f1_kind.d.next = self.tok_kind.val();
@@ -191,33 +208,49 @@ impl Logic for ZTest {
         // Results: the last fragment of a triangle, or a result token.
         self.pushes.next = (self.f1_kind.q.val() == self.tok_result.val())
             | ((self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_last.q.val());
-        self.result_free.next = !self.res_valid.q.val() & !self.pushes.val();
+        // Room for a result token issued now: the queue's length plus the result in F1 below three.
+        self.result_free.next = (self.r_len.q.val() < self.k2_2.val()) | ((self.r_len.q.val() == self.k2_2.val()) & !self.pushes.val());
         if self.f1_kind.q.val() == self.tok_frag.val() {
             self.visible.d.next = self.visible.q.val() | self.pass.val();
             if self.f1_last.q.val() {
                 self.visible.d.next = false;
             }
         }
-        if self.res_valid.q.val() & self.result.ready.val() {
-            self.res_valid.d.next = false;
+        self.r_new.next.index = self.f1_index.q.val();
+        self.r_new.next.eof = self.f1_eof.q.val();
+        self.r_new.next.culled = self.f1_culled.q.val();
+        self.r_new.next.zero_area = self.f1_zero_area.q.val();
+        self.r_new.next.visible = false;
+        if self.f1_kind.q.val() == self.tok_frag.val() {
+            self.r_new.next.eof = false;
+            self.r_new.next.culled = false;
+            self.r_new.next.zero_area = false;
+            self.r_new.next.visible = self.visible.q.val() | self.pass.val();
         }
+        // The queue: pop the head, then push behind what stays.
+        self.r_pop.next = (self.r_len.q.val() != self.k0_2.val()) & self.result.ready.val();
+        self.r_after.next = self.r_len.q.val();
+        if self.r_pop.val() {
+            self.r_after.next = self.r_len.q.val() - self.k1_2.val();
+            self.r0.d.next = self.r1.q.val();
+            self.r1.d.next = self.r2.q.val();
+        }
+        self.r_len.d.next = self.r_after.val();
         if self.pushes.val() {
-            self.res_valid.d.next = true;
-            self.res.d.next.index = self.f1_index.q.val();
-            self.res.d.next.eof = self.f1_eof.q.val();
-            self.res.d.next.culled = self.f1_culled.q.val();
-            self.res.d.next.zero_area = self.f1_zero_area.q.val();
-            self.res.d.next.visible = false;
-            if self.f1_kind.q.val() == self.tok_frag.val() {
-                self.res.d.next.eof = false;
-                self.res.d.next.culled = false;
-                self.res.d.next.zero_area = false;
-                self.res.d.next.visible = self.visible.q.val() | self.pass.val();
+            self.r_len.d.next = self.r_after.val() + self.k1_2.val();
+            if self.r_after.val() == self.k0_2.val() {
+                self.r0.d.next = self.r_new.val();
+            }
+            if self.r_after.val() == self.k1_2.val() {
+                self.r1.d.next = self.r_new.val();
+            }
+            if self.r_after.val() == self.k2_2.val() {
+                self.r2.d.next = self.r_new.val();
             }
         }
-        self.result.valid.next = self.res_valid.q.val();
-        self.result.data.next = self.res.q.val();
-        if !self.res_valid.q.val() {
+        self.result.valid.next = self.r_len.q.val() != self.k0_2.val();
+        self.result.data.next = self.r0.q.val();
+        if self.r_len.q.val() == self.k0_2.val() {
             self.result.data.next.index = self.k0_16.val();
             self.result.data.next.eof = false;
             self.result.data.next.culled = false;

@@ -62,6 +62,11 @@ pub struct Run {
     /// Clocks the traversal walked triangles, and those that delivered a fragment (cycle model).
     pub walk_clocks: u64,
     pub walk_fragment_clocks: u64,
+    /// Hazard coverage from the model: cycles with the record queue full, the result queue full, the
+    /// reciprocal's result waiting.
+    pub record_queue_full_cycles: u64,
+    pub result_queue_full_cycles: u64,
+    pub recip_stall_cycles: u64,
     /// Simulation speed of the RTL in cycles per second (0 for model-only runs).
     pub rtl_cycles_per_second: f64,
 }
@@ -206,6 +211,8 @@ fn run_inner(
     let (mut back_to_back, mut last_read) = (0u64, None::<u32>);
     let start = std::time::Instant::now();
     let mut watchdog = Watchdog::new(screen.pixels() as u64 + 1024);
+    let eofs = cmds.iter().filter(|c| c.kind == CmdKind::EndOfFrame).count();
+    let mut eofs_seen = 0usize;
     for cycle in 0..max_cycles {
         let inp = driver.inputs(cmds, zmem.read_data(), imem.read_data());
         let expected = model.step(&inp);
@@ -245,10 +252,13 @@ fn run_inner(
         if stop_after == Some(cycle) {
             break;
         }
-        if taken && out.res.eof && driver.next == cmds.len() {
+        // The stream's last end-of-frame result (the setup pipeline may accept every command before
+        // the first frame's end comes out).
+        eofs_seen += (taken && out.res.eof) as usize;
+        if taken && out.res.eof && driver.next == cmds.len() && eofs_seen == eofs {
             let secs = start.elapsed().as_secs_f64();
             let rate = if rtl.is_some() && secs > 0.0 { (cycle + 1) as f64 / secs } else { 0.0 };
-            return Ok(Run { results, zbuf: zmem.words, ibuf: imem.words, cycles: cycle + 1, z_reads, z_passes, same_address_reads_back_to_back: back_to_back, walk_clocks: model.walk_clocks, walk_fragment_clocks: model.walk_fragment_clocks, rtl_cycles_per_second: rate });
+            return Ok(Run { results, zbuf: zmem.words, ibuf: imem.words, cycles: cycle + 1, z_reads, z_passes, same_address_reads_back_to_back: back_to_back, walk_clocks: model.walk_clocks, walk_fragment_clocks: model.walk_fragment_clocks, record_queue_full_cycles: model.record_queue_full_cycles, result_queue_full_cycles: model.result_queue_full_cycles, recip_stall_cycles: model.recip_stall_cycles, rtl_cycles_per_second: rate });
         }
     }
     if stop_after.is_some() {
