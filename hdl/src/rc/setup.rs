@@ -7,7 +7,7 @@
 //!  cmd --->| S0   |->| S1    |->| S2      |->| S3   | S4   |->| S5     |->| S6      |->| record  |-> rec_*
 //! (valid/  | Det  |  | Order |  | Edges   |  | Hold | Hold |  | Grad   |  | Plane   |  | queue   |   (valid/
 //!  ready)  | 2x   |  |       |  | 4x      |  |      |      |  | 1x     |  | 2x      |  | 4 deep  |    ready)
-//!          |17x17 |  |       |  | 25x18   |  |      |      |  | 44x26  |  | 44x26   |  +---------+
+//!          |17x17 |  |       |  | 25x18   |  |      |      |  | 44x26  |  | 40x18   |  +---------+
 //!          +------+  +---+---+  +---------+  +------+------+  +---^----+  +---------+
 //!                        | abs(det)  +--------------------------+  | mant, shift
 //!                        +---------->| reciprocal, 10 stations  |--+
@@ -29,7 +29,7 @@
 //!   than S2's three cycles).
 //! * S5 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1
 //!   `A = sat40(round(na*mant >> (shift+4)))` and nb*mant; phase 2 B likewise.
-//! * S6 `Plane`: phase 0 A*(8-x0), B*(8-y0); phase 1 their sum, A*X0, B*Y0;
+//! * S6 `Plane` (two 40x18 products per cycle): phase 0 A*(8-x0), B*(8-y0); phase 1 their sum, A*X0, B*Y0;
 //!   phase 2 `C = (z0 << 16) + round(sum >> 4)` and A*X0 + B*Y0; phase 3 raw = C + A*X0 + B*Y0 (the
 //!   depth plane's raw value at the box's first pixel) goes into the queue with the record.
 //!
@@ -149,8 +149,8 @@ pub struct Setup {
     /// S5: the gradients.
     mul_g: MulS<44, 26, 70>,
     /// S6: the plane's two products per cycle.
-    mul_p: MulS<44, 26, 70>,
-    mul_q: MulS<44, 26, 70>,
+    mul_p: MulS<40, 18, 58>,
+    mul_q: MulS<40, 18, 58>,
 
     // S0 `Det`: the command.
     s0_v: DFF<Bit>,
@@ -204,8 +204,8 @@ pub struct Setup {
     s6_v: DFF<Bit>,
     s6_phase: DFF<Bits<2>>,
     s6: DFF<SetupRec>,
-    p_prod: DFF<Bits<70>>,
-    q_prod: DFF<Bits<70>>,
+    p_prod: DFF<Bits<58>>,
+    q_prod: DFF<Bits<58>>,
     p_acc: DFF<Signed<58>>,
     p_c: DFF<Signed<56>>,
     p_s: DFF<Signed<56>>,
@@ -359,10 +359,8 @@ pub struct Setup {
     // S6
     ga: Signal<Local, Signed<40>>,
     gb: Signal<Local, Signed<40>>,
-    op_pa: Signal<Local, Signed<44>>,
-    op_pb: Signal<Local, Signed<26>>,
-    op_qa: Signal<Local, Signed<44>>,
-    op_qb: Signal<Local, Signed<26>>,
+    op_pb: Signal<Local, Signed<18>>,
+    op_qb: Signal<Local, Signed<18>>,
     off_x: Signal<Local, Signed<17>>,
     off_y: Signal<Local, Signed<17>>,
     p58: Signal<Local, Signed<58>>,
@@ -383,6 +381,7 @@ pub struct Setup {
     k8_18: Constant<Bits<18>>,
     k4_6: Constant<Bits<6>>,
     k8_70: Constant<Bits<70>>,
+    k0_70: Constant<Bits<70>>,
     k0_13: Constant<Signed<13>>,
     k0_36: Constant<Signed<36>>,
     k1_36: Constant<Signed<36>>,
@@ -644,9 +643,7 @@ impl Setup {
             grad: Default::default(),
             ga: Default::default(),
             gb: Default::default(),
-            op_pa: Default::default(),
             op_pb: Default::default(),
-            op_qa: Default::default(),
             op_qb: Default::default(),
             off_x: Default::default(),
             off_y: Default::default(),
@@ -666,6 +663,7 @@ impl Setup {
             k8_18: Constant::new(8.into()),
             k4_6: Constant::new(4.into()),
             k8_70: Constant::new(8.into()),
+            k0_70: Constant::new(0.into()),
             k0_13: Constant::new(0.into()),
             k0_36: Constant::new(0.into()),
             k1_36: Constant::new(1.into()),
@@ -976,19 +974,26 @@ impl Logic for Setup {
         self.mul_g.a.next = self.op_ga.val();
         self.mul_g.b.next = self.op_gb.val();
         // The gradient from the product register: sat40((prod + 2^(sh-1)) >> sh), sh = shift + 4.
-        self.round_half.next = self.k8_70.val() << self.s5.q.val().shift;
-        self.rounded.next = self.g_prod.q.val() + self.round_half.val();
-        self.shifted.next = (self.rounded.val() >> self.s5.q.val().shift) >> self.k4_6.val();
-        if self.rounded.val().get_bit(69) {
-            // arithmetic shift of a negative value: complement, shift, complement
-            self.shifted.next = !((!self.rounded.val() >> self.s5.q.val().shift) >> self.k4_6.val());
-        }
-        self.grad_hi.next = self.shifted.val().get_bits::<31>(39);
+        // (70-bit arithmetic is slow in the Rust simulation: evaluated only while S5 holds a record.)
+        self.round_half.next = self.k0_70.val();
+        self.rounded.next = self.k0_70.val();
+        self.shifted.next = self.k0_70.val();
+        self.grad_hi.next = self.k0_31.val();
         self.grad.next = self.min40.val();
-        if (self.grad_hi.val() == self.k0_31.val()) | (self.grad_hi.val() == self.k1s_31.val()) {
-            self.grad.next = signed_cast(self.shifted.val().get_bits::<40>(0));
-        } else if !self.rounded.val().get_bit(69) {
-            self.grad.next = self.max40.val();
+        if self.s5_v.q.val() {
+            self.round_half.next = self.k8_70.val() << self.s5.q.val().shift;
+            self.rounded.next = self.g_prod.q.val() + self.round_half.val();
+            self.shifted.next = (self.rounded.val() >> self.s5.q.val().shift) >> self.k4_6.val();
+            if self.rounded.val().get_bit(69) {
+                // arithmetic shift of a negative value: complement, shift, complement
+                self.shifted.next = !((!self.rounded.val() >> self.s5.q.val().shift) >> self.k4_6.val());
+            }
+            self.grad_hi.next = self.shifted.val().get_bits::<31>(39);
+            if (self.grad_hi.val() == self.k0_31.val()) | (self.grad_hi.val() == self.k1s_31.val()) {
+                self.grad.next = signed_cast(self.shifted.val().get_bits::<40>(0));
+            } else if !self.rounded.val().get_bit(69) {
+                self.grad.next = self.max40.val();
+            }
         }
 
         // ---- S6 `Plane`: two 44x26 multipliers ----
@@ -996,20 +1001,19 @@ impl Logic for Setup {
         self.gb.next = signed_cast(self.s6.q.val().b);
         self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().x0));
         self.off_y.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().y0));
-        self.op_pa.next = signed_bit_cast_safe::<44, 40>(self.ga.val());
-        self.op_qa.next = signed_bit_cast_safe::<44, 40>(self.gb.val());
-        self.op_pb.next = signed_bit_cast_safe::<26, 17>(self.off_x.val());
-        self.op_qb.next = signed_bit_cast_safe::<26, 17>(self.off_y.val());
+        // |A| <= 2^39, |8-x0| <= 2^15, X0 < 2^10: every product fits 58 bits (55 used).
+        self.op_pb.next = signed_bit_cast_safe::<18, 17>(self.off_x.val());
+        self.op_qb.next = signed_bit_cast_safe::<18, 17>(self.off_y.val());
         if self.s6_phase.q.val() != self.k0_2.val() {
-            self.op_pb.next = signed_cast(bit_cast::<26, 10>(self.s6.q.val().bx0));
-            self.op_qb.next = signed_cast(bit_cast::<26, 10>(self.s6.q.val().by0));
+            self.op_pb.next = signed_cast(bit_cast::<18, 10>(self.s6.q.val().bx0));
+            self.op_qb.next = signed_cast(bit_cast::<18, 10>(self.s6.q.val().by0));
         }
-        self.mul_p.a.next = self.op_pa.val();
+        self.mul_p.a.next = self.ga.val();
         self.mul_p.b.next = self.op_pb.val();
-        self.mul_q.a.next = self.op_qa.val();
+        self.mul_q.a.next = self.gb.val();
         self.mul_q.b.next = self.op_qb.val();
-        self.p58.next = signed_cast(self.p_prod.q.val().get_bits::<58>(0));
-        self.q58.next = signed_cast(self.q_prod.q.val().get_bits::<58>(0));
+        self.p58.next = signed_cast(self.p_prod.q.val());
+        self.q58.next = signed_cast(self.q_prod.q.val());
         self.p56.next = signed_cast(self.p_prod.q.val().get_bits::<56>(0));
         self.q56.next = signed_cast(self.q_prod.q.val().get_bits::<56>(0));
         // C = (z0 << 16) + round(acc >> 4): never saturates (see the module doc).
