@@ -410,6 +410,23 @@ pub struct Setup {
     rec_eof: Constant<Bits<2>>,
     cull_back: Constant<Bits<2>>,
     cull_front: Constant<Bits<2>>,
+    // zeros: the values of a stage's locals while it is empty
+    zb18: Constant<Bits<18>>,
+    zb2: Constant<Bits<2>>,
+    zb24: Constant<Bits<24>>,
+    zb32: Constant<Bits<32>>,
+    zb36: Constant<Bits<36>>,
+    zb58: Constant<Bits<58>>,
+    zs16: Constant<Signed<16>>,
+    zs17: Constant<Signed<17>>,
+    zs18: Constant<Signed<18>>,
+    zs22: Constant<Signed<22>>,
+    zs25: Constant<Signed<25>>,
+    zs36: Constant<Signed<36>>,
+    zs40: Constant<Signed<40>>,
+    zs44: Constant<Signed<44>>,
+    zs56: Constant<Signed<56>>,
+    zs58: Constant<Signed<58>>,
 }
 
 impl Setup {
@@ -692,6 +709,22 @@ impl Setup {
             rec_eof: Constant::new(REC_EOF.into()),
             cull_back: Constant::new(super::CULL_BACK.into()),
             cull_front: Constant::new(super::CULL_FRONT.into()),
+            zb18: Constant::new(0.into()),
+            zb2: Constant::new(0.into()),
+            zb24: Constant::new(0.into()),
+            zb32: Constant::new(0.into()),
+            zb36: Constant::new(0.into()),
+            zb58: Constant::new(0.into()),
+            zs16: Constant::new(0.into()),
+            zs17: Constant::new(0.into()),
+            zs18: Constant::new(0.into()),
+            zs22: Constant::new(0.into()),
+            zs25: Constant::new(0.into()),
+            zs36: Constant::new(0.into()),
+            zs40: Constant::new(0.into()),
+            zs44: Constant::new(0.into()),
+            zs56: Constant::new(0.into()),
+            zs58: Constant::new(0.into()),
         }
     }
 }
@@ -703,21 +736,34 @@ impl Logic for Setup {
         clock!(self, clock, recip);
 
         // ---- S0 `Det` ----
-        self.v0x.next = signed_cast(self.s0.q.val().x0);
-        self.v0y.next = signed_cast(self.s0.q.val().y0);
-        self.v1x.next = signed_cast(self.s0.q.val().x1);
-        self.v1y.next = signed_cast(self.s0.q.val().y1);
-        self.v2x.next = signed_cast(self.s0.q.val().x2);
-        self.v2y.next = signed_cast(self.s0.q.val().y2);
-        self.dx10.next = signed_bit_cast_safe::<17, 16>(self.v1x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
-        self.dy10.next = signed_bit_cast_safe::<17, 16>(self.v1y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
-        self.dx20.next = signed_bit_cast_safe::<17, 16>(self.v2x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
-        self.dy20.next = signed_bit_cast_safe::<17, 16>(self.v2y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
+        self.v0x.next = self.zs16.val();
+        self.v0y.next = self.zs16.val();
+        self.v1x.next = self.zs16.val();
+        self.v1y.next = self.zs16.val();
+        self.v2x.next = self.zs16.val();
+        self.v2y.next = self.zs16.val();
+        self.dx10.next = self.zs17.val();
+        self.dy10.next = self.zs17.val();
+        self.dx20.next = self.zs17.val();
+        self.dy20.next = self.zs17.val();
+        self.det.next = self.zs36.val();
+        if self.s0_v.q.val() {
+            self.v0x.next = signed_cast(self.s0.q.val().x0);
+            self.v0y.next = signed_cast(self.s0.q.val().y0);
+            self.v1x.next = signed_cast(self.s0.q.val().x1);
+            self.v1y.next = signed_cast(self.s0.q.val().y1);
+            self.v2x.next = signed_cast(self.s0.q.val().x2);
+            self.v2y.next = signed_cast(self.s0.q.val().y2);
+            self.dx10.next = signed_bit_cast_safe::<17, 16>(self.v1x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
+            self.dy10.next = signed_bit_cast_safe::<17, 16>(self.v1y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
+            self.dx20.next = signed_bit_cast_safe::<17, 16>(self.v2x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
+            self.dy20.next = signed_bit_cast_safe::<17, 16>(self.v2y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
+            self.det.next = signed_bit_cast_safe::<36, 34>(self.mul_d0.p.val()) - signed_bit_cast_safe::<36, 34>(self.mul_d1.p.val());
+        }
         self.mul_d0.a.next = self.dx10.val();
         self.mul_d0.b.next = self.dy20.val();
         self.mul_d1.a.next = self.dx20.val();
         self.mul_d1.b.next = self.dy10.val();
-        self.det.next = signed_bit_cast_safe::<36, 34>(self.mul_d0.p.val()) - signed_bit_cast_safe::<36, 34>(self.mul_d1.p.val());
         // The bounding box does not depend on the vertex order. Signed compares are slow in
         // simulation: only evaluated while S0 holds a command.
         self.xmin.next = self.v0x.val();
@@ -796,91 +842,148 @@ impl Logic for Setup {
         self.box_y1_u.next = unsigned_cast(self.box_y1.val());
 
         // ---- S1 `Order` ----
-        self.is_tri.next = self.s1.q.val().kind == self.kind_tri.val();
-        self.det_neg.next = self.s1_det.q.val().get_bit(35);
-        self.det_zero.next = self.s1_det.q.val() == self.k0_36.val();
-        self.is_front.next = self.det_neg.val();
-        if self.s1.q.val().front_cw {
-            self.is_front.next = !self.det_neg.val();
-        }
-        self.culled_now.next = self.det_zero.val()
-            | ((self.s1.q.val().cull == self.cull_back.val()) & !self.is_front.val())
-            | ((self.s1.q.val().cull == self.cull_front.val()) & self.is_front.val());
-        self.walk1.next = self.is_tri.val() & !self.culled_now.val() & !self.s1_box_empty.q.val();
-        self.rkind.next = self.rec_frame.val();
-        if self.s1.q.val().kind == self.kind_eof.val() {
-            self.rkind.next = self.rec_eof.val();
-        }
-        if self.is_tri.val() {
-            self.rkind.next = self.rec_skip.val();
-            if self.walk1.val() {
-                self.rkind.next = self.rec_walk.val();
+        self.is_tri.next = false;
+        self.det_neg.next = false;
+        self.det_zero.next = false;
+        self.is_front.next = false;
+        self.culled_now.next = false;
+        self.walk1.next = false;
+        self.rkind.next = self.zb2.val();
+        self.cx0.next = self.zs16.val();
+        self.cy0.next = self.zs16.val();
+        self.cz0.next = self.zb24.val();
+        self.cx1.next = self.zs16.val();
+        self.cy1.next = self.zs16.val();
+        self.cz1.next = self.zb24.val();
+        self.cx2.next = self.zs16.val();
+        self.cy2.next = self.zs16.val();
+        self.cz2.next = self.zb24.val();
+        self.cdx10.next = self.zs17.val();
+        self.cdy10.next = self.zs17.val();
+        self.cdx20.next = self.zs17.val();
+        self.cdy20.next = self.zs17.val();
+        self.cdz10.next = self.zs25.val();
+        self.cdz20.next = self.zs25.val();
+        self.cx16.next = self.zb18.val();
+        self.cy16.next = self.zb18.val();
+        self.addr_prod.next = self.zb32.val();
+        self.edx_0.next = self.zs17.val();
+        self.edy_0.next = self.zs17.val();
+        self.px_0.next = self.zs18.val();
+        self.py_0.next = self.zs18.val();
+        self.tl_0.next = false;
+        self.negdy_0.next = self.zs17.val();
+        self.negdyw_0.next = self.zs22.val();
+        self.edxw_0.next = self.zs22.val();
+        self.stx_0.next = self.zs22.val();
+        self.sty_0.next = self.zs22.val();
+        self.edx_1.next = self.zs17.val();
+        self.edy_1.next = self.zs17.val();
+        self.px_1.next = self.zs18.val();
+        self.py_1.next = self.zs18.val();
+        self.tl_1.next = false;
+        self.negdy_1.next = self.zs17.val();
+        self.negdyw_1.next = self.zs22.val();
+        self.edxw_1.next = self.zs22.val();
+        self.stx_1.next = self.zs22.val();
+        self.sty_1.next = self.zs22.val();
+        self.edx_2.next = self.zs17.val();
+        self.edy_2.next = self.zs17.val();
+        self.px_2.next = self.zs18.val();
+        self.py_2.next = self.zs18.val();
+        self.tl_2.next = false;
+        self.negdy_2.next = self.zs17.val();
+        self.negdyw_2.next = self.zs22.val();
+        self.edxw_2.next = self.zs22.val();
+        self.stx_2.next = self.zs22.val();
+        self.sty_2.next = self.zs22.val();
+        if self.s1_v.q.val() {
+            self.is_tri.next = self.s1.q.val().kind == self.kind_tri.val();
+            self.det_neg.next = self.s1_det.q.val().get_bit(35);
+            self.det_zero.next = self.s1_det.q.val() == self.k0_36.val();
+            self.is_front.next = self.det_neg.val();
+            if self.s1.q.val().front_cw {
+                self.is_front.next = !self.det_neg.val();
             }
+            self.culled_now.next = self.det_zero.val()
+                | ((self.s1.q.val().cull == self.cull_back.val()) & !self.is_front.val())
+                | ((self.s1.q.val().cull == self.cull_front.val()) & self.is_front.val());
+            self.walk1.next = self.is_tri.val() & !self.culled_now.val() & !self.s1_box_empty.q.val();
+            self.rkind.next = self.rec_frame.val();
+            if self.s1.q.val().kind == self.kind_eof.val() {
+                self.rkind.next = self.rec_eof.val();
+            }
+            if self.is_tri.val() {
+                self.rkind.next = self.rec_skip.val();
+                if self.walk1.val() {
+                    self.rkind.next = self.rec_walk.val();
+                }
+            }
+            // Canonical order: vertices 1 and 2 swapped where det < 0.
+            self.cx0.next = signed_cast(self.s1.q.val().x0);
+            self.cy0.next = signed_cast(self.s1.q.val().y0);
+            self.cz0.next = self.s1.q.val().z0;
+            self.cx1.next = signed_cast(self.s1.q.val().x1);
+            self.cy1.next = signed_cast(self.s1.q.val().y1);
+            self.cz1.next = self.s1.q.val().z1;
+            self.cx2.next = signed_cast(self.s1.q.val().x2);
+            self.cy2.next = signed_cast(self.s1.q.val().y2);
+            self.cz2.next = self.s1.q.val().z2;
+            if self.det_neg.val() {
+                self.cx1.next = signed_cast(self.s1.q.val().x2);
+                self.cy1.next = signed_cast(self.s1.q.val().y2);
+                self.cz1.next = self.s1.q.val().z2;
+                self.cx2.next = signed_cast(self.s1.q.val().x1);
+                self.cy2.next = signed_cast(self.s1.q.val().y1);
+                self.cz2.next = self.s1.q.val().z1;
+            }
+            self.cdx10.next = signed_bit_cast_safe::<17, 16>(self.cx1.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
+            self.cdy10.next = signed_bit_cast_safe::<17, 16>(self.cy1.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
+            self.cdx20.next = signed_bit_cast_safe::<17, 16>(self.cx2.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
+            self.cdy20.next = signed_bit_cast_safe::<17, 16>(self.cy2.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
+            self.cdz10.next = signed_cast(bit_cast::<25, 24>(self.cz1.val())) - signed_cast(bit_cast::<25, 24>(self.cz0.val()));
+            self.cdz20.next = signed_cast(bit_cast::<25, 24>(self.cz2.val())) - signed_cast(bit_cast::<25, 24>(self.cz0.val()));
+            // Pixel centre of the box's first pixel in subpixels: 16*X0 + 8.
+            self.cx16.next = (bit_cast::<18, 10>(self.s1_bx0.q.val()) << self.k4_6.val()) | self.k8_18.val();
+            self.cy16.next = (bit_cast::<18, 10>(self.s1_by0.q.val()) << self.k4_6.val()) | self.k8_18.val();
+            self.addr_prod.next = bit_cast::<16, 10>(self.s1_by0.q.val()) * self.width.val();
+            // Edge 0: from (cx0, cy0) to (cx1, cy1).
+            self.edx_0.next = signed_bit_cast_safe::<17, 16>(self.cx1.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
+            self.edy_0.next = signed_bit_cast_safe::<17, 16>(self.cy1.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
+            self.px_0.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx0.val());
+            self.py_0.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy0.val());
+            self.tl_0.next = self.edy_0.val().get_bit(16)
+                | ((self.edy_0.val() == self.k0_17.val()) & !self.edx_0.val().get_bit(16) & (self.edx_0.val() != self.k0_17.val()));
+            self.negdy_0.next = self.k0_17.val() - self.edy_0.val();
+            self.negdyw_0.next = signed_bit_cast_safe::<22, 17>(self.negdy_0.val());
+            self.edxw_0.next = signed_bit_cast_safe::<22, 17>(self.edx_0.val());
+            self.stx_0.next = signed_cast(unsigned_cast(self.negdyw_0.val()) << self.k4_6.val());
+            self.sty_0.next = signed_cast(unsigned_cast(self.edxw_0.val()) << self.k4_6.val());
+            // Edge 1: from (cx1, cy1) to (cx2, cy2).
+            self.edx_1.next = signed_bit_cast_safe::<17, 16>(self.cx2.val()) - signed_bit_cast_safe::<17, 16>(self.cx1.val());
+            self.edy_1.next = signed_bit_cast_safe::<17, 16>(self.cy2.val()) - signed_bit_cast_safe::<17, 16>(self.cy1.val());
+            self.px_1.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx1.val());
+            self.py_1.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy1.val());
+            self.tl_1.next = self.edy_1.val().get_bit(16)
+                | ((self.edy_1.val() == self.k0_17.val()) & !self.edx_1.val().get_bit(16) & (self.edx_1.val() != self.k0_17.val()));
+            self.negdy_1.next = self.k0_17.val() - self.edy_1.val();
+            self.negdyw_1.next = signed_bit_cast_safe::<22, 17>(self.negdy_1.val());
+            self.edxw_1.next = signed_bit_cast_safe::<22, 17>(self.edx_1.val());
+            self.stx_1.next = signed_cast(unsigned_cast(self.negdyw_1.val()) << self.k4_6.val());
+            self.sty_1.next = signed_cast(unsigned_cast(self.edxw_1.val()) << self.k4_6.val());
+            // Edge 2: from (cx2, cy2) to (cx0, cy0).
+            self.edx_2.next = signed_bit_cast_safe::<17, 16>(self.cx0.val()) - signed_bit_cast_safe::<17, 16>(self.cx2.val());
+            self.edy_2.next = signed_bit_cast_safe::<17, 16>(self.cy0.val()) - signed_bit_cast_safe::<17, 16>(self.cy2.val());
+            self.px_2.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx2.val());
+            self.py_2.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy2.val());
+            self.tl_2.next = self.edy_2.val().get_bit(16)
+                | ((self.edy_2.val() == self.k0_17.val()) & !self.edx_2.val().get_bit(16) & (self.edx_2.val() != self.k0_17.val()));
+            self.negdy_2.next = self.k0_17.val() - self.edy_2.val();
+            self.negdyw_2.next = signed_bit_cast_safe::<22, 17>(self.negdy_2.val());
+            self.edxw_2.next = signed_bit_cast_safe::<22, 17>(self.edx_2.val());
+            self.stx_2.next = signed_cast(unsigned_cast(self.negdyw_2.val()) << self.k4_6.val());
+            self.sty_2.next = signed_cast(unsigned_cast(self.edxw_2.val()) << self.k4_6.val());
         }
-        // Canonical order: vertices 1 and 2 swapped where det < 0.
-        self.cx0.next = signed_cast(self.s1.q.val().x0);
-        self.cy0.next = signed_cast(self.s1.q.val().y0);
-        self.cz0.next = self.s1.q.val().z0;
-        self.cx1.next = signed_cast(self.s1.q.val().x1);
-        self.cy1.next = signed_cast(self.s1.q.val().y1);
-        self.cz1.next = self.s1.q.val().z1;
-        self.cx2.next = signed_cast(self.s1.q.val().x2);
-        self.cy2.next = signed_cast(self.s1.q.val().y2);
-        self.cz2.next = self.s1.q.val().z2;
-        if self.det_neg.val() {
-            self.cx1.next = signed_cast(self.s1.q.val().x2);
-            self.cy1.next = signed_cast(self.s1.q.val().y2);
-            self.cz1.next = self.s1.q.val().z2;
-            self.cx2.next = signed_cast(self.s1.q.val().x1);
-            self.cy2.next = signed_cast(self.s1.q.val().y1);
-            self.cz2.next = self.s1.q.val().z1;
-        }
-        self.cdx10.next = signed_bit_cast_safe::<17, 16>(self.cx1.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
-        self.cdy10.next = signed_bit_cast_safe::<17, 16>(self.cy1.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
-        self.cdx20.next = signed_bit_cast_safe::<17, 16>(self.cx2.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
-        self.cdy20.next = signed_bit_cast_safe::<17, 16>(self.cy2.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
-        self.cdz10.next = signed_cast(bit_cast::<25, 24>(self.cz1.val())) - signed_cast(bit_cast::<25, 24>(self.cz0.val()));
-        self.cdz20.next = signed_cast(bit_cast::<25, 24>(self.cz2.val())) - signed_cast(bit_cast::<25, 24>(self.cz0.val()));
-        // Pixel centre of the box's first pixel in subpixels: 16*X0 + 8.
-        self.cx16.next = (bit_cast::<18, 10>(self.s1_bx0.q.val()) << self.k4_6.val()) | self.k8_18.val();
-        self.cy16.next = (bit_cast::<18, 10>(self.s1_by0.q.val()) << self.k4_6.val()) | self.k8_18.val();
-        self.addr_prod.next = bit_cast::<16, 10>(self.s1_by0.q.val()) * self.width.val();
-        // Edge 0: from (cx0, cy0) to (cx1, cy1).
-        self.edx_0.next = signed_bit_cast_safe::<17, 16>(self.cx1.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
-        self.edy_0.next = signed_bit_cast_safe::<17, 16>(self.cy1.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
-        self.px_0.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx0.val());
-        self.py_0.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy0.val());
-        self.tl_0.next = self.edy_0.val().get_bit(16)
-            | ((self.edy_0.val() == self.k0_17.val()) & !self.edx_0.val().get_bit(16) & (self.edx_0.val() != self.k0_17.val()));
-        self.negdy_0.next = self.k0_17.val() - self.edy_0.val();
-        self.negdyw_0.next = signed_bit_cast_safe::<22, 17>(self.negdy_0.val());
-        self.edxw_0.next = signed_bit_cast_safe::<22, 17>(self.edx_0.val());
-        self.stx_0.next = signed_cast(unsigned_cast(self.negdyw_0.val()) << self.k4_6.val());
-        self.sty_0.next = signed_cast(unsigned_cast(self.edxw_0.val()) << self.k4_6.val());
-        // Edge 1: from (cx1, cy1) to (cx2, cy2).
-        self.edx_1.next = signed_bit_cast_safe::<17, 16>(self.cx2.val()) - signed_bit_cast_safe::<17, 16>(self.cx1.val());
-        self.edy_1.next = signed_bit_cast_safe::<17, 16>(self.cy2.val()) - signed_bit_cast_safe::<17, 16>(self.cy1.val());
-        self.px_1.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx1.val());
-        self.py_1.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy1.val());
-        self.tl_1.next = self.edy_1.val().get_bit(16)
-            | ((self.edy_1.val() == self.k0_17.val()) & !self.edx_1.val().get_bit(16) & (self.edx_1.val() != self.k0_17.val()));
-        self.negdy_1.next = self.k0_17.val() - self.edy_1.val();
-        self.negdyw_1.next = signed_bit_cast_safe::<22, 17>(self.negdy_1.val());
-        self.edxw_1.next = signed_bit_cast_safe::<22, 17>(self.edx_1.val());
-        self.stx_1.next = signed_cast(unsigned_cast(self.negdyw_1.val()) << self.k4_6.val());
-        self.sty_1.next = signed_cast(unsigned_cast(self.edxw_1.val()) << self.k4_6.val());
-        // Edge 2: from (cx2, cy2) to (cx0, cy0).
-        self.edx_2.next = signed_bit_cast_safe::<17, 16>(self.cx0.val()) - signed_bit_cast_safe::<17, 16>(self.cx2.val());
-        self.edy_2.next = signed_bit_cast_safe::<17, 16>(self.cy0.val()) - signed_bit_cast_safe::<17, 16>(self.cy2.val());
-        self.px_2.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx2.val());
-        self.py_2.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy2.val());
-        self.tl_2.next = self.edy_2.val().get_bit(16)
-            | ((self.edy_2.val() == self.k0_17.val()) & !self.edx_2.val().get_bit(16) & (self.edx_2.val() != self.k0_17.val()));
-        self.negdy_2.next = self.k0_17.val() - self.edy_2.val();
-        self.negdyw_2.next = signed_bit_cast_safe::<22, 17>(self.negdy_2.val());
-        self.edxw_2.next = signed_bit_cast_safe::<22, 17>(self.edx_2.val());
-        self.stx_2.next = signed_cast(unsigned_cast(self.negdyw_2.val()) << self.k4_6.val());
-        self.sty_2.next = signed_cast(unsigned_cast(self.edxw_2.val()) << self.k4_6.val());
         // ---- The handshake, last stage first ----
         self.walk2.next = self.s2.q.val().kind == self.rec_walk.val();
         self.walk5.next = self.s5.q.val().kind == self.rec_walk.val();
@@ -906,14 +1009,17 @@ impl Logic for Setup {
         self.cmd.ready.next = !self.s0_v.q.val() | self.leave0.val();
 
         // The reciprocal of abs(det), requested when S1 holds a drawn triangle that S2 can take.
-        self.det_abs.next = unsigned_cast(self.s1_det.q.val());
-        if self.det_neg.val() {
-            self.det_abs.next = unsigned_cast(self.k0_36.val() - self.s1_det.q.val());
+        self.det_abs.next = self.zb36.val();
+        if self.s1_v.q.val() {
+            self.det_abs.next = unsigned_cast(self.s1_det.q.val());
+            if self.det_neg.val() {
+                self.det_abs.next = unsigned_cast(self.k0_36.val() - self.s1_det.q.val());
+            }
+
         }
         self.recip.request.data.next = self.det_abs.val();
         self.recip.request.valid.next = self.s1_v.q.val() & self.walk1.val() & self.free2.val();
         self.recip.result.ready.next = self.take.val();
-
         // ---- S2 `Edges`: two dot units ----
         self.op_a0.next = self.la0.q.val();
         self.op_a1.next = self.lb0.q.val();
@@ -953,17 +1059,23 @@ impl Logic for Setup {
         self.mul_b0.b.next = self.op_b1.val();
         self.mul_b1.a.next = self.op_b2.val();
         self.mul_b1.b.next = self.op_b3.val();
-        self.dot_a.next = signed_bit_cast_safe::<44, 43>(self.mul_a0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_a1.p.val());
-        self.dot_b.next = signed_bit_cast_safe::<44, 43>(self.mul_b0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_b1.p.val());
-        self.e_a.next = signed_bit_cast_safe::<36, 44>(self.dot_a.val()) - self.k1_36.val();
-        if self.tl_a.val() {
-            self.e_a.next = signed_bit_cast_safe::<36, 44>(self.dot_a.val());
-        }
-        self.e_b.next = signed_bit_cast_safe::<36, 44>(self.dot_b.val()) - self.k1_36.val();
-        if self.tl_b.val() {
-            self.e_b.next = signed_bit_cast_safe::<36, 44>(self.dot_b.val());
-        }
+        self.dot_a.next = self.zs44.val();
+        self.dot_b.next = self.zs44.val();
+        self.e_a.next = self.zs36.val();
+        self.e_b.next = self.zs36.val();
+        if self.s2_v.q.val() {
+            self.dot_a.next = signed_bit_cast_safe::<44, 43>(self.mul_a0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_a1.p.val());
+            self.dot_b.next = signed_bit_cast_safe::<44, 43>(self.mul_b0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_b1.p.val());
+            self.e_a.next = signed_bit_cast_safe::<36, 44>(self.dot_a.val()) - self.k1_36.val();
+            if self.tl_a.val() {
+                self.e_a.next = signed_bit_cast_safe::<36, 44>(self.dot_a.val());
+            }
+            self.e_b.next = signed_bit_cast_safe::<36, 44>(self.dot_b.val()) - self.k1_36.val();
+            if self.tl_b.val() {
+                self.e_b.next = signed_bit_cast_safe::<36, 44>(self.dot_b.val());
+            }
 
+        }
         // ---- S5 `Grad`: one 44x26 multiplier ----
         self.op_ga.next = signed_cast(self.s5.q.val().na);
         self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.recip.result.data.val().mant));
@@ -997,31 +1109,47 @@ impl Logic for Setup {
         }
 
         // ---- S6 `Plane`: two 44x26 multipliers ----
-        self.ga.next = signed_cast(self.s6.q.val().a);
-        self.gb.next = signed_cast(self.s6.q.val().b);
-        self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().x0));
-        self.off_y.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().y0));
-        // |A| <= 2^39, |8-x0| <= 2^15, X0 < 2^10: every product fits 58 bits (55 used).
-        self.op_pb.next = signed_bit_cast_safe::<18, 17>(self.off_x.val());
-        self.op_qb.next = signed_bit_cast_safe::<18, 17>(self.off_y.val());
-        if self.s6_phase.q.val() != self.k0_2.val() {
-            self.op_pb.next = signed_cast(bit_cast::<18, 10>(self.s6.q.val().bx0));
-            self.op_qb.next = signed_cast(bit_cast::<18, 10>(self.s6.q.val().by0));
+        self.ga.next = self.zs40.val();
+        self.gb.next = self.zs40.val();
+        self.off_x.next = self.zs17.val();
+        self.off_y.next = self.zs17.val();
+        self.op_pb.next = self.zs18.val();
+        self.op_qb.next = self.zs18.val();
+        self.p58.next = self.zs58.val();
+        self.q58.next = self.zs58.val();
+        self.p56.next = self.zs56.val();
+        self.q56.next = self.zs56.val();
+        self.acc_round.next = self.zb58.val();
+        self.c_frac.next = self.zs56.val();
+        self.z0_plane.next = self.zs56.val();
+        self.raw_now.next = self.zs56.val();
+        if self.s6_v.q.val() {
+            self.ga.next = signed_cast(self.s6.q.val().a);
+            self.gb.next = signed_cast(self.s6.q.val().b);
+            self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().x0));
+            self.off_y.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().y0));
+            // |A| <= 2^39, |8-x0| <= 2^15, X0 < 2^10: every product fits 58 bits (55 used).
+            self.op_pb.next = signed_bit_cast_safe::<18, 17>(self.off_x.val());
+            self.op_qb.next = signed_bit_cast_safe::<18, 17>(self.off_y.val());
+            if self.s6_phase.q.val() != self.k0_2.val() {
+                self.op_pb.next = signed_cast(bit_cast::<18, 10>(self.s6.q.val().bx0));
+                self.op_qb.next = signed_cast(bit_cast::<18, 10>(self.s6.q.val().by0));
+            }
+            self.p58.next = signed_cast(self.p_prod.q.val());
+            self.q58.next = signed_cast(self.q_prod.q.val());
+            self.p56.next = signed_cast(self.p_prod.q.val().get_bits::<56>(0));
+            self.q56.next = signed_cast(self.q_prod.q.val().get_bits::<56>(0));
+            // C = (z0 << 16) + round(acc >> 4): never saturates (see the module doc).
+            self.acc_round.next = unsigned_cast(self.p_acc.q.val()) + self.k8_58.val();
+            self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(4)));
+            self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s6.q.val().z0) << self.k16_6.val());
+            self.raw_now.next = self.p_c.q.val() + self.p_s.q.val();
+
         }
         self.mul_p.a.next = self.ga.val();
         self.mul_p.b.next = self.op_pb.val();
         self.mul_q.a.next = self.gb.val();
         self.mul_q.b.next = self.op_qb.val();
-        self.p58.next = signed_cast(self.p_prod.q.val());
-        self.q58.next = signed_cast(self.q_prod.q.val());
-        self.p56.next = signed_cast(self.p_prod.q.val().get_bits::<56>(0));
-        self.q56.next = signed_cast(self.q_prod.q.val().get_bits::<56>(0));
-        // C = (z0 << 16) + round(acc >> 4): never saturates (see the module doc).
-        self.acc_round.next = unsigned_cast(self.p_acc.q.val()) + self.k8_58.val();
-        self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(4)));
-        self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s6.q.val().z0) << self.k16_6.val());
-        self.raw_now.next = self.p_c.q.val() + self.p_s.q.val();
-
         // ---- The record queue ----
         self.pop.next = self.rec_ready.val() & (self.q_len.q.val() != self.k0_3.val());
         self.q_after.next = self.q_len.q.val();
