@@ -1,11 +1,18 @@
 //! `DivStep`: one step of the restoring division of `golden::format::reciprocal` (combinational): the
 //! partial remainder is compared with the divisor, the divisor subtracted if it fits, one quotient bit
-//! shifted in. The RC's sequential reciprocal takes one per cycle; colour setup's pipelined one is a
-//! chain of them, one per station.
+//! shifted in. The RC's pipelined reciprocal chains three per station; colour setup's pipelined one
+//! has one per station.
+//!
+//! A leaf written as Verilog (like [`super::MulS`]): rust-hdl 0.46 keeps any `Bits` wider than 32 bits
+//! as an array of bools, so the 37-bit compare and subtract of an `hdl_gen` version cost more than
+//! the rest of the RC in the Rust simulation (the RC's reciprocal has 25 of them). The Rust model below
+//! and the Verilog in `hdl()` are the same function; `tb/tests/rc_verilog.rs` and the colour-setup
+//! Verilog replays run the generated Verilog against the cycle models, and the test below checks the
+//! Rust side against the golden divider.
 
 use rust_hdl::prelude::*;
 
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Default)]
 pub struct DivStep {
     /// Partial remainder (< 2 * den) and divisor.
     pub rem: Signal<In, Bits<37>>,
@@ -14,38 +21,61 @@ pub struct DivStep {
     /// After the step.
     pub rem_next: Signal<Out, Bits<37>>,
     pub quo_next: Signal<Out, Bits<25>>,
-    diff: Signal<Local, Bits<37>>,
-    shifted: Signal<Local, Bits<25>>,
-    k1_1: Constant<Bits<1>>,
-    k1_25: Constant<Bits<25>>,
-}
-
-impl Default for DivStep {
-    fn default() -> Self {
-        Self {
-            rem: Default::default(),
-            den: Default::default(),
-            quo: Default::default(),
-            rem_next: Default::default(),
-            quo_next: Default::default(),
-            diff: Default::default(),
-            shifted: Default::default(),
-            k1_1: Constant::new(1.into()),
-            k1_25: Constant::new(1.into()),
-        }
-    }
 }
 
 impl Logic for DivStep {
-    #[hdl_gen]
     fn update(&mut self) {
-        self.diff.next = self.rem.val() - self.den.val();
-        self.shifted.next = self.quo.val() << self.k1_1.val();
-        self.rem_next.next = self.rem.val() << self.k1_1.val();
-        self.quo_next.next = self.shifted.val();
-        if self.rem.val() >= self.den.val() {
-            self.rem_next.next = self.diff.val() << self.k1_1.val();
-            self.quo_next.next = self.shifted.val() | self.k1_25.val();
+        const M37: u64 = (1 << 37) - 1;
+        const M25: u64 = (1 << 25) - 1;
+        let (rem, den, quo) = (self.rem.val().to_u64(), self.den.val().to_u64(), self.quo.val().to_u64());
+        let (r, q) = if rem >= den { ((rem - den) << 1, (quo << 1) | 1) } else { (rem << 1, quo << 1) };
+        self.rem_next.next = (r & M37).into();
+        self.quo_next.next = (q & M25).into();
+    }
+    fn connect(&mut self) {
+        self.rem_next.connect();
+        self.quo_next.connect();
+    }
+    fn hdl(&self) -> Verilog {
+        // In a 37-bit (25-bit) assignment the subtraction and the shifts are done in 37 (25) bits, so
+        // the top bit falls off exactly as in the Rust model's masks.
+        Verilog::Custom(
+            "always @(*) begin
+    if (rem >= den) begin
+        rem_next = (rem - den) << 1;
+        quo_next = (quo << 1) | 25'd1;
+    end else begin
+        rem_next = rem << 1;
+        quo_next = quo << 1;
+    end
+end"
+            .into(),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 25 steps from the normalised start equal the golden divider's quotient (the restoring division
+    /// `floor(2^(s+24) / det)`), on values across the 36-bit range.
+    #[test]
+    fn twenty_five_steps_give_the_floor_of_two_to_the_s_plus_24_over_det() {
+        let mut step = DivStep::default();
+        step.connect_all();
+        for det in [1u64, 3, 7, 1000, 65535, 123_456_789, (1 << 35) + 12345, (1 << 36) - 1] {
+            let s = 63 - det.leading_zeros() as u64;
+            let (mut rem, mut quo) = (1u64 << s, 0u64);
+            for _ in 0..25 {
+                step.rem.next = rem.into();
+                step.den.next = det.into();
+                step.quo.next = quo.into();
+                assert!(simulate(&mut step, 10));
+                rem = step.rem_next.val().to_u64();
+                quo = step.quo_next.val().to_u64();
+            }
+            assert_eq!(quo as u128, (1u128 << (s + 24)) / det as u128, "det {det}");
         }
     }
 }

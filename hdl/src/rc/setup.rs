@@ -735,112 +735,6 @@ impl Logic for Setup {
         dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s4_v, s4, s5_v, s5_phase, s5, g_prod, s6_v, s6_phase, s6, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_len);
         clock!(self, clock, recip);
 
-        // ---- S0 `Det` ----
-        self.v0x.next = self.zs16.val();
-        self.v0y.next = self.zs16.val();
-        self.v1x.next = self.zs16.val();
-        self.v1y.next = self.zs16.val();
-        self.v2x.next = self.zs16.val();
-        self.v2y.next = self.zs16.val();
-        self.dx10.next = self.zs17.val();
-        self.dy10.next = self.zs17.val();
-        self.dx20.next = self.zs17.val();
-        self.dy20.next = self.zs17.val();
-        self.det.next = self.zs36.val();
-        if self.s0_v.q.val() {
-            self.v0x.next = signed_cast(self.s0.q.val().x0);
-            self.v0y.next = signed_cast(self.s0.q.val().y0);
-            self.v1x.next = signed_cast(self.s0.q.val().x1);
-            self.v1y.next = signed_cast(self.s0.q.val().y1);
-            self.v2x.next = signed_cast(self.s0.q.val().x2);
-            self.v2y.next = signed_cast(self.s0.q.val().y2);
-            self.dx10.next = signed_bit_cast_safe::<17, 16>(self.v1x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
-            self.dy10.next = signed_bit_cast_safe::<17, 16>(self.v1y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
-            self.dx20.next = signed_bit_cast_safe::<17, 16>(self.v2x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
-            self.dy20.next = signed_bit_cast_safe::<17, 16>(self.v2y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
-            self.det.next = signed_bit_cast_safe::<36, 34>(self.mul_d0.p.val()) - signed_bit_cast_safe::<36, 34>(self.mul_d1.p.val());
-        }
-        self.mul_d0.a.next = self.dx10.val();
-        self.mul_d0.b.next = self.dy20.val();
-        self.mul_d1.a.next = self.dx20.val();
-        self.mul_d1.b.next = self.dy10.val();
-        // The bounding box does not depend on the vertex order. Signed compares are slow in
-        // simulation: only evaluated while S0 holds a command.
-        self.xmin.next = self.v0x.val();
-        self.xmax.next = self.v0x.val();
-        self.ymin.next = self.v0y.val();
-        self.ymax.next = self.v0y.val();
-        self.lo_x.next = self.k0_17.val();
-        self.hi_x.next = self.k0_17.val();
-        self.lo_y.next = self.k0_17.val();
-        self.hi_y.next = self.k0_17.val();
-        if self.s0_v.q.val() {
-            if self.v1x.val() < self.v0x.val() {
-                self.xmin.next = self.v1x.val();
-            }
-            if (self.v2x.val() < self.v1x.val()) & (self.v2x.val() < self.v0x.val()) {
-                self.xmin.next = self.v2x.val();
-            }
-            if self.v1x.val() > self.v0x.val() {
-                self.xmax.next = self.v1x.val();
-            }
-            if (self.v2x.val() > self.v1x.val()) & (self.v2x.val() > self.v0x.val()) {
-                self.xmax.next = self.v2x.val();
-            }
-            if self.v1y.val() < self.v0y.val() {
-                self.ymin.next = self.v1y.val();
-            }
-            if (self.v2y.val() < self.v1y.val()) & (self.v2y.val() < self.v0y.val()) {
-                self.ymin.next = self.v2y.val();
-            }
-            if self.v1y.val() > self.v0y.val() {
-                self.ymax.next = self.v1y.val();
-            }
-            if (self.v2y.val() > self.v1y.val()) & (self.v2y.val() > self.v0y.val()) {
-                self.ymax.next = self.v2y.val();
-            }
-            self.lo_x.next = signed_bit_cast_safe::<17, 16>(self.xmin.val()) + self.k7_17.val();
-            self.hi_x.next = signed_bit_cast_safe::<17, 16>(self.xmax.val()) - self.k8_17.val();
-            self.lo_y.next = signed_bit_cast_safe::<17, 16>(self.ymin.val()) + self.k7_17.val();
-            self.hi_y.next = signed_bit_cast_safe::<17, 16>(self.ymax.val()) - self.k8_17.val();
-        }
-        // Bits views for slicing (Verilog cannot slice a cast).
-        self.lo_x_u.next = unsigned_cast(self.lo_x.val());
-        self.hi_x_u.next = unsigned_cast(self.hi_x.val());
-        self.lo_y_u.next = unsigned_cast(self.lo_y.val());
-        self.hi_y_u.next = unsigned_cast(self.hi_y.val());
-        self.box_x1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_x_u.val().get_bits::<13>(4)));
-        self.box_y1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_y_u.val().get_bits::<13>(4)));
-        self.box_x0.next = self.k0_13.val();
-        self.box_x1.next = self.k0_13.val();
-        self.box_y0.next = self.k0_13.val();
-        self.box_y1.next = self.k0_13.val();
-        self.box_empty.next = false;
-        if self.s0_v.q.val() {
-            // >> 4 (arithmetic), then clamp to the screen.
-            self.box_x0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_x_u.val().get_bits::<13>(4)));
-            self.box_x1.next = self.box_x1_raw.val();
-            self.box_y0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_y_u.val().get_bits::<13>(4)));
-            self.box_y1.next = self.box_y1_raw.val();
-            if self.lo_x.val().get_bit(16) {
-                self.box_x0.next = self.k0_13.val();
-            }
-            if self.lo_y.val().get_bit(16) {
-                self.box_y0.next = self.k0_13.val();
-            }
-            if self.box_x1_raw.val() > self.w_minus_1.val() {
-                self.box_x1.next = self.w_minus_1.val();
-            }
-            if self.box_y1_raw.val() > self.h_minus_1.val() {
-                self.box_y1.next = self.h_minus_1.val();
-            }
-            self.box_empty.next = (self.box_x0.val() > self.box_x1.val()) | (self.box_y0.val() > self.box_y1.val());
-        }
-        self.box_x0_u.next = unsigned_cast(self.box_x0.val());
-        self.box_x1_u.next = unsigned_cast(self.box_x1.val());
-        self.box_y0_u.next = unsigned_cast(self.box_y0.val());
-        self.box_y1_u.next = unsigned_cast(self.box_y1.val());
-
         // ---- S1 `Order` ----
         self.is_tri.next = false;
         self.det_neg.next = false;
@@ -919,6 +813,33 @@ impl Logic for Setup {
                     self.rkind.next = self.rec_walk.val();
                 }
             }
+        }
+        // ---- The handshake, last stage first ----
+        self.walk2.next = self.s2.q.val().kind == self.rec_walk.val();
+        self.walk5.next = self.s5.q.val().kind == self.rec_walk.val();
+        self.walk6.next = self.s6.q.val().kind == self.rec_walk.val();
+        self.done2.next = self.s2_v.q.val() & (!self.walk2.val() | (self.s2_phase.q.val() == self.k2_2.val()));
+        self.done5.next = self.s5_v.q.val() & (!self.walk5.val() | (self.s5_phase.q.val() == self.k2_2.val()));
+        self.done6.next = self.s6_v.q.val() & (!self.walk6.val() | (self.s6_phase.q.val() == self.k3_2.val()));
+        self.take.next = self.recip.result.valid.val() & self.s5_v.q.val() & self.walk5.val() & (self.s5_phase.q.val() == self.k0_2.val());
+        self.leave6.next = self.done6.val() & (self.q_len.q.val() < self.k4_3.val());
+        self.free6.next = !self.s6_v.q.val() | self.leave6.val();
+        self.leave5.next = self.done5.val() & self.free6.val();
+        self.free5.next = !self.s5_v.q.val() | self.leave5.val();
+        self.leave4.next = self.s4_v.q.val() & self.free5.val();
+        self.free4.next = !self.s4_v.q.val() | self.leave4.val();
+        self.leave3.next = self.s3_v.q.val() & self.free4.val();
+        self.free3.next = !self.s3_v.q.val() | self.leave3.val();
+        self.leave2.next = self.done2.val() & self.free3.val();
+        self.free2.next = !self.s2_v.q.val() | self.leave2.val();
+        // S1 hands a drawn triangle on only when the reciprocal takes its request.
+        self.leave1.next = self.s1_v.q.val() & self.free2.val() & (!self.walk1.val() | self.recip.request.ready.val());
+        self.free1.next = !self.s1_v.q.val() | self.leave1.val();
+        self.leave0.next = self.s0_v.q.val() & self.free1.val();
+        self.cmd.ready.next = !self.s0_v.q.val() | self.leave0.val();
+
+        // S1's canonical order and edges, needed only in the cycle S1 hands its record on.
+        if self.leave1.val() {
             // Canonical order: vertices 1 and 2 swapped where det < 0.
             self.cx0.next = signed_cast(self.s1.q.val().x0);
             self.cy0.next = signed_cast(self.s1.q.val().y0);
@@ -984,29 +905,112 @@ impl Logic for Setup {
             self.stx_2.next = signed_cast(unsigned_cast(self.negdyw_2.val()) << self.k4_6.val());
             self.sty_2.next = signed_cast(unsigned_cast(self.edxw_2.val()) << self.k4_6.val());
         }
-        // ---- The handshake, last stage first ----
-        self.walk2.next = self.s2.q.val().kind == self.rec_walk.val();
-        self.walk5.next = self.s5.q.val().kind == self.rec_walk.val();
-        self.walk6.next = self.s6.q.val().kind == self.rec_walk.val();
-        self.done2.next = self.s2_v.q.val() & (!self.walk2.val() | (self.s2_phase.q.val() == self.k2_2.val()));
-        self.done5.next = self.s5_v.q.val() & (!self.walk5.val() | (self.s5_phase.q.val() == self.k2_2.val()));
-        self.done6.next = self.s6_v.q.val() & (!self.walk6.val() | (self.s6_phase.q.val() == self.k3_2.val()));
-        self.take.next = self.recip.result.valid.val() & self.s5_v.q.val() & self.walk5.val() & (self.s5_phase.q.val() == self.k0_2.val());
-        self.leave6.next = self.done6.val() & (self.q_len.q.val() < self.k4_3.val());
-        self.free6.next = !self.s6_v.q.val() | self.leave6.val();
-        self.leave5.next = self.done5.val() & self.free6.val();
-        self.free5.next = !self.s5_v.q.val() | self.leave5.val();
-        self.leave4.next = self.s4_v.q.val() & self.free5.val();
-        self.free4.next = !self.s4_v.q.val() | self.leave4.val();
-        self.leave3.next = self.s3_v.q.val() & self.free4.val();
-        self.free3.next = !self.s3_v.q.val() | self.leave3.val();
-        self.leave2.next = self.done2.val() & self.free3.val();
-        self.free2.next = !self.s2_v.q.val() | self.leave2.val();
-        // S1 hands a drawn triangle on only when the reciprocal takes its request.
-        self.leave1.next = self.s1_v.q.val() & self.free2.val() & (!self.walk1.val() | self.recip.request.ready.val());
-        self.free1.next = !self.s1_v.q.val() | self.leave1.val();
-        self.leave0.next = self.s0_v.q.val() & self.free1.val();
-        self.cmd.ready.next = !self.s0_v.q.val() | self.leave0.val();
+        // ---- S0 `Det` ----
+        self.v0x.next = self.zs16.val();
+        self.v0y.next = self.zs16.val();
+        self.v1x.next = self.zs16.val();
+        self.v1y.next = self.zs16.val();
+        self.v2x.next = self.zs16.val();
+        self.v2y.next = self.zs16.val();
+        self.dx10.next = self.zs17.val();
+        self.dy10.next = self.zs17.val();
+        self.dx20.next = self.zs17.val();
+        self.dy20.next = self.zs17.val();
+        self.det.next = self.zs36.val();
+        if self.leave0.val() {
+            self.v0x.next = signed_cast(self.s0.q.val().x0);
+            self.v0y.next = signed_cast(self.s0.q.val().y0);
+            self.v1x.next = signed_cast(self.s0.q.val().x1);
+            self.v1y.next = signed_cast(self.s0.q.val().y1);
+            self.v2x.next = signed_cast(self.s0.q.val().x2);
+            self.v2y.next = signed_cast(self.s0.q.val().y2);
+            self.dx10.next = signed_bit_cast_safe::<17, 16>(self.v1x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
+            self.dy10.next = signed_bit_cast_safe::<17, 16>(self.v1y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
+            self.dx20.next = signed_bit_cast_safe::<17, 16>(self.v2x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
+            self.dy20.next = signed_bit_cast_safe::<17, 16>(self.v2y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
+            self.det.next = signed_bit_cast_safe::<36, 34>(self.mul_d0.p.val()) - signed_bit_cast_safe::<36, 34>(self.mul_d1.p.val());
+        }
+        self.mul_d0.a.next = self.dx10.val();
+        self.mul_d0.b.next = self.dy20.val();
+        self.mul_d1.a.next = self.dx20.val();
+        self.mul_d1.b.next = self.dy10.val();
+        // The bounding box does not depend on the vertex order. (Signed compares are slow in the Rust
+        // simulation: det and the box are evaluated only in the cycle S0 hands its command on, the one
+        // cycle S1 takes them.)
+        self.xmin.next = self.v0x.val();
+        self.xmax.next = self.v0x.val();
+        self.ymin.next = self.v0y.val();
+        self.ymax.next = self.v0y.val();
+        self.lo_x.next = self.k0_17.val();
+        self.hi_x.next = self.k0_17.val();
+        self.lo_y.next = self.k0_17.val();
+        self.hi_y.next = self.k0_17.val();
+        if self.leave0.val() {
+            if self.v1x.val() < self.v0x.val() {
+                self.xmin.next = self.v1x.val();
+            }
+            if (self.v2x.val() < self.v1x.val()) & (self.v2x.val() < self.v0x.val()) {
+                self.xmin.next = self.v2x.val();
+            }
+            if self.v1x.val() > self.v0x.val() {
+                self.xmax.next = self.v1x.val();
+            }
+            if (self.v2x.val() > self.v1x.val()) & (self.v2x.val() > self.v0x.val()) {
+                self.xmax.next = self.v2x.val();
+            }
+            if self.v1y.val() < self.v0y.val() {
+                self.ymin.next = self.v1y.val();
+            }
+            if (self.v2y.val() < self.v1y.val()) & (self.v2y.val() < self.v0y.val()) {
+                self.ymin.next = self.v2y.val();
+            }
+            if self.v1y.val() > self.v0y.val() {
+                self.ymax.next = self.v1y.val();
+            }
+            if (self.v2y.val() > self.v1y.val()) & (self.v2y.val() > self.v0y.val()) {
+                self.ymax.next = self.v2y.val();
+            }
+            self.lo_x.next = signed_bit_cast_safe::<17, 16>(self.xmin.val()) + self.k7_17.val();
+            self.hi_x.next = signed_bit_cast_safe::<17, 16>(self.xmax.val()) - self.k8_17.val();
+            self.lo_y.next = signed_bit_cast_safe::<17, 16>(self.ymin.val()) + self.k7_17.val();
+            self.hi_y.next = signed_bit_cast_safe::<17, 16>(self.ymax.val()) - self.k8_17.val();
+        }
+        // Bits views for slicing (Verilog cannot slice a cast).
+        self.lo_x_u.next = unsigned_cast(self.lo_x.val());
+        self.hi_x_u.next = unsigned_cast(self.hi_x.val());
+        self.lo_y_u.next = unsigned_cast(self.lo_y.val());
+        self.hi_y_u.next = unsigned_cast(self.hi_y.val());
+        self.box_x1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_x_u.val().get_bits::<13>(4)));
+        self.box_y1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_y_u.val().get_bits::<13>(4)));
+        self.box_x0.next = self.k0_13.val();
+        self.box_x1.next = self.k0_13.val();
+        self.box_y0.next = self.k0_13.val();
+        self.box_y1.next = self.k0_13.val();
+        self.box_empty.next = false;
+        if self.leave0.val() {
+            // >> 4 (arithmetic), then clamp to the screen.
+            self.box_x0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_x_u.val().get_bits::<13>(4)));
+            self.box_x1.next = self.box_x1_raw.val();
+            self.box_y0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_y_u.val().get_bits::<13>(4)));
+            self.box_y1.next = self.box_y1_raw.val();
+            if self.lo_x.val().get_bit(16) {
+                self.box_x0.next = self.k0_13.val();
+            }
+            if self.lo_y.val().get_bit(16) {
+                self.box_y0.next = self.k0_13.val();
+            }
+            if self.box_x1_raw.val() > self.w_minus_1.val() {
+                self.box_x1.next = self.w_minus_1.val();
+            }
+            if self.box_y1_raw.val() > self.h_minus_1.val() {
+                self.box_y1.next = self.h_minus_1.val();
+            }
+            self.box_empty.next = (self.box_x0.val() > self.box_x1.val()) | (self.box_y0.val() > self.box_y1.val());
+        }
+        self.box_x0_u.next = unsigned_cast(self.box_x0.val());
+        self.box_x1_u.next = unsigned_cast(self.box_x1.val());
+        self.box_y0_u.next = unsigned_cast(self.box_y0.val());
+        self.box_y1_u.next = unsigned_cast(self.box_y1.val());
 
         // The reciprocal of abs(det), requested when S1 holds a drawn triangle that S2 can take.
         self.det_abs.next = self.zb36.val();
@@ -1063,7 +1067,7 @@ impl Logic for Setup {
         self.dot_b.next = self.zs44.val();
         self.e_a.next = self.zs36.val();
         self.e_b.next = self.zs36.val();
-        if self.s2_v.q.val() {
+        if (self.s2_v.q.val() & !self.done2.val()) | self.leave2.val() {
             self.dot_a.next = signed_bit_cast_safe::<44, 43>(self.mul_a0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_a1.p.val());
             self.dot_b.next = signed_bit_cast_safe::<44, 43>(self.mul_b0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_b1.p.val());
             self.e_a.next = signed_bit_cast_safe::<36, 44>(self.dot_a.val()) - self.k1_36.val();
@@ -1086,13 +1090,13 @@ impl Logic for Setup {
         self.mul_g.a.next = self.op_ga.val();
         self.mul_g.b.next = self.op_gb.val();
         // The gradient from the product register: sat40((prod + 2^(sh-1)) >> sh), sh = shift + 4.
-        // (70-bit arithmetic is slow in the Rust simulation: evaluated only while S5 holds a record.)
+        // (70-bit arithmetic is slow in the Rust simulation: evaluated only in the cycles that use it.)
         self.round_half.next = self.k0_70.val();
         self.rounded.next = self.k0_70.val();
         self.shifted.next = self.k0_70.val();
         self.grad_hi.next = self.k0_31.val();
         self.grad.next = self.min40.val();
-        if self.s5_v.q.val() {
+        if (self.s5_v.q.val() & (self.s5_phase.q.val() == self.k1_2.val())) | self.leave5.val() {
             self.round_half.next = self.k8_70.val() << self.s5.q.val().shift;
             self.rounded.next = self.g_prod.q.val() + self.round_half.val();
             self.shifted.next = (self.rounded.val() >> self.s5.q.val().shift) >> self.k4_6.val();
@@ -1123,7 +1127,7 @@ impl Logic for Setup {
         self.c_frac.next = self.zs56.val();
         self.z0_plane.next = self.zs56.val();
         self.raw_now.next = self.zs56.val();
-        if self.s6_v.q.val() {
+        if (self.s6_v.q.val() & !self.done6.val()) | self.leave6.val() {
             self.ga.next = signed_cast(self.s6.q.val().a);
             self.gb.next = signed_cast(self.s6.q.val().b);
             self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().x0));
