@@ -6,122 +6,59 @@
 //!  x (36 b) --> smear the top set bit down (x | x>>1 | x>>2 ...) --> isolate it --> onehot (36 b)
 //!                                                                  --> OR-planes --> index (6 b)
 //! ```
+//!
+//! A leaf written as Verilog (like [`super::MulS`] and [`super::DivStep`]): the smear and the OR-planes
+//! are the Verilog in `hdl()`; the Rust model computes the same function with `leading_zeros` and
+//! skips re-evaluation while `x` is unchanged (rust-hdl keeps a 36-bit `Bits` as an array of bools, and
+//! this block sat on every simulation pass of the RC). The test below checks the Rust model; the RC's and
+//! colour setup's Verilog replays run the Verilog.
 
 use rust_hdl::prelude::*;
 
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Default)]
 pub struct LeadingOne36 {
     pub x: Signal<In, Bits<36>>,
     /// The top set bit of `x` alone.
     pub onehot: Signal<Out, Bits<36>>,
     /// Its index: floor(log2 x).
     pub index: Signal<Out, Bits<6>>,
-    smear1: Signal<Local, Bits<36>>,
-    smear2: Signal<Local, Bits<36>>,
-    smear4: Signal<Local, Bits<36>>,
-    smear8: Signal<Local, Bits<36>>,
-    smear16: Signal<Local, Bits<36>>,
-    smear32: Signal<Local, Bits<36>>,
-    hot: Signal<Local, Bits<36>>,
-    enc0: Signal<Local, Bits<6>>,
-    enc1: Signal<Local, Bits<6>>,
-    enc2: Signal<Local, Bits<6>>,
-    enc3: Signal<Local, Bits<6>>,
-    enc4: Signal<Local, Bits<6>>,
-    enc5: Signal<Local, Bits<6>>,
-    mask0: Constant<Bits<36>>,
-    mask1: Constant<Bits<36>>,
-    mask2: Constant<Bits<36>>,
-    mask3: Constant<Bits<36>>,
-    mask4: Constant<Bits<36>>,
-    mask5: Constant<Bits<36>>,
-    k0_6: Constant<Bits<6>>,
-    k1_6: Constant<Bits<6>>,
-    k2_6: Constant<Bits<6>>,
-    k4_6: Constant<Bits<6>>,
-    k8_6: Constant<Bits<6>>,
-    k16_6: Constant<Bits<6>>,
-    k32_6: Constant<Bits<6>>,
 }
 
 /// Bit j of the mask is set where bit `bit` of j is set: the encoder's OR-planes.
-fn encoder_mask(bit: u32) -> Bits<36> {
-    let m: u64 = (0..36u64).filter(|j| j >> bit & 1 == 1).map(|j| 1u64 << j).sum();
-    Bits::<36>::from(m)
-}
-
-impl Default for LeadingOne36 {
-    fn default() -> Self {
-        Self {
-            x: Default::default(),
-            onehot: Default::default(),
-            index: Default::default(),
-            smear1: Default::default(),
-            smear2: Default::default(),
-            smear4: Default::default(),
-            smear8: Default::default(),
-            smear16: Default::default(),
-            smear32: Default::default(),
-            hot: Default::default(),
-            enc0: Default::default(),
-            enc1: Default::default(),
-            enc2: Default::default(),
-            enc3: Default::default(),
-            enc4: Default::default(),
-            enc5: Default::default(),
-            mask0: Constant::new(encoder_mask(0)),
-            mask1: Constant::new(encoder_mask(1)),
-            mask2: Constant::new(encoder_mask(2)),
-            mask3: Constant::new(encoder_mask(3)),
-            mask4: Constant::new(encoder_mask(4)),
-            mask5: Constant::new(encoder_mask(5)),
-            k0_6: Constant::new(0.into()),
-            k1_6: Constant::new(1.into()),
-            k2_6: Constant::new(2.into()),
-            k4_6: Constant::new(4.into()),
-            k8_6: Constant::new(8.into()),
-            k16_6: Constant::new(16.into()),
-            k32_6: Constant::new(32.into()),
-        }
-    }
+fn encoder_mask(bit: u32) -> u64 {
+    (0..36u64).filter(|j| j >> bit & 1 == 1).map(|j| 1u64 << j).sum()
 }
 
 impl Logic for LeadingOne36 {
-    #[hdl_gen]
     fn update(&mut self) {
-        self.smear1.next = self.x.val() | (self.x.val() >> self.k1_6.val());
-        self.smear2.next = self.smear1.val() | (self.smear1.val() >> self.k2_6.val());
-        self.smear4.next = self.smear2.val() | (self.smear2.val() >> self.k4_6.val());
-        self.smear8.next = self.smear4.val() | (self.smear4.val() >> self.k8_6.val());
-        self.smear16.next = self.smear8.val() | (self.smear8.val() >> self.k16_6.val());
-        self.smear32.next = self.smear16.val() | (self.smear16.val() >> self.k32_6.val());
-        self.hot.next = self.smear32.val() ^ (self.smear32.val() >> self.k1_6.val());
-        self.enc0.next = self.k0_6.val();
-        self.enc1.next = self.k0_6.val();
-        self.enc2.next = self.k0_6.val();
-        self.enc3.next = self.k0_6.val();
-        self.enc4.next = self.k0_6.val();
-        self.enc5.next = self.k0_6.val();
-        if (self.hot.val() & self.mask0.val()).any() {
-            self.enc0.next = self.k1_6.val();
+        if !self.x.changed {
+            return;
         }
-        if (self.hot.val() & self.mask1.val()).any() {
-            self.enc1.next = self.k2_6.val();
-        }
-        if (self.hot.val() & self.mask2.val()).any() {
-            self.enc2.next = self.k4_6.val();
-        }
-        if (self.hot.val() & self.mask3.val()).any() {
-            self.enc3.next = self.k8_6.val();
-        }
-        if (self.hot.val() & self.mask4.val()).any() {
-            self.enc4.next = self.k16_6.val();
-        }
-        if (self.hot.val() & self.mask5.val()).any() {
-            self.enc5.next = self.k32_6.val();
-        }
-        self.onehot.next = self.hot.val();
-        self.index.next = self.enc0.val() | self.enc1.val() | self.enc2.val() | self.enc3.val() | self.enc4.val() | self.enc5.val();
+        let x = self.x.val().to_u64();
+        let (hot, index) = if x == 0 { (0, 0) } else { let i = 63 - x.leading_zeros() as u64; (1u64 << i, i) };
+        self.onehot.next = hot.into();
+        self.index.next = index.into();
+    }
+    fn connect(&mut self) {
+        self.onehot.connect();
+        self.index.connect();
+    }
+    fn hdl(&self) -> Verilog {
+        let planes: Vec<String> = (0..6).rev().map(|b| format!("|(hot & 36'h{:09x})", encoder_mask(b))).collect();
+        Verilog::Custom(format!(
+            "wire [35:0] smear1 = x | (x >> 1);
+wire [35:0] smear2 = smear1 | (smear1 >> 2);
+wire [35:0] smear4 = smear2 | (smear2 >> 4);
+wire [35:0] smear8 = smear4 | (smear4 >> 8);
+wire [35:0] smear16 = smear8 | (smear8 >> 16);
+wire [35:0] smear32 = smear16 | (smear16 >> 32);
+wire [35:0] hot = smear32 ^ (smear32 >> 1);
+always @(*) begin
+    onehot = hot;
+    index = {{{}}};
+end",
+            planes.join(", ")
+        ))
     }
 }
 

@@ -58,7 +58,8 @@ pub const REC_EOF: u64 = 3;
 /// Records the queue in front of the traversal holds.
 pub const RECORD_QUEUE: u64 = 4;
 
-/// A record on its way through S2..S6 and the queue. Signed values are kept as their bits.
+/// A record on its way through S2..S6 and the queue: what the traversal takes. Signed values are kept
+/// as their bits.
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
 pub struct SetupRec {
     /// REC_FRAME, REC_SKIP, REC_WALK or REC_EOF.
@@ -81,6 +82,14 @@ pub struct SetupRec {
     pub sy0: Bits<22>,
     pub sy1: Bits<22>,
     pub sy2: Bits<22>,
+    pub a: Bits<40>,
+    pub b: Bits<40>,
+    pub raw: Bits<56>,
+}
+
+/// What S2..S6 carry beside a [`SetupRec`] to find the depth plane (not queued).
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct PlaneIn {
     pub na: Bits<44>,
     pub nb: Bits<44>,
     pub x0: Bits<16>,
@@ -88,9 +97,6 @@ pub struct SetupRec {
     pub z0: Bits<24>,
     pub mant: Bits<25>,
     pub shift: Bits<6>,
-    pub a: Bits<40>,
-    pub b: Bits<40>,
-    pub raw: Bits<56>,
 }
 
 #[derive(LogicBlock)]
@@ -168,6 +174,7 @@ pub struct Setup {
     s2_v: DFF<Bit>,
     s2_phase: DFF<Bits<2>>,
     s2: DFF<SetupRec>,
+    s2p: DFF<PlaneIn>,
     la0: DFF<Signed<25>>,
     lb0: DFF<Signed<18>>,
     ra0: DFF<Signed<25>>,
@@ -192,18 +199,22 @@ pub struct Setup {
     // S3, S4 `Hold`.
     s3_v: DFF<Bit>,
     s3: DFF<SetupRec>,
+    s3p: DFF<PlaneIn>,
     s4_v: DFF<Bit>,
     s4: DFF<SetupRec>,
+    s4p: DFF<PlaneIn>,
     // S5 `Grad`: the record, its phase, the product register.
     s5_v: DFF<Bit>,
     s5_phase: DFF<Bits<2>>,
     s5: DFF<SetupRec>,
+    s5p: DFF<PlaneIn>,
     g_prod: DFF<Bits<70>>,
     // S6 `Plane`: the record, its phase, the two product registers, their sum, C and the sum of the
     // start terms.
     s6_v: DFF<Bit>,
     s6_phase: DFF<Bits<2>>,
     s6: DFF<SetupRec>,
+    s6p: DFF<PlaneIn>,
     p_prod: DFF<Bits<58>>,
     q_prod: DFF<Bits<58>>,
     p_acc: DFF<Signed<58>>,
@@ -482,6 +493,7 @@ impl Setup {
             s2_v: Default::default(),
             s2_phase: Default::default(),
             s2: Default::default(),
+            s2p: Default::default(),
             la0: Default::default(),
             lb0: Default::default(),
             ra0: Default::default(),
@@ -505,15 +517,19 @@ impl Setup {
             n_dy20: Default::default(),
             s3_v: Default::default(),
             s3: Default::default(),
+            s3p: Default::default(),
             s4_v: Default::default(),
             s4: Default::default(),
+            s4p: Default::default(),
             s5_v: Default::default(),
             s5_phase: Default::default(),
             s5: Default::default(),
+            s5p: Default::default(),
             g_prod: Default::default(),
             s6_v: Default::default(),
             s6_phase: Default::default(),
             s6: Default::default(),
+            s6p: Default::default(),
             p_prod: Default::default(),
             q_prod: Default::default(),
             p_acc: Default::default(),
@@ -732,7 +748,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s4_v, s4, s5_v, s5_phase, s5, g_prod, s6_v, s6_phase, s6, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5_phase, s5, s5p, g_prod, s6_v, s6_phase, s6, s6p, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -1081,11 +1097,11 @@ impl Logic for Setup {
 
         }
         // ---- S5 `Grad`: one 44x26 multiplier ----
-        self.op_ga.next = signed_cast(self.s5.q.val().na);
+        self.op_ga.next = signed_cast(self.s5p.q.val().na);
         self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.recip.result.data.val().mant));
         if self.s5_phase.q.val() != self.k0_2.val() {
-            self.op_ga.next = signed_cast(self.s5.q.val().nb);
-            self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.s5.q.val().mant));
+            self.op_ga.next = signed_cast(self.s5p.q.val().nb);
+            self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.s5p.q.val().mant));
         }
         self.mul_g.a.next = self.op_ga.val();
         self.mul_g.b.next = self.op_gb.val();
@@ -1097,12 +1113,12 @@ impl Logic for Setup {
         self.grad_hi.next = self.k0_31.val();
         self.grad.next = self.min40.val();
         if (self.s5_v.q.val() & (self.s5_phase.q.val() == self.k1_2.val())) | self.leave5.val() {
-            self.round_half.next = self.k8_70.val() << self.s5.q.val().shift;
+            self.round_half.next = self.k8_70.val() << self.s5p.q.val().shift;
             self.rounded.next = self.g_prod.q.val() + self.round_half.val();
-            self.shifted.next = (self.rounded.val() >> self.s5.q.val().shift) >> self.k4_6.val();
+            self.shifted.next = (self.rounded.val() >> self.s5p.q.val().shift) >> self.k4_6.val();
             if self.rounded.val().get_bit(69) {
                 // arithmetic shift of a negative value: complement, shift, complement
-                self.shifted.next = !((!self.rounded.val() >> self.s5.q.val().shift) >> self.k4_6.val());
+                self.shifted.next = !((!self.rounded.val() >> self.s5p.q.val().shift) >> self.k4_6.val());
             }
             self.grad_hi.next = self.shifted.val().get_bits::<31>(39);
             if (self.grad_hi.val() == self.k0_31.val()) | (self.grad_hi.val() == self.k1s_31.val()) {
@@ -1130,8 +1146,8 @@ impl Logic for Setup {
         if (self.s6_v.q.val() & !self.done6.val()) | self.leave6.val() {
             self.ga.next = signed_cast(self.s6.q.val().a);
             self.gb.next = signed_cast(self.s6.q.val().b);
-            self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().x0));
-            self.off_y.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6.q.val().y0));
+            self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6p.q.val().x0));
+            self.off_y.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6p.q.val().y0));
             // |A| <= 2^39, |8-x0| <= 2^15, X0 < 2^10: every product fits 58 bits (55 used).
             self.op_pb.next = signed_bit_cast_safe::<18, 17>(self.off_x.val());
             self.op_qb.next = signed_bit_cast_safe::<18, 17>(self.off_y.val());
@@ -1146,7 +1162,7 @@ impl Logic for Setup {
             // C = (z0 << 16) + round(acc >> 4): never saturates (see the module doc).
             self.acc_round.next = unsigned_cast(self.p_acc.q.val()) + self.k8_58.val();
             self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(4)));
-            self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s6.q.val().z0) << self.k16_6.val());
+            self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s6p.q.val().z0) << self.k16_6.val());
             self.raw_now.next = self.p_c.q.val() + self.p_s.q.val();
 
         }
@@ -1226,6 +1242,7 @@ impl Logic for Setup {
             self.s6_v.d.next = true;
             self.s6_phase.d.next = self.k0_2.val();
             self.s6.d.next = self.s5.q.val();
+            self.s6p.d.next = self.s5p.q.val();
             self.s6.d.next.b = unsigned_cast(self.grad.val());
         }
         // S5: phase 0 takes the reciprocal and forms na*mant; phase 1 A and nb*mant; B on leaving.
@@ -1234,8 +1251,8 @@ impl Logic for Setup {
                 if self.take.val() {
                     self.s5_phase.d.next = self.k1_2.val();
                     self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
-                    self.s5.d.next.mant = self.recip.result.data.val().mant;
-                    self.s5.d.next.shift = self.recip.result.data.val().shift;
+                    self.s5p.d.next.mant = self.recip.result.data.val().mant;
+                    self.s5p.d.next.shift = self.recip.result.data.val().shift;
                 }
             } else {
                 self.s5_phase.d.next = self.k2_2.val();
@@ -1250,6 +1267,7 @@ impl Logic for Setup {
             self.s5_v.d.next = true;
             self.s5_phase.d.next = self.k0_2.val();
             self.s5.d.next = self.s4.q.val();
+            self.s5p.d.next = self.s4p.q.val();
         }
         // S4, S3: hold.
         if self.leave4.val() {
@@ -1258,6 +1276,7 @@ impl Logic for Setup {
         if self.leave3.val() {
             self.s4_v.d.next = true;
             self.s4.d.next = self.s3.q.val();
+            self.s4p.d.next = self.s3p.q.val();
         }
         if self.leave3.val() {
             self.s3_v.d.next = false;
@@ -1265,7 +1284,8 @@ impl Logic for Setup {
         if self.leave2.val() {
             self.s3_v.d.next = true;
             self.s3.d.next = self.s2.q.val();
-            self.s3.d.next.nb = unsigned_cast(self.dot_b.val());
+            self.s3p.d.next = self.s2p.q.val();
+            self.s3p.d.next.nb = unsigned_cast(self.dot_b.val());
         }
         // S2: phase 0 E0, E1; phase 1 E2, na; nb on leaving.
         if self.s2_v.q.val() & self.walk2.val() & !self.done2.val() {
@@ -1275,7 +1295,7 @@ impl Logic for Setup {
                 self.s2.d.next.e1 = unsigned_cast(self.e_b.val());
             } else {
                 self.s2.d.next.e2 = unsigned_cast(self.e_a.val());
-                self.s2.d.next.na = unsigned_cast(self.dot_b.val());
+                self.s2p.d.next.na = unsigned_cast(self.dot_b.val());
             }
         }
         if self.leave2.val() {
@@ -1300,9 +1320,9 @@ impl Logic for Setup {
             self.s2.d.next.sy0 = unsigned_cast(self.sty_0.val());
             self.s2.d.next.sy1 = unsigned_cast(self.sty_1.val());
             self.s2.d.next.sy2 = unsigned_cast(self.sty_2.val());
-            self.s2.d.next.x0 = unsigned_cast(self.cx0.val());
-            self.s2.d.next.y0 = unsigned_cast(self.cy0.val());
-            self.s2.d.next.z0 = self.cz0.val();
+            self.s2p.d.next.x0 = unsigned_cast(self.cx0.val());
+            self.s2p.d.next.y0 = unsigned_cast(self.cy0.val());
+            self.s2p.d.next.z0 = self.cz0.val();
             self.la0.d.next = signed_bit_cast_safe::<25, 17>(self.edx_0.val());
             self.lb0.d.next = self.py_0.val();
             self.ra0.d.next = signed_bit_cast_safe::<25, 17>(self.edy_0.val());
