@@ -27,6 +27,12 @@ impl Logic for DivStep {
     fn update(&mut self) {
         const M37: u64 = (1 << 37) - 1;
         const M25: u64 = (1 << 25) - 1;
+        // Inputs unchanged since the last evaluation: the outputs stand. Only the all-zero start (whose
+        // step is 0 -> quo 1, not the outputs' initial 0) is always evaluated.
+        let start = self.quo_next.val().to_u64() == 0 && self.rem_next.val().to_u64() == 0;
+        if !self.rem.changed && !self.den.changed && !self.quo.changed && !start {
+            return;
+        }
         let (rem, den, quo) = (self.rem.val().to_u64(), self.den.val().to_u64(), self.quo.val().to_u64());
         let (r, q) = if rem >= den { ((rem - den) << 1, (quo << 1) | 1) } else { (rem << 1, quo << 1) };
         self.rem_next.next = (r & M37).into();

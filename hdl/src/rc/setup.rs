@@ -276,6 +276,18 @@ pub struct Setup {
     box_y0: Signal<Local, Signed<13>>,
     box_y1: Signal<Local, Signed<13>>,
     box_empty: Signal<Local, Bit>,
+    o0x: Signal<Local, Bits<16>>,
+    o0y: Signal<Local, Bits<16>>,
+    o1x: Signal<Local, Bits<16>>,
+    o1y: Signal<Local, Bits<16>>,
+    o2x: Signal<Local, Bits<16>>,
+    o2y: Signal<Local, Bits<16>>,
+    bx1r_o: Signal<Local, Bits<13>>,
+    by1r_o: Signal<Local, Bits<13>>,
+    bx0_o: Signal<Local, Bits<13>>,
+    bx1_o: Signal<Local, Bits<13>>,
+    by0_o: Signal<Local, Bits<13>>,
+    by1_o: Signal<Local, Bits<13>>,
     lo_x_u: Signal<Local, Bits<17>>,
     hi_x_u: Signal<Local, Bits<17>>,
     lo_y_u: Signal<Local, Bits<17>>,
@@ -385,6 +397,11 @@ pub struct Setup {
 
     // Constants
     w_minus_1: Constant<Signed<13>>,
+    w_minus_1_o: Constant<Bits<13>>,
+    h_minus_1_o: Constant<Bits<13>>,
+    k_sign16: Constant<Bits<16>>,
+    k_sign13: Constant<Bits<13>>,
+    zb13: Constant<Bits<13>>,
     h_minus_1: Constant<Signed<13>>,
     width: Constant<Bits<16>>,
     k7_17: Constant<Signed<17>>,
@@ -587,6 +604,18 @@ impl Setup {
             box_y0: Default::default(),
             box_y1: Default::default(),
             box_empty: Default::default(),
+            o0x: Default::default(),
+            o0y: Default::default(),
+            o1x: Default::default(),
+            o1y: Default::default(),
+            o2x: Default::default(),
+            o2y: Default::default(),
+            bx1r_o: Default::default(),
+            by1r_o: Default::default(),
+            bx0_o: Default::default(),
+            bx1_o: Default::default(),
+            by0_o: Default::default(),
+            by1_o: Default::default(),
             lo_x_u: Default::default(),
             hi_x_u: Default::default(),
             lo_y_u: Default::default(),
@@ -689,6 +718,11 @@ impl Setup {
             z0_plane: Default::default(),
             raw_now: Default::default(),
             w_minus_1: Constant::new((width as i64 - 1).into()),
+            w_minus_1_o: Constant::new(((width as u64 - 1) ^ 0x1000).into()),
+            h_minus_1_o: Constant::new(((height as u64 - 1) ^ 0x1000).into()),
+            k_sign16: Constant::new(0x8000u64.into()),
+            k_sign13: Constant::new(0x1000u64.into()),
+            zb13: Constant::new(0.into()),
             h_minus_1: Constant::new((height as i64 - 1).into()),
             width: Constant::new((width as u64).into()),
             k7_17: Constant::new(7.into()),
@@ -854,8 +888,8 @@ impl Logic for Setup {
         self.leave0.next = self.s0_v.q.val() & self.free1.val();
         self.cmd.ready.next = !self.s0_v.q.val() | self.leave0.val();
 
-        // S1's canonical order and edges, needed only in the cycle S1 hands its record on.
-        if self.leave1.val() {
+        // S1's canonical order and edges.
+        if self.s1_v.q.val() {
             // Canonical order: vertices 1 and 2 swapped where det < 0.
             self.cx0.next = signed_cast(self.s1.q.val().x0);
             self.cy0.next = signed_cast(self.s1.q.val().y0);
@@ -933,7 +967,7 @@ impl Logic for Setup {
         self.dx20.next = self.zs17.val();
         self.dy20.next = self.zs17.val();
         self.det.next = self.zs36.val();
-        if self.leave0.val() {
+        if self.s0_v.q.val() {
             self.v0x.next = signed_cast(self.s0.q.val().x0);
             self.v0y.next = signed_cast(self.s0.q.val().y0);
             self.v1x.next = signed_cast(self.s0.q.val().x1);
@@ -951,8 +985,10 @@ impl Logic for Setup {
         self.mul_d1.a.next = self.dx20.val();
         self.mul_d1.b.next = self.dy10.val();
         // The bounding box does not depend on the vertex order. (Signed compares are slow in the Rust
-        // simulation: det and the box are evaluated only in the cycle S0 hands its command on, the one
-        // cycle S1 takes them.)
+        // simulation: det and the box are evaluated only while S0 holds a command. Every stage's
+        // arithmetic is gated by its own valid register, never by the handshake, which would put the
+        // leave chain in front of the arithmetic: gating S0 by its `leave` took the RC from 45.5 to
+        // 35.4 MHz on the ECP5.)
         self.xmin.next = self.v0x.val();
         self.xmax.next = self.v0x.val();
         self.ymin.next = self.v0y.val();
@@ -961,29 +997,37 @@ impl Logic for Setup {
         self.hi_x.next = self.k0_17.val();
         self.lo_y.next = self.k0_17.val();
         self.hi_y.next = self.k0_17.val();
-        if self.leave0.val() {
-            if self.v1x.val() < self.v0x.val() {
+        // Signed order as unsigned order with the sign bits flipped (offset binary): the same compare in
+        // hardware, and rust-hdl's Signed compare goes through BigInt.
+        self.o0x.next = self.s0.q.val().x0 ^ self.k_sign16.val();
+        self.o0y.next = self.s0.q.val().y0 ^ self.k_sign16.val();
+        self.o1x.next = self.s0.q.val().x1 ^ self.k_sign16.val();
+        self.o1y.next = self.s0.q.val().y1 ^ self.k_sign16.val();
+        self.o2x.next = self.s0.q.val().x2 ^ self.k_sign16.val();
+        self.o2y.next = self.s0.q.val().y2 ^ self.k_sign16.val();
+        if self.s0_v.q.val() {
+            if self.o1x.val() < self.o0x.val() {
                 self.xmin.next = self.v1x.val();
             }
-            if (self.v2x.val() < self.v1x.val()) & (self.v2x.val() < self.v0x.val()) {
+            if (self.o2x.val() < self.o1x.val()) & (self.o2x.val() < self.o0x.val()) {
                 self.xmin.next = self.v2x.val();
             }
-            if self.v1x.val() > self.v0x.val() {
+            if self.o1x.val() > self.o0x.val() {
                 self.xmax.next = self.v1x.val();
             }
-            if (self.v2x.val() > self.v1x.val()) & (self.v2x.val() > self.v0x.val()) {
+            if (self.o2x.val() > self.o1x.val()) & (self.o2x.val() > self.o0x.val()) {
                 self.xmax.next = self.v2x.val();
             }
-            if self.v1y.val() < self.v0y.val() {
+            if self.o1y.val() < self.o0y.val() {
                 self.ymin.next = self.v1y.val();
             }
-            if (self.v2y.val() < self.v1y.val()) & (self.v2y.val() < self.v0y.val()) {
+            if (self.o2y.val() < self.o1y.val()) & (self.o2y.val() < self.o0y.val()) {
                 self.ymin.next = self.v2y.val();
             }
-            if self.v1y.val() > self.v0y.val() {
+            if self.o1y.val() > self.o0y.val() {
                 self.ymax.next = self.v1y.val();
             }
-            if (self.v2y.val() > self.v1y.val()) & (self.v2y.val() > self.v0y.val()) {
+            if (self.o2y.val() > self.o1y.val()) & (self.o2y.val() > self.o0y.val()) {
                 self.ymax.next = self.v2y.val();
             }
             self.lo_x.next = signed_bit_cast_safe::<17, 16>(self.xmin.val()) + self.k7_17.val();
@@ -998,12 +1042,18 @@ impl Logic for Setup {
         self.hi_y_u.next = unsigned_cast(self.hi_y.val());
         self.box_x1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_x_u.val().get_bits::<13>(4)));
         self.box_y1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_y_u.val().get_bits::<13>(4)));
+        self.bx1r_o.next = unsigned_cast(self.box_x1_raw.val()) ^ self.k_sign13.val();
+        self.by1r_o.next = unsigned_cast(self.box_y1_raw.val()) ^ self.k_sign13.val();
         self.box_x0.next = self.k0_13.val();
         self.box_x1.next = self.k0_13.val();
         self.box_y0.next = self.k0_13.val();
         self.box_y1.next = self.k0_13.val();
         self.box_empty.next = false;
-        if self.leave0.val() {
+        self.bx0_o.next = self.zb13.val();
+        self.bx1_o.next = self.zb13.val();
+        self.by0_o.next = self.zb13.val();
+        self.by1_o.next = self.zb13.val();
+        if self.s0_v.q.val() {
             // >> 4 (arithmetic), then clamp to the screen.
             self.box_x0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_x_u.val().get_bits::<13>(4)));
             self.box_x1.next = self.box_x1_raw.val();
@@ -1015,13 +1065,17 @@ impl Logic for Setup {
             if self.lo_y.val().get_bit(16) {
                 self.box_y0.next = self.k0_13.val();
             }
-            if self.box_x1_raw.val() > self.w_minus_1.val() {
+            if self.bx1r_o.val() > self.w_minus_1_o.val() {
                 self.box_x1.next = self.w_minus_1.val();
             }
-            if self.box_y1_raw.val() > self.h_minus_1.val() {
+            if self.by1r_o.val() > self.h_minus_1_o.val() {
                 self.box_y1.next = self.h_minus_1.val();
             }
-            self.box_empty.next = (self.box_x0.val() > self.box_x1.val()) | (self.box_y0.val() > self.box_y1.val());
+            self.bx0_o.next = unsigned_cast(self.box_x0.val()) ^ self.k_sign13.val();
+            self.bx1_o.next = unsigned_cast(self.box_x1.val()) ^ self.k_sign13.val();
+            self.by0_o.next = unsigned_cast(self.box_y0.val()) ^ self.k_sign13.val();
+            self.by1_o.next = unsigned_cast(self.box_y1.val()) ^ self.k_sign13.val();
+            self.box_empty.next = (self.bx0_o.val() > self.bx1_o.val()) | (self.by0_o.val() > self.by1_o.val());
         }
         self.box_x0_u.next = unsigned_cast(self.box_x0.val());
         self.box_x1_u.next = unsigned_cast(self.box_x1.val());
@@ -1083,7 +1137,7 @@ impl Logic for Setup {
         self.dot_b.next = self.zs44.val();
         self.e_a.next = self.zs36.val();
         self.e_b.next = self.zs36.val();
-        if (self.s2_v.q.val() & !self.done2.val()) | self.leave2.val() {
+        if self.s2_v.q.val() {
             self.dot_a.next = signed_bit_cast_safe::<44, 43>(self.mul_a0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_a1.p.val());
             self.dot_b.next = signed_bit_cast_safe::<44, 43>(self.mul_b0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_b1.p.val());
             self.e_a.next = signed_bit_cast_safe::<36, 44>(self.dot_a.val()) - self.k1_36.val();
@@ -1106,13 +1160,13 @@ impl Logic for Setup {
         self.mul_g.a.next = self.op_ga.val();
         self.mul_g.b.next = self.op_gb.val();
         // The gradient from the product register: sat40((prod + 2^(sh-1)) >> sh), sh = shift + 4.
-        // (70-bit arithmetic is slow in the Rust simulation: evaluated only in the cycles that use it.)
+        // (70-bit arithmetic is slow in the Rust simulation: evaluated only while S5 holds a product.)
         self.round_half.next = self.k0_70.val();
         self.rounded.next = self.k0_70.val();
         self.shifted.next = self.k0_70.val();
         self.grad_hi.next = self.k0_31.val();
         self.grad.next = self.min40.val();
-        if (self.s5_v.q.val() & (self.s5_phase.q.val() == self.k1_2.val())) | self.leave5.val() {
+        if self.s5_v.q.val() & (self.s5_phase.q.val() != self.k0_2.val()) {
             self.round_half.next = self.k8_70.val() << self.s5p.q.val().shift;
             self.rounded.next = self.g_prod.q.val() + self.round_half.val();
             self.shifted.next = (self.rounded.val() >> self.s5p.q.val().shift) >> self.k4_6.val();
@@ -1143,7 +1197,7 @@ impl Logic for Setup {
         self.c_frac.next = self.zs56.val();
         self.z0_plane.next = self.zs56.val();
         self.raw_now.next = self.zs56.val();
-        if (self.s6_v.q.val() & !self.done6.val()) | self.leave6.val() {
+        if self.s6_v.q.val() {
             self.ga.next = signed_cast(self.s6.q.val().a);
             self.gb.next = signed_cast(self.s6.q.val().b);
             self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6p.q.val().x0));
