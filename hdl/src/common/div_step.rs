@@ -12,7 +12,7 @@
 
 use rust_hdl::prelude::*;
 
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock)]
 pub struct DivStep {
     /// Partial remainder (< 2 * den) and divisor.
     pub rem: Signal<In, Bits<37>>,
@@ -23,14 +23,22 @@ pub struct DivStep {
     pub quo_next: Signal<Out, Bits<25>>,
 }
 
+impl Default for DivStep {
+    /// The outputs start as the step of the all-zero inputs (0 >= 0: remainder 0, quotient 1), so that
+    /// `update` may skip every evaluation whose inputs did not change, the first one included.
+    fn default() -> Self {
+        let mut s = Self { rem: Default::default(), den: Default::default(), quo: Default::default(), rem_next: Default::default(), quo_next: Default::default() };
+        s.quo_next.next = 1u64.into();
+        s
+    }
+}
+
 impl Logic for DivStep {
     fn update(&mut self) {
         const M37: u64 = (1 << 37) - 1;
         const M25: u64 = (1 << 25) - 1;
-        // Inputs unchanged since the last evaluation: the outputs stand. Only the all-zero start (whose
-        // step is 0 -> quo 1, not the outputs' initial 0) is always evaluated.
-        let start = self.quo_next.val().to_u64() == 0 && self.rem_next.val().to_u64() == 0;
-        if !self.rem.changed && !self.den.changed && !self.quo.changed && !start {
+        // Inputs unchanged since the last evaluation: the outputs stand (see `Default`).
+        if !self.rem.changed && !self.den.changed && !self.quo.changed {
             return;
         }
         let (rem, den, quo) = (self.rem.val().to_u64(), self.den.val().to_u64(), self.quo.val().to_u64());
@@ -83,5 +91,14 @@ mod tests {
             }
             assert_eq!(quo as u128, (1u128 << (s + 24)) / det as u128, "det {det}");
         }
+    }
+
+    /// A step whose inputs never change from the all-zero start still shows that step's result.
+    #[test]
+    fn the_all_zero_start_shows_its_own_step() {
+        let mut step = DivStep::default();
+        step.connect_all();
+        assert!(simulate(&mut step, 10));
+        assert_eq!((step.rem_next.val().to_u64(), step.quo_next.val().to_u64()), (0, 1));
     }
 }
