@@ -14,7 +14,7 @@ pub mod stream;
 pub use div_step::DivStep;
 pub use fast_ram::FastRAM;
 pub use leading_one::LeadingOne36;
-pub use mul::{mul_split_verilog, MulS, MulSplit, MulU};
+pub use mul::{MulS, MulU};
 pub use stream::{StreamIn, StreamOut};
 
 use rust_hdl::prelude::*;

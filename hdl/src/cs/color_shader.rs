@@ -49,7 +49,8 @@
 //! `video_tdata` follows the AXI4-Stream video convention for RGB (Xilinx UG934): R in 23:16, B in
 //! 15:8, G in 7:0; `background` uses the same packing.
 
-use crate::common::{signed_bit_cast_safe, FastRAM, MulSplit};
+use crate::common::{signed_bit_cast_safe, FastRAM};
+use crate::cs::plane_mul::PlaneMul;
 use crate::cs::light_unit::LightUnit;
 use crate::cs::normalizer::Normalizer;
 use crate::cs::video_fifo::VideoFifo;
@@ -127,12 +128,12 @@ pub struct ColorShader {
     lights: [LightUnit; CS_LIGHTS],
     gloss_ram: FastRAM<Bits<3>, CS_MATERIAL_BITS>,
     ambient_ram: FastRAM<MaterialWord, CS_MATERIAL_BITS>,
-    mul_ra: MulSplit<11, 40, 51, 10, 0>,
-    mul_rb: MulSplit<11, 40, 51, 10, 0>,
-    mul_ga: MulSplit<11, 40, 51, 10, 0>,
-    mul_gb: MulSplit<11, 40, 51, 10, 0>,
-    mul_ba: MulSplit<11, 40, 51, 10, 0>,
-    mul_bb: MulSplit<11, 40, 51, 10, 0>,
+    mul_ra: PlaneMul,
+    mul_rb: PlaneMul,
+    mul_ga: PlaneMul,
+    mul_gb: PlaneMul,
+    mul_ba: PlaneMul,
+    mul_bb: PlaneMul,
     // Frame control
     running: DFF<Bit>,
     size_err: DFF<Bit>,
@@ -560,18 +561,18 @@ impl Logic for ColorShader {
         // s3 -> s4: the record arrives; a*X, b*Y for three channels.
         self.px.next = signed_cast(bit_cast::<11, 10>(self.s3_x.q.val()));
         self.py.next = signed_cast(bit_cast::<11, 10>(self.s3_y.q.val()));
-        self.mul_ra.a.next = self.px.val();
-        self.mul_ra.b.next = signed_cast(self.tdbs_read_data.val().r_a);
-        self.mul_rb.a.next = self.py.val();
-        self.mul_rb.b.next = signed_cast(self.tdbs_read_data.val().r_b);
-        self.mul_ga.a.next = self.px.val();
-        self.mul_ga.b.next = signed_cast(self.tdbs_read_data.val().g_a);
-        self.mul_gb.a.next = self.py.val();
-        self.mul_gb.b.next = signed_cast(self.tdbs_read_data.val().g_b);
-        self.mul_ba.a.next = self.px.val();
-        self.mul_ba.b.next = signed_cast(self.tdbs_read_data.val().b_a);
-        self.mul_bb.a.next = self.py.val();
-        self.mul_bb.b.next = signed_cast(self.tdbs_read_data.val().b_b);
+        self.mul_ra.a.next = signed_cast(self.tdbs_read_data.val().r_a);
+        self.mul_ra.b.next = self.px.val();
+        self.mul_rb.a.next = signed_cast(self.tdbs_read_data.val().r_b);
+        self.mul_rb.b.next = self.py.val();
+        self.mul_ga.a.next = signed_cast(self.tdbs_read_data.val().g_a);
+        self.mul_ga.b.next = self.px.val();
+        self.mul_gb.a.next = signed_cast(self.tdbs_read_data.val().g_b);
+        self.mul_gb.b.next = self.py.val();
+        self.mul_ba.a.next = signed_cast(self.tdbs_read_data.val().b_a);
+        self.mul_ba.b.next = self.px.val();
+        self.mul_bb.a.next = signed_cast(self.tdbs_read_data.val().b_b);
+        self.mul_bb.b.next = self.py.val();
         self.s4_valid.d.next = self.s3_valid.q.val();
         self.s4_sof.d.next = self.s3_sof.q.val();
         self.s4_eol.d.next = self.s3_eol.q.val();

@@ -47,7 +47,7 @@
 //! |det| < 2^33, |numerator| < 2^34, |n*mant| < 2^58, |A*(8-x0)| < 2^56: the 64-bit products and sums
 //! never wrap. All payload outputs are 0 while their enable is low.
 
-use crate::common::{signed_bit_cast_safe, DivStep, LeadingOne36, MulS, MulSplit, StreamIn};
+use crate::common::{signed_bit_cast_safe, DivStep, LeadingOne36, MulS, StreamIn};
 use crate::cs::plane_round::PlaneRound;
 use crate::cs::{SetupCommand, TdbsRecord};
 use rust_hdl::prelude::*;
@@ -122,8 +122,8 @@ pub struct ColourSetup {
     pc: [DFF<Signed<64>>; 2],
     lead: LeadingOne36,
     mn: [MulS<18, 18, 36>; 4],
-    mab: [MulSplit<26, 36, 64, 8, 0>; 2],
-    mc: [MulSplit<40, 18, 64, 5, 0>; 2],
+    mab: [MulS<36, 26, 64>; 2],
+    mc: [MulS<40, 18, 64>; 2],
     round: [PlaneRound; 2],
     /// One division step per station 2..=8 (`step[k]` steps station k + 2).
     step: [DivStep; 7],
@@ -877,8 +877,8 @@ impl Logic for ColourSetup {
         self.sh_ab2.d.next = self.sh_ab1.q.val();
         self.z_ab2.d.next = self.z_ab1.q.val();
         for u in 0..2 {
-            self.mab[u].a.next = self.opab_m.q.val();
-            self.mab[u].b.next = self.opab_n[u].q.val();
+            self.mab[u].a.next = self.opab_n[u].q.val();
+            self.mab[u].b.next = self.opab_m.q.val();
             self.pab[u].d.next = self.mab[u].p.val();
             self.round[u].p.next = self.pab[u].q.val();
             self.round[u].sh.next = self.sh_ab2.q.val();

@@ -30,6 +30,7 @@ pub mod color_shader;
 pub mod gloss_square;
 pub mod light_unit;
 pub mod normalizer;
+pub mod plane_mul;
 pub mod plane_round;
 pub mod colour_setup;
 pub mod video_fifo;

@@ -47,7 +47,7 @@
 
 use super::reciprocal::Reciprocal;
 use super::RcCommand;
-use crate::common::{signed_bit_cast_safe, MulS, MulSplit, StreamIn};
+use crate::common::{signed_bit_cast_safe, MulS, StreamIn};
 use rust_hdl::prelude::*;
 
 /// Record kinds handed to the traversal.
@@ -148,15 +148,15 @@ pub struct Setup {
     mul_d0: MulS<17, 17, 34>,
     mul_d1: MulS<17, 17, 34>,
     /// S2: two dot units, a0*b0 - a1*b1 and c0*d0 - c1*d1.
-    mul_a0: MulSplit<25, 18, 43, 7, 0>,
-    mul_a1: MulSplit<25, 18, 43, 7, 0>,
-    mul_b0: MulSplit<25, 18, 43, 7, 0>,
-    mul_b1: MulSplit<25, 18, 43, 7, 0>,
+    mul_a0: MulS<25, 18, 43>,
+    mul_a1: MulS<25, 18, 43>,
+    mul_b0: MulS<25, 18, 43>,
+    mul_b1: MulS<25, 18, 43>,
     /// S5: the gradients.
-    mul_g: MulSplit<44, 26, 70, 9, 8>,
+    mul_g: MulS<44, 26, 70>,
     /// S6: the plane's two products per cycle.
-    mul_p: MulSplit<40, 18, 58, 5, 0>,
-    mul_q: MulSplit<40, 18, 58, 5, 0>,
+    mul_p: MulS<40, 18, 58>,
+    mul_q: MulS<40, 18, 58>,
 
     // S0 `Det`: the command.
     s0_v: DFF<Bit>,
