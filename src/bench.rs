@@ -123,6 +123,14 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
         bar.inc(1);
     }
 
+    // The traversal's walk (not visible at the chipset's ports): the RC cycle model on each case's
+    // steady-state commands; the model equals the RTL in every cycle (tb/tests/rc_rtl.rs).
+    let mut traversal = Vec::new();
+    for case in &cases {
+        bar.set_message(format!("traversal {} {}x{}", case.scene, case.opts.screen.width, case.opts.screen.height));
+        traversal.push(traversal_row(case, &frames)?);
+    }
+
     // RustHDL: one whole frame, measured. Quick mode keeps it short with a small screen.
     let rtl = {
         let (scene, (w, h)) = if args.quick {
@@ -168,6 +176,7 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
         rusthdl_cycles_equal_verilators: rtl_check,
         rusthdl_teapot_seconds_estimate: teapot_estimate,
         frames,
+        traversal,
         setup,
         fmax,
     };
@@ -541,6 +550,59 @@ fn stimulus(kind: Stim, n: usize) -> (Vec<golden::render::RcCommand>, golden::ra
     ((0..n).map(|i| golden::render::RcCommand { index: i as u32 + 1, v: tri }).collect(), cull, front)
 }
 
+/// The traversal of one scene and size: clocks spent walking triangles and those that delivered a
+/// fragment to the Z-test (the rest looked at candidates outside the triangle or ended a row).
+#[derive(Serialize, Clone)]
+struct TraversalRow {
+    scene: String,
+    size: [u32; 2],
+    walk_clocks: u64,
+    fragment_clocks: u64,
+    /// fragment_clocks / walk_clocks.
+    share: f64,
+    /// Z reads of the cycle model's frame, and whether they equal the Verilated steady-state frame's
+    /// (the check that the model ran the same commands as the chipset).
+    z_reads: u64,
+    z_reads_equal_verilators: Option<bool>,
+}
+
+/// Records the frames a render hands the chipset, and draws them with the golden chipset.
+struct JobTap {
+    inner: golden::render::GoldenChipset,
+    jobs: Vec<golden::render::FrameJob>,
+}
+
+impl golden::render::Chipset for JobTap {
+    fn run(&mut self, frames: &[golden::render::FrameJob], host: &mut dyn golden::render::LowerPipeline) -> Result<Vec<golden::render::FrameOut>, String> {
+        self.jobs.extend(frames.iter().cloned());
+        self.inner.run(frames, host)
+    }
+}
+
+fn traversal_row(case: &Case, frames: &[FrameRow]) -> Result<TraversalRow, String> {
+    use golden::cycle::rc::RcCmd;
+    let s = case.opts.screen;
+    let mut tap = JobTap { inner: golden::render::GoldenChipset::new(s), jobs: Vec::new() };
+    golden::render::render_with(&case.mesh, &case.opts, &mut tap)?;
+    let job = tap.jobs.last().ok_or_else(|| format!("traversal bench: rendering {} handed the chipset no frame", case.scene))?;
+    let mut cmds = vec![RcCmd::frame(true)];
+    for t in &job.tris {
+        cmds.push(RcCmd::triangle(t.index, t.v, job.cull, job.front)?);
+    }
+    cmds.push(RcCmd::end_of_frame());
+    let run = tb::rc::bench::run_model(s, &cmds, tb::rc::bench::Drive::ideal(), None)?;
+    let steady = frames.iter().filter(|f| f.scene == case.scene && f.size == [s.width, s.height]).last();
+    Ok(TraversalRow {
+        scene: case.scene.clone(),
+        size: [s.width, s.height],
+        walk_clocks: run.walk_clocks,
+        fragment_clocks: run.walk_fragment_clocks,
+        share: run.walk_fragment_clocks as f64 / run.walk_clocks.max(1) as f64,
+        z_reads: run.z_reads,
+        z_reads_equal_verilators: steady.and_then(|f| f.phases.map(|p| p.z_reads == run.z_reads)),
+    })
+}
+
 /// A host that answers every visible triangle with a flat white colour-setup command.
 struct FlatHost(Vec<golden::render::RcCommand>);
 
@@ -895,6 +957,8 @@ struct Report {
     rusthdl_teapot_seconds_estimate: Option<f64>,
     /// The Verilated frames' accounting: every scene and size, frames 1 and 2.
     frames: Vec<FrameRow>,
+    /// The traversal's clocks per scene and size (cycle model, steady-state commands).
+    traversal: Vec<TraversalRow>,
     setup: Vec<SetupRow>,
     fmax: FmaxSection,
 }
@@ -1150,6 +1214,34 @@ fn markdown(r: &Report) -> String {
             pct(hi)
         );
     }
+    let _ = writeln!(
+        md,
+        "\nThe traversal's walk, from the RC cycle model on each steady-state frame's commands (the model equals the \
+         RTL in every cycle, `tb/tests/rc_rtl.rs`; the walk is not visible at the chipset's ports): clocks spent \
+         walking triangles, and the share of them that delivered a fragment to the Z-test (the others skipped \
+         candidates outside the triangle or ended a row). Z reads equal to the Verilated frame's show that the model \
+         ran the chipset's commands.\n"
+    );
+    let rows: Vec<Vec<String>> = r
+        .traversal
+        .iter()
+        .map(|t| {
+            vec![
+                t.scene.clone(),
+                size_str(t.size),
+                t.walk_clocks.to_string(),
+                t.fragment_clocks.to_string(),
+                pct(t.share),
+                t.z_reads.to_string(),
+                match t.z_reads_equal_verilators {
+                    Some(true) => "yes".into(),
+                    Some(false) => "**no**".into(),
+                    None => "-".into(),
+                },
+            ]
+        })
+        .collect();
+    md += &table(&["scene", "size", "walk clocks", "clocks with a fragment", "share", "Z reads (model)", "equal to Verilator's"], &rows);
     let _ = writeln!(
         md,
         "\nRC setup, back to back (rasterization cycles per added triangle between a frame of {FEW} and one of {MANY} \

@@ -157,6 +157,25 @@ fn quick_bench_writes_a_table_whose_figures_agree_with_its_raw_counts_and_the_fp
             assert_eq!(c("z_reads"), f["fragments_model"].as_u64().unwrap(), "{scene} {sz} frame {frame}");
         }
     }
+    // The traversal's walk: one row per scene and size; every clock that delivers a fragment delivers
+    // exactly one (so those clocks are the model's Z reads), the model's Z reads are the algorithmic RC's
+    // fragments and the Verilated chipset's, and the share is recomputed and printed.
+    let tt = table(&md, "clocks with a fragment");
+    let trav = json["traversal"].as_array().unwrap();
+    assert_eq!(trav.len(), 8, "4 scenes x 2 sizes");
+    for t in trav {
+        let (scene, sz) = (t["scene"].as_str().unwrap(), size(&t["size"]));
+        let (walk, frag) = (t["walk_clocks"].as_u64().unwrap(), t["fragment_clocks"].as_u64().unwrap());
+        assert!(frag > 0 && frag <= walk, "{t}");
+        assert_eq!(frag, t["z_reads"].as_u64().unwrap(), "{scene} {sz}: one fragment per delivering clock");
+        let steady = frames.iter().find(|f| f["scene"] == t["scene"] && f["size"] == t["size"] && f["frame"] == 3).unwrap();
+        assert_eq!(t["z_reads"], steady["fragments_model"], "{scene} {sz}: the model's Z reads are the algorithmic RC's fragments");
+        assert_eq!(t["z_reads_equal_verilators"], true, "{scene} {sz}");
+        assert!(close(f64_of(&t["share"]), frag as f64 / walk as f64));
+        let r = row(&tt, scene, &sz, None);
+        assert_eq!(r["share"], format!("{:.1}%", 100.0 * frag as f64 / walk as f64));
+        assert_eq!(r["walk clocks"], walk.to_string());
+    }
     // Back-to-back RC setup: both simulators count the same, and a drawn triangle costs more than a culled one.
     let setup = json["setup"].as_array().unwrap();
     assert_eq!(setup.len(), 2);
