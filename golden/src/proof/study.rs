@@ -20,6 +20,22 @@ pub fn cli_options(mesh: &Mesh, w: u32, h: u32) -> RenderOptions {
     RenderOptions::for_scene(mesh, Screen::new(w, h).expect("study screen size"), Shading::Gouraud)
 }
 
+/// The default view's direction (0.3, 0.45, 1) turned about the vertical axis by `turn_deg` (0: the
+/// default view; the elevation, about 23 degrees, is kept).
+pub fn turned_view(turn_deg: f64) -> [f64; 3] {
+    let (x, z) = (0.3f64, 1.0f64);
+    let (s, c) = turn_deg.to_radians().sin_cos();
+    [x * c + z * s, 0.45, -x * s + z * c]
+}
+
+/// The options of [`cli_options`] with the camera framing the mesh from `direction` instead (40
+/// degrees, the screen's aspect ratio, as the default view).
+pub fn view_options(mesh: &Mesh, w: u32, h: u32, direction: [f64; 3]) -> RenderOptions {
+    let mut o = cli_options(mesh, w, h);
+    o.camera = crate::host::Camera::framing_aspect(mesh, direction, 40.0, w as f64 / h as f64);
+    o
+}
+
 /// One scene's row of the FIFO table.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct FifoRow {
@@ -41,7 +57,12 @@ impl FifoRow {
 /// Run `mesh` at `w`x`h` through the OPP cycle model for each FIFO depth; each run's lists are checked
 /// against the algorithmic model.
 pub fn fifo_row(name: &str, mesh: &Mesh, w: u32, h: u32, depths: &[usize]) -> Result<FifoRow, String> {
-    let sc = scene_setup(mesh, &cli_options(mesh, w, h))?;
+    fifo_row_with(name, mesh, &cli_options(mesh, w, h), depths)
+}
+
+/// [`fifo_row`] with any options (another view: [`view_options`]).
+pub fn fifo_row_with(name: &str, mesh: &Mesh, opts: &RenderOptions, depths: &[usize]) -> Result<FifoRow, String> {
+    let sc = scene_setup(mesh, opts)?;
     let need = (ops_needed(sc.screen, &sc.objects) as usize).max(1);
     let lists = object_lists(sc.screen, &sc.objects);
     let mut runs = Vec::new();
@@ -59,6 +80,20 @@ pub fn fifo_row(name: &str, mesh: &Mesh, w: u32, h: u32, depths: &[usize]) -> Re
 mod tests {
     use super::*;
     use crate::scene::builtin;
+
+    #[test]
+    fn a_turn_of_zero_is_the_default_view_and_turns_keep_the_elevation() {
+        assert_eq!(turned_view(0.0), [0.3, 0.45, 1.0]);
+        let mesh = builtin::teapot(2);
+        assert_eq!(format!("{:?}", view_options(&mesh, 64, 40, turned_view(0.0))), format!("{:?}", cli_options(&mesh, 64, 40)));
+        for t in [45.0, 90.0, 180.0, 315.0] {
+            let d = turned_view(t);
+            let horizontal = (d[0] * d[0] + d[2] * d[2]).sqrt();
+            assert!((horizontal - (0.09f64 + 1.0).sqrt()).abs() < 1e-12 && d[1] == 0.45, "{t}: {d:?}");
+        }
+        let d = turned_view(180.0);
+        assert!((d[0] + 0.3).abs() < 1e-12 && (d[2] + 1.0).abs() < 1e-12, "half a turn looks from behind: {d:?}");
+    }
 
     #[test]
     fn deeper_fifos_never_change_the_lists_and_one_slot_keeps_one_pixel_per_clock_on_a_small_frame() {

@@ -3,12 +3,13 @@
 //!
 //! ```sh
 //! cargo run --release -p tb --bin proof_figures -- fifo [WxH]                 # OPs, cycles, FIFO depths 1/2/4/8, every built-in scene (cycle model)
+//! cargo run --release -p tb --bin proof_figures -- fifo-views [SIZES] [TURNS]  # FIFO depths 1/2/8 over views (turns about the vertical axis) and sizes (cycle model)
 //! cargo run --release -p tb --bin proof_figures -- rtl SCENE [WxH] [DEPTHS]   # the same frame through the RTL OPP, every cycle against the model
 //! cargo run --release -p tb --bin proof_figures -- synth [TOP]                # yosys synth_ice40 -dsp of opp (8 OPs), proof_shade, proof_filter, proof_filter2x2 (or only TOP)
 //! ```
 
 use golden::proof::setup::scene_setup;
-use golden::proof::study::{cli_options, fifo_row};
+use golden::proof::study::{cli_options, fifo_row, fifo_row_with, turned_view, view_options, FifoRow};
 use golden::scene::builtin;
 use std::time::Instant;
 
@@ -30,6 +31,17 @@ fn run() -> Result<(), String> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match args.first().map(|s| s.as_str()) {
         Some("fifo") => fifo(size(args.get(1))?),
+        Some("fifo-views") => {
+            let sizes = match args.get(1) {
+                Some(l) => l.split(',').map(|s| size(Some(&s.to_string()))).collect::<Result<Vec<_>, _>>()?,
+                None => vec![(320, 200), (512, 512), (640, 480)],
+            };
+            let turns = match args.get(2) {
+                Some(l) => l.split(',').map(|t| t.parse::<f64>().map_err(|_| format!("turns '{l}': use degrees, e.g. 0,90,180"))).collect::<Result<Vec<_>, _>>()?,
+                None => (0..8).map(|k| 45.0 * k as f64).collect(),
+            };
+            fifo_views(&sizes, &turns)
+        }
         Some("rtl") => {
             let scene = args.get(1).ok_or("rtl SCENE [WxH] [DEPTHS]")?;
             let depths: Vec<usize> = match args.get(3) {
@@ -39,7 +51,7 @@ fn run() -> Result<(), String> {
             rtl(scene, size(args.get(2))?, &depths)
         }
         Some("synth") => synth(args.get(1).map(|s| s.as_str())),
-        _ => Err("usage: proof_figures fifo [WxH] | rtl SCENE [WxH] [DEPTHS] | synth [TOP]".into()),
+        _ => Err("usage: proof_figures fifo [WxH] | fifo-views [SIZES] [TURNS] | rtl SCENE [WxH] [DEPTHS] | synth [TOP]".into()),
     }
 }
 
@@ -80,6 +92,110 @@ fn fifo((w, h): (u32, u32)) -> Result<(), String> {
     for d in details {
         println!("{d}");
     }
+    Ok(())
+}
+
+/// Pearson's correlation of two equally long series (0 when either is constant).
+fn correlation(a: &[f64], b: &[f64]) -> f64 {
+    let n = a.len() as f64;
+    let (ma, mb) = (a.iter().sum::<f64>() / n, b.iter().sum::<f64>() / n);
+    let cov: f64 = a.iter().zip(b).map(|(x, y)| (x - ma) * (y - mb)).sum();
+    let (va, vb): (f64, f64) = (a.iter().map(|x| (x - ma).powi(2)).sum(), b.iter().map(|y| (y - mb).powi(2)).sum());
+    if va == 0.0 || vb == 0.0 {
+        0.0
+    } else {
+        cov / (va * vb).sqrt()
+    }
+}
+
+/// The FIFO study over views and sizes: every built-in scene, each size, the default view turned
+/// about the vertical axis by each of `turns` degrees, FIFO depths 1, 2 and 8 on the cycle model with
+/// exactly the OPs needed (each run's lists checked against the algorithmic model). Two workers.
+fn fifo_views(sizes: &[(u32, u32)], turns: &[f64]) -> Result<(), String> {
+    let depths = [1usize, 2, 8];
+    let mut jobs = Vec::new();
+    for name in builtin::SCENES {
+        for &s in sizes {
+            for &t in turns {
+                jobs.push((name.to_string(), s, t));
+            }
+        }
+    }
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let results: std::sync::Mutex<Vec<(usize, FifoRow)>> = std::sync::Mutex::new(Vec::new());
+    let t0 = Instant::now();
+    let errors: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+    std::thread::scope(|sc| {
+        for _ in 0..2 {
+            sc.spawn(|| loop {
+                let k = next.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+                let Some((name, (w, h), t)) = jobs.get(k) else { break };
+                let run = builtin::scene(name).and_then(|mesh| fifo_row_with(name, &mesh, &view_options(&mesh, *w, *h, turned_view(*t)), &depths));
+                match run {
+                    Ok(row) => {
+                        eprintln!("{name} {w}x{h} turn {t}: done ({:.0} s)", t0.elapsed().as_secs_f64());
+                        results.lock().unwrap().push((k, row));
+                    }
+                    Err(e) => errors.lock().unwrap().push(format!("{name} {w}x{h} turn {t}: {e}")),
+                }
+            });
+        }
+    });
+    if let Some(e) = errors.into_inner().unwrap().first() {
+        return Err(e.clone());
+    }
+    let mut rows = results.into_inner().unwrap();
+    rows.sort_by_key(|r| r.0);
+    println!("PROOF FIFO depth over views and sizes: the CLI's options with the default view turned about the vertical axis; OPP cycle model, exactly the OPs needed, no gaps");
+    println!();
+    println!("| scene | size | turn | objects | OPs | slots out | depth 1 | depth 2 | depth 8 | gain 1->2 | gain 1->8 | drops / 1000 slots | input stalls d1 / 1000 slots | waits for a load d1, d8 |");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let (mut gains, mut drops, mut stalls, mut over) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for (k, row) in &rows {
+        let (_, (w, h), t) = &jobs[*k];
+        let c: Vec<u64> = row.runs.iter().map(|r| r.cycles).collect();
+        let slots = row.runs[0].slots_out as f64;
+        let g2 = 100.0 * (c[0] as f64 - c[1] as f64) / c[0] as f64;
+        let g8 = row.gain_percent();
+        let d = 1000.0 * row.runs[0].drops as f64 / slots;
+        let st = 1000.0 * row.runs[0].input_stalls as f64 / slots;
+        println!(
+            "| {} | {w}x{h} | {t:.0} | {} | {} | {} | {} | {} | {} | {g2:.2} % | {g8:.2} % | {d:.1} | {st:.1} | {}, {} |",
+            row.scene, row.objects, row.ops_needed, row.runs[0].slots_out, c[0], c[1], c[2], row.runs[0].waits_for_load, row.runs[2].waits_for_load
+        );
+        gains.push(g8);
+        drops.push(d);
+        stalls.push(st);
+        over.push(100.0 * (c[0] as f64 - slots) / slots);
+    }
+    println!();
+    println!("Per scene and size, gain 1->8 over the views: min / median / max, views above 2 %:");
+    println!();
+    println!("| scene | size | min | median | max | views > 2 % |");
+    println!("|---|---|---|---|---|---|");
+    for name in builtin::SCENES {
+        for &(w, h) in sizes {
+            let mut g: Vec<f64> = rows.iter().filter(|(k, _)| jobs[*k].0 == *name && jobs[*k].1 == (w, h)).map(|(_, r)| r.gain_percent()).collect();
+            if g.is_empty() {
+                continue;
+            }
+            g.sort_by(|a, b| a.partial_cmp(b).unwrap());
+            let above = g.iter().filter(|&&x| x > 2.0).count();
+            println!("| {name} | {w}x{h} | {:.2} % | {:.2} % | {:.2} % | {above} of {} |", g[0], g[g.len() / 2], g[g.len() - 1], g.len());
+        }
+    }
+    let above = gains.iter().filter(|&&x| x > 2.0).count();
+    println!();
+    println!(
+        "{} runs of 3 depths; gain 1->8 above 2 % in {above} ({:.1} %), largest {:.2} %; correlation of the gain with drops per slot {:.2}, with input stalls at depth 1 per slot {:.2}, with depth 1's cycles over slots {:.2}; {:.0} s",
+        gains.len(),
+        100.0 * above as f64 / gains.len() as f64,
+        gains.iter().cloned().fold(f64::MIN, f64::max),
+        correlation(&gains, &drops),
+        correlation(&gains, &stalls),
+        correlation(&gains, &over),
+        t0.elapsed().as_secs_f64()
+    );
     Ok(())
 }
 
