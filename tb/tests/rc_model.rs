@@ -38,6 +38,17 @@ fn cycle_model_reproduces_the_hand_made_cases() {
     }
 }
 
+/// The two same-pixel cases make the traces their names and comments say: three Z reads of one pixel
+/// in three consecutive cycles, and two triangles' fragments on one pixel in consecutive cycles.
+#[test]
+fn the_same_pixel_cases_produce_the_read_patterns_they_are_named_for() {
+    let case = |n: &str| hand_made().into_iter().find(|(name, _)| *name == n).unwrap().1;
+    let three = run_model(hand_made_screen(), &case("same_pixel_back_to_back"), Drive::ideal(), None).unwrap();
+    assert_eq!((three.z_reads, three.same_address_reads_back_to_back), (3, 2), "three reads of one pixel, each the cycle after the one before");
+    let gapless = run_model(hand_made_screen(), &case("same_pixel_across_triangles_without_gap"), Drive::ideal(), None).unwrap();
+    assert_eq!(gapless.same_address_reads_back_to_back, 1, "one read of the pixel the cycle after the other triangle's");
+}
+
 #[test]
 fn cycle_model_reproduces_seeded_random_triangle_lists() {
     let mut rng = Rng::new(0x7a11);

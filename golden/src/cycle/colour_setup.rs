@@ -256,6 +256,7 @@ mod tests {
 
     #[test]
     fn back_to_back_commands_are_taken_every_four_cycles_and_written_41_cycles_later() {
+        assert_eq!((SETUP_INTERVAL, SETUP_LATENCY), (4, 41), "the figures in the test's name");
         let mut cmd = SetupCmd { index: 3, x: [0, 160, 0], y: [0, 0, 160], ..Default::default() };
         cmd.values = [[255, 0, 0], [0, 255, 0], [0, 0, 255]];
         for cmds in [vec![cmd; 10], vec![SetupCmd { flat: true, index: 1, ..Default::default() }; 10]] {

@@ -315,6 +315,7 @@ mod tests {
 
     #[test]
     fn reciprocal_is_floor_of_two_to_the_shift_plus_24_over_det_after_10_cycles() {
+        assert_eq!(RECIP_LATENCY, 10, "the figure in the test's name");
         for det in [1u64, 2, 3, 5, 7, 255, 256, 1000, 65535, 65536, 123456789, (1 << 34) - 1, (1 << 35) + 12345, (1 << 36) - 1] {
             let r = run(&[det], |_| true);
             let (mant, shift) = exact(det);

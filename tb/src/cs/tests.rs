@@ -168,6 +168,7 @@ fn colour_setup_writes_the_golden_tdbs_of_every_builtin_scene() {
 
 #[test]
 fn colour_setup_takes_a_triangle_every_4_cycles_and_writes_it_41_cycles_later() {
+    assert_eq!((SETUP_INTERVAL, SETUP_LATENCY), (4, 41), "the figures in the test's name");
     let f = record("castle", Shading::Gouraud, 160, 100).unwrap();
     let cmds: Vec<SetupCmd> = f.chip.setups.iter().take(50).map(|c| SetupCmd::from_command(c).unwrap()).collect();
     let flat: Vec<SetupCmd> = cmds.iter().map(|c| SetupCmd { flat: true, flat_rgb: [1, 2, 3], ..*c }).collect();

@@ -96,8 +96,9 @@ pub fn hand_made() -> Vec<(&'static str, Vec<RcCmd>)> {
         }
     }
     cases.push(("culling", culling));
-    // The same pixel in consecutive cycles from two triangles: the second must see the first's depth
-    // (forwarding), then a third behind both.
+    // One pixel drawn by three one-pixel triangles: their records wait in the queue while the clear
+    // runs, so their fragments come in three consecutive cycles; the second (600) must see the first's
+    // depth (700) through the forwarding and pass, the third (650) must see the second's and fail.
     cases.push(("same_pixel_back_to_back", vec![
         tri(1, [px(5 * s + 4, 5 * s + 4, 700), px(5 * s + 12, 5 * s + 4, 700), px(5 * s + 8, 5 * s + 12, 700)]),
         tri(2, [px(5 * s + 4, 5 * s + 4, 600), px(5 * s + 12, 5 * s + 4, 600), px(5 * s + 8, 5 * s + 12, 600)]),
