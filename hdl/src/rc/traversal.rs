@@ -28,6 +28,10 @@
 //!   does not grow (`nonpos`). Ending the last row ends the walk; that cycle's token (the
 //!   fragment, or an uncovered end token) carries the triangle's result and waits for `result_free`,
 //!   and the same cycle takes the next record if it is a triangle or a frame start (no idle cycle).
+//! * The candidates left in the row (`rm` = bx1 - x) and the flags `rm > 0, 1, 2, 3, 15` are
+//!   registers, set at a load and a row start from the box and at each step by comparing the old `rm`
+//!   with the step added (`rm - a > k` is `rm > k + a`): the decision starts from flags, not from a
+//!   subtraction (issue 15 item 5). Same cycles as before; `x` is kept for the waveforms.
 //! * `Clear`: tokens for addresses 0..W*H-1, then `Idle`.
 //!
 //! Depth of a fragment: `round(raw / 2^16)` clamped to 0..=2^24-1, as `Plane::eval_clamped`.
@@ -133,6 +137,22 @@ pub struct Traversal {
     nonpos2: DFF<Bit>,
     raw: DFF<Signed<56>>,
     raw_row: DFF<Signed<56>>,
+    // The candidates left in the row after x (bx1 - x) and whether it is above 0, 1, 2, 3 and 15
+    // (rgK); wrem and wgK the same at a row's start (bx1 - bx0). Registered so that the walk's decision
+    // starts from flags, not from a subtraction and compare (issue 15 item 5: x into bx1 - x was the
+    // start of the critical path).
+    rm: DFF<Bits<10>>,
+    rg0: DFF<Bit>,
+    rg1: DFF<Bit>,
+    rg2: DFF<Bit>,
+    rg3: DFF<Bit>,
+    rg15: DFF<Bit>,
+    wrem: DFF<Bits<10>>,
+    wg0: DFF<Bit>,
+    wg1: DFF<Bit>,
+    wg2: DFF<Bit>,
+    wg3: DFF<Bit>,
+    wg15: DFF<Bit>,
     ga1: DFF<Signed<56>>,
     ga2: DFF<Signed<56>>,
     ga3: DFF<Signed<56>>,
@@ -154,7 +174,7 @@ pub struct Traversal {
     ew2_2: Signal<Local, Signed<36>>,
     ew3_2: Signal<Local, Signed<36>>,
     ew15_2: Signal<Local, Signed<36>>,
-    rem: Signal<Local, Bits<10>>,
+    lw: Signal<Local, Bits<10>>,
     cov0: Signal<Local, Bit>,
     cov1: Signal<Local, Bit>,
     cov2: Signal<Local, Bit>,
@@ -199,7 +219,6 @@ pub struct Traversal {
     ks0_56: Constant<Signed<56>>,
     kz2: Constant<Bits<2>>,
     kz3: Constant<Bits<3>>,
-    kz10: Constant<Bits<10>>,
     kz20: Constant<Bits<20>>,
     kz24: Constant<Bits<24>>,
     kz56: Constant<Bits<56>>,
@@ -207,6 +226,13 @@ pub struct Traversal {
     k1_10: Constant<Bits<10>>,
     k15_10: Constant<Bits<10>>,
     k16_10: Constant<Bits<10>>,
+    k5_10: Constant<Bits<10>>,
+    k6_10: Constant<Bits<10>>,
+    k7_10: Constant<Bits<10>>,
+    k17_10: Constant<Bits<10>>,
+    k18_10: Constant<Bits<10>>,
+    k19_10: Constant<Bits<10>>,
+    k31_10: Constant<Bits<10>>,
     k16_20: Constant<Bits<20>>,
     k2_10: Constant<Bits<10>>,
     k3_10: Constant<Bits<10>>,
@@ -309,6 +335,18 @@ impl Traversal {
             nonpos2: Default::default(),
             raw: Default::default(),
             raw_row: Default::default(),
+            rm: Default::default(),
+            rg0: Default::default(),
+            rg1: Default::default(),
+            rg2: Default::default(),
+            rg3: Default::default(),
+            rg15: Default::default(),
+            wrem: Default::default(),
+            wg0: Default::default(),
+            wg1: Default::default(),
+            wg2: Default::default(),
+            wg3: Default::default(),
+            wg15: Default::default(),
             ga1: Default::default(),
             ga2: Default::default(),
             ga3: Default::default(),
@@ -327,7 +365,7 @@ impl Traversal {
             ew2_2: Default::default(),
             ew3_2: Default::default(),
             ew15_2: Default::default(),
-            rem: Default::default(),
+            lw: Default::default(),
             cov0: Default::default(),
             cov1: Default::default(),
             cov2: Default::default(),
@@ -371,7 +409,6 @@ impl Traversal {
             ks0_56: Constant::new(0i64.into()),
             kz2: Constant::new(0.into()),
             kz3: Constant::new(0.into()),
-            kz10: Constant::new(0.into()),
             kz20: Constant::new(0.into()),
             kz24: Constant::new(0.into()),
             kz56: Constant::new(0.into()),
@@ -379,6 +416,13 @@ impl Traversal {
             k1_10: Constant::new(1.into()),
             k15_10: Constant::new(15.into()),
             k16_10: Constant::new(16.into()),
+            k5_10: Constant::new(5.into()),
+            k6_10: Constant::new(6.into()),
+            k7_10: Constant::new(7.into()),
+            k17_10: Constant::new(17.into()),
+            k18_10: Constant::new(18.into()),
+            k19_10: Constant::new(19.into()),
+            k31_10: Constant::new(31.into()),
             k16_20: Constant::new(16.into()),
             k2_10: Constant::new(2.into()),
             k3_10: Constant::new(3.into()),
@@ -411,7 +455,7 @@ impl Logic for Traversal {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, x, y, bx0, bx1, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, raw, raw_row, ga1, ga2, ga3, ga4, ga16, grad_b
+            self, clock, state, x, y, bx0, bx1, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, raw, raw_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
         );
         if self.state.q.val() == TravState::Walk {
             // ---- The window at (x, y) ----
@@ -427,11 +471,10 @@ impl Logic for Traversal {
             self.ew2_2.next = self.e2.q.val() + self.sx2_2.q.val();
             self.ew3_2.next = self.e2.q.val() + self.sx3_2.q.val();
             self.ew15_2.next = self.e2.q.val() + self.sx15_2.q.val();
-            self.rem.next = self.bx1.q.val() - self.x.q.val();
             self.cov0.next = !self.e0.q.val().get_bit(35) & !self.e1.q.val().get_bit(35) & !self.e2.q.val().get_bit(35);
-            self.cov1.next = !self.ew1_0.val().get_bit(35) & !self.ew1_1.val().get_bit(35) & !self.ew1_2.val().get_bit(35) & (self.rem.val() > self.k0_10.val());
-            self.cov2.next = !self.ew2_0.val().get_bit(35) & !self.ew2_1.val().get_bit(35) & !self.ew2_2.val().get_bit(35) & (self.rem.val() > self.k1_10.val());
-            self.cov3.next = !self.ew3_0.val().get_bit(35) & !self.ew3_1.val().get_bit(35) & !self.ew3_2.val().get_bit(35) & (self.rem.val() > self.k2_10.val());
+            self.cov1.next = !self.ew1_0.val().get_bit(35) & !self.ew1_1.val().get_bit(35) & !self.ew1_2.val().get_bit(35) & self.rg0.q.val();
+            self.cov2.next = !self.ew2_0.val().get_bit(35) & !self.ew2_1.val().get_bit(35) & !self.ew2_2.val().get_bit(35) & self.rg1.q.val();
+            self.cov3.next = !self.ew3_0.val().get_bit(35) & !self.ew3_1.val().get_bit(35) & !self.ew3_2.val().get_bit(35) & self.rg2.q.val();
             // The first covered candidate, and the next one after it (or the window's end, 4).
             self.has_frag.next = self.cov0.val() | self.cov1.val() | self.cov2.val() | self.cov3.val();
             self.fsel.next = self.k3_2.val();
@@ -488,9 +531,9 @@ impl Logic for Traversal {
             self.dead16.next = (self.ew15_0.val().get_bit(35) & self.nonpos0.q.val())
                 | (self.ew15_1.val().get_bit(35) & self.nonpos1.q.val())
                 | (self.ew15_2.val().get_bit(35) & self.nonpos2.q.val());
-            self.row_done.next = !self.has_next.val() & (!(self.rem.val() > self.k3_10.val()) | self.dead4.val());
+            self.row_done.next = !self.has_next.val() & (!self.rg3.q.val() | self.dead4.val());
             if self.long.val() {
-                self.row_done.next = !(self.rem.val() > self.k15_10.val()) | self.dead16.val();
+                self.row_done.next = !self.rg15.q.val() | self.dead16.val();
             }
             self.at_last_row.next = self.y.q.val() == self.by1.q.val();
             self.walk_end.next = self.row_done.val() & self.at_last_row.val();
@@ -532,7 +575,6 @@ impl Logic for Traversal {
             self.ew2_2.next = self.ks0_36.val();
             self.ew3_2.next = self.ks0_36.val();
             self.ew15_2.next = self.ks0_36.val();
-            self.rem.next = self.kz10.val();
             self.cov0.next = false;
             self.cov1.next = false;
             self.cov2.next = false;
@@ -641,6 +683,12 @@ impl Logic for Traversal {
                     } else if self.row_done.val() {
                         self.x.d.next = self.bx0.q.val();
                         self.y.d.next = self.y.q.val() + self.k1_10.val();
+                        self.rm.d.next = self.wrem.q.val();
+                        self.rg0.d.next = self.wg0.q.val();
+                        self.rg1.d.next = self.wg1.q.val();
+                        self.rg2.d.next = self.wg2.q.val();
+                        self.rg3.d.next = self.wg3.q.val();
+                        self.rg15.d.next = self.wg15.q.val();
                         self.er0.d.next = self.er0.q.val() + self.sy0.q.val();
                         self.e0.d.next = self.er0.q.val() + self.sy0.q.val();
                         self.er1.d.next = self.er1.q.val() + self.sy1.q.val();
@@ -653,6 +701,12 @@ impl Logic for Traversal {
                         self.addr.d.next = self.addr_row.q.val() + self.width.val();
                     } else if self.nsel.val() == self.k1_3.val() {
                         self.x.d.next = self.x.q.val() + self.k1_10.val();
+                        self.rm.d.next = self.rm.q.val() - self.k1_10.val();
+                        self.rg0.d.next = self.rm.q.val() > self.k1_10.val();
+                        self.rg1.d.next = self.rm.q.val() > self.k2_10.val();
+                        self.rg2.d.next = self.rm.q.val() > self.k3_10.val();
+                        self.rg3.d.next = self.rm.q.val() > self.k4_10.val();
+                        self.rg15.d.next = self.rm.q.val() > self.k16_10.val();
                         self.e0.d.next = self.ew1_0.val();
                         self.e1.d.next = self.ew1_1.val();
                         self.e2.d.next = self.ew1_2.val();
@@ -660,6 +714,12 @@ impl Logic for Traversal {
                         self.addr.d.next = self.addr.q.val() + self.k1_20.val();
                     } else if self.nsel.val() == self.k2_3.val() {
                         self.x.d.next = self.x.q.val() + self.k2_10.val();
+                        self.rm.d.next = self.rm.q.val() - self.k2_10.val();
+                        self.rg0.d.next = self.rm.q.val() > self.k2_10.val();
+                        self.rg1.d.next = self.rm.q.val() > self.k3_10.val();
+                        self.rg2.d.next = self.rm.q.val() > self.k4_10.val();
+                        self.rg3.d.next = self.rm.q.val() > self.k5_10.val();
+                        self.rg15.d.next = self.rm.q.val() > self.k17_10.val();
                         self.e0.d.next = self.ew2_0.val();
                         self.e1.d.next = self.ew2_1.val();
                         self.e2.d.next = self.ew2_2.val();
@@ -667,6 +727,12 @@ impl Logic for Traversal {
                         self.addr.d.next = self.addr.q.val() + self.k2_20.val();
                     } else if self.nsel.val() == self.k3_3.val() {
                         self.x.d.next = self.x.q.val() + self.k3_10.val();
+                        self.rm.d.next = self.rm.q.val() - self.k3_10.val();
+                        self.rg0.d.next = self.rm.q.val() > self.k3_10.val();
+                        self.rg1.d.next = self.rm.q.val() > self.k4_10.val();
+                        self.rg2.d.next = self.rm.q.val() > self.k5_10.val();
+                        self.rg3.d.next = self.rm.q.val() > self.k6_10.val();
+                        self.rg15.d.next = self.rm.q.val() > self.k18_10.val();
                         self.e0.d.next = self.ew3_0.val();
                         self.e1.d.next = self.ew3_1.val();
                         self.e2.d.next = self.ew3_2.val();
@@ -674,6 +740,12 @@ impl Logic for Traversal {
                         self.addr.d.next = self.addr.q.val() + self.k3_20.val();
                     } else if self.long.val() {
                         self.x.d.next = self.x.q.val() + self.k16_10.val();
+                        self.rm.d.next = self.rm.q.val() - self.k16_10.val();
+                        self.rg0.d.next = self.rm.q.val() > self.k16_10.val();
+                        self.rg1.d.next = self.rm.q.val() > self.k17_10.val();
+                        self.rg2.d.next = self.rm.q.val() > self.k18_10.val();
+                        self.rg3.d.next = self.rm.q.val() > self.k19_10.val();
+                        self.rg15.d.next = self.rm.q.val() > self.k31_10.val();
                         self.e0.d.next = self.ew15_0.val() + self.sx1_0.q.val();
                         self.e1.d.next = self.ew15_1.val() + self.sx1_1.q.val();
                         self.e2.d.next = self.ew15_2.val() + self.sx1_2.q.val();
@@ -681,6 +753,12 @@ impl Logic for Traversal {
                         self.addr.d.next = self.addr.q.val() + self.k16_20.val();
                     } else {
                         self.x.d.next = self.x.q.val() + self.k4_10.val();
+                        self.rm.d.next = self.rm.q.val() - self.k4_10.val();
+                        self.rg0.d.next = self.rm.q.val() > self.k4_10.val();
+                        self.rg1.d.next = self.rm.q.val() > self.k5_10.val();
+                        self.rg2.d.next = self.rm.q.val() > self.k6_10.val();
+                        self.rg3.d.next = self.rm.q.val() > self.k7_10.val();
+                        self.rg15.d.next = self.rm.q.val() > self.k19_10.val();
                         self.e0.d.next = self.e0.q.val() + self.sx4_0.q.val();
                         self.e1.d.next = self.e1.q.val() + self.sx4_1.q.val();
                         self.e2.d.next = self.e2.q.val() + self.sx4_2.q.val();
@@ -698,7 +776,20 @@ impl Logic for Traversal {
             self.addr.d.next = self.k0_20.val();
             self.state.d.next = TravState::Clear;
         }
+        self.lw.next = self.rec_bx1.val() - self.rec_bx0.val();
         if self.load_walk.val() {
+            self.rm.d.next = self.lw.val();
+            self.rg0.d.next = self.lw.val() > self.k0_10.val();
+            self.rg1.d.next = self.lw.val() > self.k1_10.val();
+            self.rg2.d.next = self.lw.val() > self.k2_10.val();
+            self.rg3.d.next = self.lw.val() > self.k3_10.val();
+            self.rg15.d.next = self.lw.val() > self.k15_10.val();
+            self.wrem.d.next = self.lw.val();
+            self.wg0.d.next = self.lw.val() > self.k0_10.val();
+            self.wg1.d.next = self.lw.val() > self.k1_10.val();
+            self.wg2.d.next = self.lw.val() > self.k2_10.val();
+            self.wg3.d.next = self.lw.val() > self.k3_10.val();
+            self.wg15.d.next = self.lw.val() > self.k15_10.val();
             self.x.d.next = self.rec_bx0.val();
             self.y.d.next = self.rec_by0.val();
             self.bx0.d.next = self.rec_bx0.val();
