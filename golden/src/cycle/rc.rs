@@ -39,7 +39,7 @@
 //!   cycle. S5 takes it in its first cycle with a drawn triangle, and waits there until it comes.
 //! * So a drawn triangle is offered to the traversal [`SETUP_CYCLES_DRAWN`] cycles after its command
 //!   was accepted, anything else [`SETUP_CYCLES_SHORT`] cycles after; back to back, drawn triangles
-//!   are accepted every 4 cycles (S6's four) and other commands every cycle.
+//!   are accepted every 4 cycles (S5's and S6's four) and other commands every cycle.
 //!
 //! *Traversal* (takes a record only in its `Idle` state):
 //! * Frame start: with `clear`, W*H cycles of clear writes (Z = 2^24-1, I = 0, one pixel per clock,
@@ -76,7 +76,7 @@ pub const SETUP_STAGES: usize = 7;
 pub const GRAD_STAGE: usize = 5;
 /// Cycles a drawn triangle spends in each stage when nothing waits (`Grad`: from the reciprocal's
 /// arrival). Any other command spends one cycle in each.
-pub const STAGE_CYCLES_DRAWN: [u8; SETUP_STAGES] = [1, 1, 3, 1, 1, 3, 4];
+pub const STAGE_CYCLES_DRAWN: [u8; SETUP_STAGES] = [1, 1, 3, 1, 1, 4, 4];
 /// Cycles from a request's acceptance to the reciprocal's result (pipelined: one request per clock).
 pub const RECIP_LATENCY: usize = 10;
 /// Records the queue between setup and traversal holds.
@@ -85,8 +85,8 @@ pub const RECORD_QUEUE: usize = 4;
 pub const RESULT_QUEUE: usize = 3;
 /// Cycles from accepting a command to its record being offered to the traversal when nothing waits:
 /// a drawn triangle (the reciprocal, requested in S1's cycle, arrives in S5 RECIP_LATENCY cycles later;
-/// then S5's three cycles and S6's four), and any other command (one cycle in each stage).
-pub const SETUP_CYCLES_DRAWN: u64 = 2 + RECIP_LATENCY as u64 + 3 + 4;
+/// then S5's four cycles and S6's four), and any other command (one cycle in each stage).
+pub const SETUP_CYCLES_DRAWN: u64 = 2 + RECIP_LATENCY as u64 + STAGE_CYCLES_DRAWN[GRAD_STAGE] as u64 + STAGE_CYCLES_DRAWN[6] as u64;
 const _: () = assert!(2 + 3 + 1 + 1 <= 2 + RECIP_LATENCY as u64, "the reciprocal arrives after the record reaches Grad");
 pub const SETUP_CYCLES_SHORT: u64 = SETUP_STAGES as u64 + 1;
 /// Steps of the restoring divider (RECIP_BITS + 1).

@@ -15,7 +15,7 @@
 //! ```
 //!
 //! Each stage holds one record (docs/rc.md, "Setup"; `golden::cycle::rc` models the same schedule).
-//! A drawn triangle spends 1, 1, 3, 1, 1, 3 and 4 cycles in S0..S6 when nothing waits; any other
+//! A drawn triangle spends 1, 1, 3, 1, 1, 4 and 4 cycles in S0..S6 when nothing waits; any other
 //! command (frame start, end of frame, a culled or empty-box triangle) one cycle in each.
 //! * S0 `Det`: det = dx10*dy20 - dx20*dy10 (two 17x17 products); the clamped bounding box
 //!   `[(min+7)>>4, (max-8)>>4]`.
@@ -27,8 +27,10 @@
 //!   `E = dx*(16*Y0+8-a.y) - dy*(16*X0+8-a.x) - bias` (bias 0 on a top or left edge, else 1).
 //! * S3, S4 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 10, is longer
 //!   than S2's three cycles).
-//! * S5 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1
-//!   `A = sat40(round(na*mant >> (shift+4)))` and nb*mant; phase 2 B likewise.
+//! * S5 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1 shifts
+//!   that product right by shift+3 and forms nb*mant; phase 2 `A = sat40((shifted + 1) >> 1)` (which is
+//!   `round(na*mant >> (shift+4))`) and shifts nb*mant; phase 3 B likewise. The shift and the rounding
+//!   are a cycle each since issue 15 item 5 (the one-cycle form was the RC's critical path).
 //! * S6 `Plane` (two 40x18 products per cycle): phase 0 A*(8-x0), B*(8-y0); phase 1 their sum, A*X0, B*Y0;
 //!   phase 2 `C = (z0 << 16) + round(sum >> 4)` and A*X0 + B*Y0; phase 3 raw = C + A*X0 + B*Y0 (the
 //!   depth plane's raw value at the box's first pixel) goes into the queue with the record.
@@ -209,6 +211,8 @@ pub struct Setup {
     s5: DFF<SetupRec>,
     s5p: DFF<PlaneIn>,
     g_prod: DFF<Bits<70>>,
+    /// The product shifted right by shift + 3 (arithmetic): the gradient before its last bit's rounding.
+    g_sh: DFF<Bits<70>>,
     // S6 `Plane`: the record, its phase, the two product registers, their sum, C and the sum of the
     // start terms.
     s6_v: DFF<Bit>,
@@ -374,9 +378,9 @@ pub struct Setup {
     // S5
     op_ga: Signal<Local, Signed<44>>,
     op_gb: Signal<Local, Signed<26>>,
-    round_half: Signal<Local, Bits<70>>,
-    rounded: Signal<Local, Bits<70>>,
     shifted: Signal<Local, Bits<70>>,
+    rounded: Signal<Local, Bits<70>>,
+    halved: Signal<Local, Bits<70>>,
     grad_hi: Signal<Local, Bits<31>>,
     grad: Signal<Local, Signed<40>>,
     // S6
@@ -408,7 +412,9 @@ pub struct Setup {
     k8_17: Constant<Signed<17>>,
     k8_18: Constant<Bits<18>>,
     k4_6: Constant<Bits<6>>,
-    k8_70: Constant<Bits<70>>,
+    k1_70: Constant<Bits<70>>,
+    k3_6: Constant<Bits<6>>,
+    k1_6: Constant<Bits<6>>,
     k0_70: Constant<Bits<70>>,
     k0_13: Constant<Signed<13>>,
     k0_36: Constant<Signed<36>>,
@@ -543,6 +549,7 @@ impl Setup {
             s5: Default::default(),
             s5p: Default::default(),
             g_prod: Default::default(),
+            g_sh: Default::default(),
             s6_v: Default::default(),
             s6_phase: Default::default(),
             s6: Default::default(),
@@ -698,9 +705,9 @@ impl Setup {
             e_b: Default::default(),
             op_ga: Default::default(),
             op_gb: Default::default(),
-            round_half: Default::default(),
-            rounded: Default::default(),
             shifted: Default::default(),
+            rounded: Default::default(),
+            halved: Default::default(),
             grad_hi: Default::default(),
             grad: Default::default(),
             ga: Default::default(),
@@ -729,7 +736,9 @@ impl Setup {
             k8_17: Constant::new(8.into()),
             k8_18: Constant::new(8.into()),
             k4_6: Constant::new(4.into()),
-            k8_70: Constant::new(8.into()),
+            k1_70: Constant::new(1.into()),
+            k3_6: Constant::new(3.into()),
+            k1_6: Constant::new(1.into()),
             k0_70: Constant::new(0.into()),
             k0_13: Constant::new(0.into()),
             k0_36: Constant::new(0.into()),
@@ -782,7 +791,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5_phase, s5, s5p, g_prod, s6_v, s6_phase, s6, s6p, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5_phase, s5, s5p, g_prod, g_sh, s6_v, s6_phase, s6, s6p, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -869,7 +878,7 @@ impl Logic for Setup {
         self.walk5.next = self.s5.q.val().kind == self.rec_walk.val();
         self.walk6.next = self.s6.q.val().kind == self.rec_walk.val();
         self.done2.next = self.s2_v.q.val() & (!self.walk2.val() | (self.s2_phase.q.val() == self.k2_2.val()));
-        self.done5.next = self.s5_v.q.val() & (!self.walk5.val() | (self.s5_phase.q.val() == self.k2_2.val()));
+        self.done5.next = self.s5_v.q.val() & (!self.walk5.val() | (self.s5_phase.q.val() == self.k3_2.val()));
         self.done6.next = self.s6_v.q.val() & (!self.walk6.val() | (self.s6_phase.q.val() == self.k3_2.val()));
         self.take.next = self.recip.result.valid.val() & self.s5_v.q.val() & self.walk5.val() & (self.s5_phase.q.val() == self.k0_2.val());
         self.leave6.next = self.done6.val() & (self.q_len.q.val() < self.k4_3.val());
@@ -1159,24 +1168,32 @@ impl Logic for Setup {
         }
         self.mul_g.a.next = self.op_ga.val();
         self.mul_g.b.next = self.op_gb.val();
-        // The gradient from the product register: sat40((prod + 2^(sh-1)) >> sh), sh = shift + 4.
-        // (70-bit arithmetic is slow in the Rust simulation: evaluated only while S5 holds a product.)
-        self.round_half.next = self.k0_70.val();
-        self.rounded.next = self.k0_70.val();
+        // The gradient sat40((prod + 2^(sh-1)) >> sh), sh = shift + 4, in two cycles (issue 15 item 5):
+        // g_sh = prod >> (sh - 1) from the product register, then ((g_sh + 1) >> 1) and the saturation
+        // from g_sh. The same integer: with prod = q*2^(sh-1) + r, 0 <= r < 2^(sh-1), both are
+        // floor((q + 1) / 2). (70-bit arithmetic is slow in the Rust simulation: evaluated only in the
+        // phases that use it.)
         self.shifted.next = self.k0_70.val();
+        self.rounded.next = self.k0_70.val();
+        self.halved.next = self.k0_70.val();
         self.grad_hi.next = self.k0_31.val();
         self.grad.next = self.min40.val();
-        if self.s5_v.q.val() & (self.s5_phase.q.val() != self.k0_2.val()) {
-            self.round_half.next = self.k8_70.val() << self.s5p.q.val().shift;
-            self.rounded.next = self.g_prod.q.val() + self.round_half.val();
-            self.shifted.next = (self.rounded.val() >> self.s5p.q.val().shift) >> self.k4_6.val();
-            if self.rounded.val().get_bit(69) {
+        if self.s5_v.q.val() & ((self.s5_phase.q.val() == self.k1_2.val()) | (self.s5_phase.q.val() == self.k2_2.val())) {
+            self.shifted.next = (self.g_prod.q.val() >> self.s5p.q.val().shift) >> self.k3_6.val();
+            if self.g_prod.q.val().get_bit(69) {
                 // arithmetic shift of a negative value: complement, shift, complement
-                self.shifted.next = !((!self.rounded.val() >> self.s5p.q.val().shift) >> self.k4_6.val());
+                self.shifted.next = !((!self.g_prod.q.val() >> self.s5p.q.val().shift) >> self.k3_6.val());
             }
-            self.grad_hi.next = self.shifted.val().get_bits::<31>(39);
+        }
+        if self.s5_v.q.val() & ((self.s5_phase.q.val() == self.k2_2.val()) | (self.s5_phase.q.val() == self.k3_2.val())) {
+            self.rounded.next = self.g_sh.q.val() + self.k1_70.val();
+            self.halved.next = self.rounded.val() >> self.k1_6.val();
+            if self.rounded.val().get_bit(69) {
+                self.halved.next = !((!self.rounded.val()) >> self.k1_6.val());
+            }
+            self.grad_hi.next = self.halved.val().get_bits::<31>(39);
             if (self.grad_hi.val() == self.k0_31.val()) | (self.grad_hi.val() == self.k1s_31.val()) {
-                self.grad.next = signed_cast(self.shifted.val().get_bits::<40>(0));
+                self.grad.next = signed_cast(self.halved.val().get_bits::<40>(0));
             } else if !self.rounded.val().get_bit(69) {
                 self.grad.next = self.max40.val();
             }
@@ -1299,7 +1316,8 @@ impl Logic for Setup {
             self.s6p.d.next = self.s5p.q.val();
             self.s6.d.next.b = unsigned_cast(self.grad.val());
         }
-        // S5: phase 0 takes the reciprocal and forms na*mant; phase 1 A and nb*mant; B on leaving.
+        // S5: phase 0 takes the reciprocal and forms na*mant; phase 1 shifts it and forms nb*mant;
+        // phase 2 rounds A and shifts nb*mant; B is rounded on leaving (phase 3).
         if self.s5_v.q.val() & self.walk5.val() & !self.done5.val() {
             if self.s5_phase.q.val() == self.k0_2.val() {
                 if self.take.val() {
@@ -1308,9 +1326,13 @@ impl Logic for Setup {
                     self.s5p.d.next.mant = self.recip.result.data.val().mant;
                     self.s5p.d.next.shift = self.recip.result.data.val().shift;
                 }
-            } else {
+            } else if self.s5_phase.q.val() == self.k1_2.val() {
                 self.s5_phase.d.next = self.k2_2.val();
                 self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
+                self.g_sh.d.next = self.shifted.val();
+            } else {
+                self.s5_phase.d.next = self.k3_2.val();
+                self.g_sh.d.next = self.shifted.val();
                 self.s5.d.next.a = unsigned_cast(self.grad.val());
             }
         }
