@@ -34,7 +34,8 @@
 //!   subtraction (issue 15 item 5). Same cycles as before; `x` is kept for the waveforms.
 //! * `Clear`: tokens for addresses 0..W*H-1, then `Idle`.
 //!
-//! Depth of a fragment: `round(raw / 2^16)` clamped to 0..=2^24-1, as `Plane::eval_clamped`.
+//! Depth of a fragment: `round(raw / 2^16)` clamped to 0..=2^24-1, as `Plane::eval_clamped`; the
+//! registers hold raw + 2^15, so the rounding is a shift.
 
 use super::setup::{REC_EOF, REC_FRAME, REC_WALK};
 use crate::common::signed_bit_cast_safe;
@@ -135,8 +136,10 @@ pub struct Traversal {
     nonpos0: DFF<Bit>,
     nonpos1: DFF<Bit>,
     nonpos2: DFF<Bit>,
-    raw: DFF<Signed<56>>,
-    raw_row: DFF<Signed<56>>,
+    // The depth plane's raw value at x (and at the row's start) plus the rounding half 2^15: a
+    // fragment's depth is then these bits shifted, with no rounding add in its path (issue 15 item 5).
+    rawh: DFF<Signed<56>>,
+    rawh_row: DFF<Signed<56>>,
     // The candidates left in the row after x (bx1 - x) and whether it is above 0, 1, 2, 3 and 15
     // (rgK); wrem and wgK the same at a row's start (bx1 - bx0). Registered so that the walk's decision
     // starts from flags, not from a subtraction and compare (issue 15 item 5: x into bx1 - x was the
@@ -190,7 +193,6 @@ pub struct Traversal {
     walk_end: Signal<Local, Bit>,
     at_last_row: Signal<Local, Bit>,
     fraw: Signal<Local, Signed<56>>,
-    rounded: Signal<Local, Signed<56>>,
     rounded_u: Signal<Local, Bits<56>>,
     depth: Signal<Local, Bits<24>>,
     faddr: Signal<Local, Bits<20>>,
@@ -333,8 +335,8 @@ impl Traversal {
             nonpos0: Default::default(),
             nonpos1: Default::default(),
             nonpos2: Default::default(),
-            raw: Default::default(),
-            raw_row: Default::default(),
+            rawh: Default::default(),
+            rawh_row: Default::default(),
             rm: Default::default(),
             rg0: Default::default(),
             rg1: Default::default(),
@@ -381,7 +383,6 @@ impl Traversal {
             walk_end: Default::default(),
             at_last_row: Default::default(),
             fraw: Default::default(),
-            rounded: Default::default(),
             rounded_u: Default::default(),
             depth: Default::default(),
             faddr: Default::default(),
@@ -455,7 +456,7 @@ impl Logic for Traversal {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, x, y, bx0, bx1, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, raw, raw_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
+            self, clock, state, x, y, bx0, bx1, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
         );
         if self.state.q.val() == TravState::Walk {
             // ---- The window at (x, y) ----
@@ -538,28 +539,27 @@ impl Logic for Traversal {
             self.at_last_row.next = self.y.q.val() == self.by1.q.val();
             self.walk_end.next = self.row_done.val() & self.at_last_row.val();
             // The fragment: its raw depth, address and depth.
-            self.fraw.next = self.raw.q.val();
+            self.fraw.next = self.rawh.q.val();
             self.faddr.next = self.addr.q.val();
             // (The additions sit in the branches: the RustHDL simulation then does only the one taken.)
             if self.fsel.val() == self.k1_2.val() {
-                self.fraw.next = self.raw.q.val() + self.ga1.q.val();
+                self.fraw.next = self.rawh.q.val() + self.ga1.q.val();
                 self.faddr.next = self.addr.q.val() + self.k1_20.val();
             }
             if self.fsel.val() == self.k2_2.val() {
-                self.fraw.next = self.raw.q.val() + self.ga2.q.val();
+                self.fraw.next = self.rawh.q.val() + self.ga2.q.val();
                 self.faddr.next = self.addr.q.val() + self.k2_20.val();
             }
             if self.fsel.val() == self.k3_2.val() {
-                self.fraw.next = self.raw.q.val() + self.ga3.q.val();
+                self.fraw.next = self.rawh.q.val() + self.ga3.q.val();
                 self.faddr.next = self.addr.q.val() + self.k3_20.val();
             }
-            self.rounded.next = self.fraw.val() + self.half.val();
-            self.rounded_u.next = unsigned_cast(self.rounded.val());
+            self.rounded_u.next = unsigned_cast(self.fraw.val());
             self.depth.next = self.rounded_u.val().get_bits::<24>(16);
             if self.rounded_u.val().get_bits::<15>(40) != self.k0_15.val() {
                 self.depth.next = self.depth_max.val();
             }
-            if self.rounded.val().get_bit(55) {
+            if self.fraw.val().get_bit(55) {
                 self.depth.next = self.k0_24.val();
             }
         } else {
@@ -591,7 +591,6 @@ impl Logic for Traversal {
             self.walk_end.next = false;
             self.fraw.next = self.ks0_56.val();
             self.faddr.next = self.kz20.val();
-            self.rounded.next = self.ks0_56.val();
             self.rounded_u.next = self.kz56.val();
             self.depth.next = self.kz24.val();
         }
@@ -695,8 +694,8 @@ impl Logic for Traversal {
                         self.e1.d.next = self.er1.q.val() + self.sy1.q.val();
                         self.er2.d.next = self.er2.q.val() + self.sy2.q.val();
                         self.e2.d.next = self.er2.q.val() + self.sy2.q.val();
-                        self.raw_row.d.next = self.raw_row.q.val() + self.grad_b.q.val();
-                        self.raw.d.next = self.raw_row.q.val() + self.grad_b.q.val();
+                        self.rawh_row.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
+                        self.rawh.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
                         self.addr_row.d.next = self.addr_row.q.val() + self.width.val();
                         self.addr.d.next = self.addr_row.q.val() + self.width.val();
                     } else if self.nsel.val() == self.k1_3.val() {
@@ -710,7 +709,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.ew1_0.val();
                         self.e1.d.next = self.ew1_1.val();
                         self.e2.d.next = self.ew1_2.val();
-                        self.raw.d.next = self.raw.q.val() + self.ga1.q.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga1.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k1_20.val();
                     } else if self.nsel.val() == self.k2_3.val() {
                         self.x.d.next = self.x.q.val() + self.k2_10.val();
@@ -723,7 +722,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.ew2_0.val();
                         self.e1.d.next = self.ew2_1.val();
                         self.e2.d.next = self.ew2_2.val();
-                        self.raw.d.next = self.raw.q.val() + self.ga2.q.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga2.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k2_20.val();
                     } else if self.nsel.val() == self.k3_3.val() {
                         self.x.d.next = self.x.q.val() + self.k3_10.val();
@@ -736,7 +735,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.ew3_0.val();
                         self.e1.d.next = self.ew3_1.val();
                         self.e2.d.next = self.ew3_2.val();
-                        self.raw.d.next = self.raw.q.val() + self.ga3.q.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga3.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k3_20.val();
                     } else if self.long.val() {
                         self.x.d.next = self.x.q.val() + self.k16_10.val();
@@ -749,7 +748,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.ew15_0.val() + self.sx1_0.q.val();
                         self.e1.d.next = self.ew15_1.val() + self.sx1_1.q.val();
                         self.e2.d.next = self.ew15_2.val() + self.sx1_2.q.val();
-                        self.raw.d.next = self.raw.q.val() + self.ga16.q.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga16.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k16_20.val();
                     } else {
                         self.x.d.next = self.x.q.val() + self.k4_10.val();
@@ -762,7 +761,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.e0.q.val() + self.sx4_0.q.val();
                         self.e1.d.next = self.e1.q.val() + self.sx4_1.q.val();
                         self.e2.d.next = self.e2.q.val() + self.sx4_2.q.val();
-                        self.raw.d.next = self.raw.q.val() + self.ga4.q.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga4.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k4_20.val();
                     }
                 }
@@ -825,8 +824,8 @@ impl Logic for Traversal {
             self.sx15_2.d.next = self.rsx4_2.val() + self.rsx4_2.val() + self.rsx4_2.val() + self.rsx2_2.val() + self.rsx1_2.val();
             self.sy2.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sy2.val());
             self.nonpos2.d.next = self.rec_sx2.val().get_bit(21) | (self.rsx1_2.val() == self.ks0_36.val());
-            self.raw.d.next = self.rec_raw.val();
-            self.raw_row.d.next = self.rec_raw.val();
+            self.rawh.d.next = self.rec_raw.val() + self.half.val();
+            self.rawh_row.d.next = self.rec_raw.val() + self.half.val();
             self.ga1.d.next = self.ra1.val();
             self.ga2.d.next = self.ra2.val();
             self.ga3.d.next = self.ra2.val() + self.ra1.val();
