@@ -580,16 +580,11 @@ impl golden::render::Chipset for JobTap {
 }
 
 fn traversal_row(case: &Case, frames: &[FrameRow]) -> Result<TraversalRow, String> {
-    use golden::cycle::rc::RcCmd;
     let s = case.opts.screen;
     let mut tap = JobTap { inner: golden::render::GoldenChipset::new(s), jobs: Vec::new() };
     golden::render::render_with(&case.mesh, &case.opts, &mut tap)?;
     let job = tap.jobs.last().ok_or_else(|| format!("traversal bench: rendering {} handed the chipset no frame", case.scene))?;
-    let mut cmds = vec![RcCmd::frame(true)];
-    for t in &job.tris {
-        cmds.push(RcCmd::triangle(t.index, t.v, job.cull, job.front)?);
-    }
-    cmds.push(RcCmd::end_of_frame());
+    let cmds = tb::rc::stimulus::job_frame(job, true)?;
     let run = tb::rc::bench::run_model(s, &cmds, tb::rc::bench::Drive::ideal(), None)?;
     let steady = frames.iter().filter(|f| f.scene == case.scene && f.size == [s.width, s.height]).last();
     Ok(TraversalRow {

@@ -33,7 +33,6 @@
 use crate::cs::pack::{command_of, record_of, rgb_of, tdata_of};
 use crate::rc::pack::command_word;
 use golden::cycle::colour_setup::SetupCmd;
-use golden::cycle::rc::RcCmd;
 use golden::format::{Screen, DEPTH_MAX, INDEX_BACKGROUND};
 use golden::raster::{Culled, TriResult};
 use golden::render::{Chipset, FrameJob, FrameOut, LowerPipeline, ScanOut};
@@ -433,11 +432,7 @@ pub(crate) struct FrameRun {
 impl FrameRun {
     /// The RC words and scan parameters of `job`; `clear`: the frame clears its bank itself.
     pub(crate) fn new(job: &FrameJob, clear: bool) -> Result<FrameRun, String> {
-        let mut cmds = vec![RcCmd::frame(clear)];
-        for t in &job.tris {
-            cmds.push(RcCmd::triangle(t.index, t.v, job.cull, job.front)?);
-        }
-        cmds.push(RcCmd::end_of_frame());
+        let cmds = crate::rc::stimulus::job_frame(job, clear)?;
         let phong = job.shading == Shading::Phong;
         Ok(FrameRun {
             words: cmds.iter().map(command_word).collect(),

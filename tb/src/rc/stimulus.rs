@@ -18,6 +18,13 @@ pub fn frame(clear: bool, tris: Vec<RcCmd>) -> Vec<RcCmd> {
     v
 }
 
+/// The RC's command stream of a frame the host hands the chipset: [`frame`] of the job's triangles
+/// with its cull mode and front face (an error names a vertex or index that does not fit the port).
+pub fn job_frame(job: &golden::render::FrameJob, clear: bool) -> Result<Vec<RcCmd>, String> {
+    let tris = job.tris.iter().map(|t| RcCmd::triangle(t.index, t.v, job.cull, job.front)).collect::<Result<Vec<_>, _>>()?;
+    Ok(frame(clear, tris))
+}
+
 /// A built-in scene (`teapot_grid` for the teapot) as window triangles, framed as the issue says:
 /// `Camera::framing(mesh, [0.3, 0.45, 1.0], 40.0)`, back faces culled, front face from the mesh.
 pub fn scene_triangles(name: &str, teapot_grid: u32, screen: Screen) -> Result<Vec<RcCmd>, String> {
