@@ -104,7 +104,6 @@ pub struct Traversal {
     x: DFF<Bits<10>>,
     y: DFF<Bits<10>>,
     bx0: DFF<Bits<10>>,
-    bx1: DFF<Bits<10>>,
     by1: DFF<Bits<10>>,
     index: DFF<Bits<16>>,
     addr: DFF<Bits<20>>,
@@ -303,7 +302,6 @@ impl Traversal {
             x: Default::default(),
             y: Default::default(),
             bx0: Default::default(),
-            bx1: Default::default(),
             by1: Default::default(),
             index: Default::default(),
             addr: Default::default(),
@@ -456,7 +454,7 @@ impl Logic for Traversal {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, x, y, bx0, bx1, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
+            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
         );
         if self.state.q.val() == TravState::Walk {
             // ---- The window at (x, y) ----
@@ -792,7 +790,6 @@ impl Logic for Traversal {
             self.x.d.next = self.rec_bx0.val();
             self.y.d.next = self.rec_by0.val();
             self.bx0.d.next = self.rec_bx0.val();
-            self.bx1.d.next = self.rec_bx1.val();
             self.by1.d.next = self.rec_by1.val();
             self.index.d.next = self.rec_index.val();
             self.addr.d.next = self.rec_addr.val();
