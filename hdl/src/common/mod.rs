@@ -8,12 +8,14 @@
 pub mod div_step;
 pub mod fast_ram;
 pub mod leading_one;
+pub mod merge_modules;
 pub mod mul;
 pub mod stream;
 
 pub use div_step::DivStep;
 pub use fast_ram::FastRAM;
 pub use leading_one::LeadingOne36;
+pub use merge_modules::merge_identical_modules;
 pub use mul::{MulS, MulU};
 pub use stream::{StreamIn, StreamOut};
 

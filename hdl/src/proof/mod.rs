@@ -32,12 +32,14 @@ pub use types::{BoxA, BoxH, BoxLine, BoxV, FilterTag, FilteredPixel, ObjParams, 
 
 use rust_hdl::prelude::*;
 
-/// The Verilog of an OPP of `n` OPs with FIFOs of `fifo_depth` slots, top module named `name`.
+/// The Verilog of an OPP of `n` OPs with FIFOs of `fifo_depth` slots, top module named `name`; the
+/// N copies of the object processor that rust-hdl writes are merged into one module
+/// ([`crate::common::merge_identical_modules`]), so the text grows by one instance per OP.
 pub fn verilog_opp(name: &str, n: usize, fifo_depth: usize) -> Result<String, String> {
     let mut uut = Opp::new(n, fifo_depth)?;
     uut.connect_all();
     check_all(&uut).map_err(|e| format!("{name}: design check failed: {e:?}"))?;
-    Ok(rename_top(&generate_verilog(&uut), name))
+    Ok(crate::common::merge_identical_modules(&rename_top(&generate_verilog(&uut), name)))
 }
 
 pub use crate::common::rename_top;
