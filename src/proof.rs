@@ -34,10 +34,10 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     if !(1..=64).contains(&fifo_depth) {
         return Err(format!("--fifo-depth {fifo_depth} is not in 1..=64"));
     }
-    if args.vcd && args.backend != BackendArg::Rtl {
-        return Err("--vcd needs --backend rtl".into());
+    if args.vcd && args.backend == BackendArg::Golden {
+        return Err("--vcd needs --backend rtl or --backend verilator".into());
     }
-    if args.backend == BackendArg::Rtl && area == FilterArea::Box2 {
+    if args.backend != BackendArg::Golden && area == FilterArea::Box2 {
         // Before any simulation: the 2x2 RTL's line buffer fixes what screens it can filter.
         check_box_size(opts.screen.width, opts.screen.height)?;
     }
@@ -98,7 +98,12 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
             (lists, run, "rtl", image, Some((shade_cycles, filter_cycles)))
         }
         BackendArg::Verilator => {
-            return Err("--backend verilator runs the index-rendering chipset (--arch index); PROOF has --backend golden and rtl".into())
+            let vcd_of = |name: &str| if args.vcd { Some(od.dir().join(name)) } else { None };
+            crate::say!("  building or loading the Verilator libraries (cached in target/verilator/proof_*), then the frame");
+            let (lists, run) = tb::proof::backend::opp_lists_verilator(&scene, n_ops, fifo_depth, vcd_of("frame.vcd").as_deref())?;
+            let (shaded, shade_cycles) = tb::proof::backend::shade_slots_verilator(&scene, &lists, vcd_of("shade.vcd").as_deref())?;
+            let (rgb, covered, filter_cycles) = tb::proof::backend::filter_verilator(&scene, &shaded, area == FilterArea::Box2, vcd_of("filter.vcd").as_deref())?;
+            (lists, run, "verilator", (rgb, covered), Some((shade_cycles, filter_cycles)))
         }
     };
     let (rgb, covered) = image;
@@ -124,7 +129,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "front_face": opts.front,
         "camera": opts.camera,
         "opp": cycles,
-        "rtl_stage_cycles": stage_cycles.map(|(s, f)| serde_json::json!({ "shading": s, "filter": f, "filter_backend": "rtl", "filter_top": filter_top })),
+        "rtl_stage_cycles": stage_cycles.map(|(s, f)| serde_json::json!({ "shading": s, "filter": f, "filter_backend": backend, "filter_top": filter_top })),
         "stats": stats,
     });
     let staged = vec![
@@ -143,7 +148,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         stats.entries, stats.max_list, stats.pixels_with_partial, secs
     );
     if let Some((s, f)) = stage_cycles {
-        crate::say!("  RTL shading stage {s} cycles; RTL filter stage ({filter_top}, {} area) {f} cycles", json["filter"].as_str().unwrap_or(""));
+        crate::say!("  {backend}: shading stage {s} cycles; filter stage ({filter_top}, {} area) {f} cycles", json["filter"].as_str().unwrap_or(""));
     }
     for f in files {
         crate::say!("  wrote {}", f.display());

@@ -3,7 +3,8 @@
 //! coloured by the RustHDL shading stage, checked against its cycle model in every cycle
 //! (`shade_bench`), and the shaded slots are filtered by the RustHDL filter stage, 1x1 box
 //! (`filter_bench`) or the paper's 2x2 area (`filter2x2_bench`), checked against its cycle model in
-//! every cycle.
+//! every cycle. The Verilator backend (`*_verilator`) drives the generated Verilog of the same tops
+//! with the same stimulus, beside the same cycle models (`super::verilated`).
 
 use super::bench::run_frame;
 use super::filter2x2_bench::run_filter2x2;
@@ -93,4 +94,35 @@ fn image_of(scene: &ProofScene, run: &FilterRun) -> Result<(Vec<u8>, Vec<u8>, u6
         covered.push(px.covered);
     }
     Ok((rgb, covered, run.cycles))
+}
+
+/// The object lists of a frame built by the generated Verilog of an OPP of `n_ops` OPs under
+/// Verilator, compared with the cycle model in every cycle.
+pub fn opp_lists_verilator(scene: &ProofScene, n_ops: usize, fifo_depth: usize, vcd: Option<&Path>) -> Result<(Vec<Vec<Entry>>, OppRun), String> {
+    super::bench::check_ops(scene.screen, &scene.objects, n_ops)?;
+    let mut top = super::verilated::VlOpp::new(n_ops, fifo_depth, vcd, None)?;
+    let (run, _) = super::bench::run_frame_top(&mut top, scene.screen, &scene.objects, fifo_depth, None)?;
+    Ok((run.lists.clone(), run))
+}
+
+/// Every time slot of the frame's lists through the generated Verilog of the shading stage under
+/// Verilator (object table of `verilated::TABLE_BITS` address bits): the shaded slots and the cycles.
+pub fn shade_slots_verilator(scene: &ProofScene, lists: &[Vec<Entry>], vcd: Option<&Path>) -> Result<(Vec<ShadedSlot>, u64), String> {
+    use super::verilated::TABLE_BITS;
+    let n_lights = scene.lights.l.len();
+    let cfg = shade_config(&scene.lights, &scene.material, n_lights, TABLE_BITS as u32)?;
+    let slots = slots_of_lists(scene.screen.width, lists);
+    let mut top = super::verilated::VlShade::new(n_lights, vcd, None)?;
+    let (out, cycles, _) = super::shade_bench::run_shade_top(&mut top, &cfg, &slots, None)?;
+    Ok((out, cycles))
+}
+
+/// The shaded slots through the generated Verilog of the filter stage under Verilator: the 1x1 box
+/// (`box2 = false`) or the 2x2 area built for the scene's screen. Returns what [`filter_rtl`] does.
+pub fn filter_verilator(scene: &ProofScene, slots: &[ShadedSlot], box2: bool, vcd: Option<&Path>) -> Result<(Vec<u8>, Vec<u8>, u64), String> {
+    use super::verilated::{VlFilter, TABLE_BITS};
+    let s = scene.screen;
+    let mut top = if box2 { VlFilter::box2(s.width, s.height, vcd, None)? } else { VlFilter::box1(vcd, None)? };
+    let run = super::filter_bench::run_filter_top(&mut top, &filter_cfg(scene, TABLE_BITS)?, slots, None)?;
+    image_of(scene, &run)
 }

@@ -40,7 +40,7 @@ pub fn opp_ports() -> Vec<Port> {
 }
 
 /// One cycle's values in `opp_ports` order, as hex.
-fn opp_vector(inp: &OppIn, exp: &OppOut) -> Vec<String> {
+pub fn opp_vector(inp: &OppIn, exp: &OppOut) -> Vec<String> {
     let params: Bits<{ ObjParams::BITS }> = params_to_rtl(&inp.load.map(|l| l.1).unwrap_or_default()).into();
     let up: Bits<{ ProofSlot::BITS }> = slot_to_rtl(&inp.up_data).into();
     let down: Bits<{ ProofSlot::BITS }> = slot_to_rtl(&exp.down_data).into();
@@ -152,6 +152,39 @@ impl OppBench {
     }
 }
 
+/// An OPP top beside its cycle model, one clock at a time (the RustHDL bench, and the generated
+/// Verilog under Verilator in `super::verilated`).
+pub trait OppTop {
+    /// One clock on both sides, compared; the model's outputs before the edge.
+    fn cycle(&mut self, inp: &OppIn) -> Result<OppOut, String>;
+    /// The cycle model (its OPs' `free` drive the object loader).
+    fn model(&self) -> &OppModel;
+    /// Clocks so far.
+    fn cycles(&self) -> u64;
+    /// The vector recorder, if the run records.
+    fn take_vectors(&mut self) -> Option<Recorder>;
+    /// The waveform, for failure messages.
+    fn trace(&self) -> Option<&Trace>;
+}
+
+impl OppTop for OppBench {
+    fn cycle(&mut self, inp: &OppIn) -> Result<OppOut, String> {
+        OppBench::cycle(self, inp)
+    }
+    fn model(&self) -> &OppModel {
+        &self.model
+    }
+    fn cycles(&self) -> u64 {
+        self.cycle
+    }
+    fn take_vectors(&mut self) -> Option<Recorder> {
+        self.vectors.take()
+    }
+    fn trace(&self) -> Option<&Trace> {
+        Some(&self.trace)
+    }
+}
+
 /// A frame through the RTL OPP beside its cycle model, driven by the golden feeder and sink; with
 /// optional random gaps. Returns the lists and counts (equal to `golden::proof::cycle_opp::run_opp`'s).
 pub fn run_frame(
@@ -163,20 +196,42 @@ pub fn run_frame(
     vcd: Option<&Path>,
     vectors: Option<PathBuf>,
 ) -> Result<(OppRun, Option<(PathBuf, u64)>), String> {
+    check_ops(screen, objects, n_ops)?;
+    let mut bench = OppBench::new(n_ops, fifo_depth, vcd, vectors)?;
+    run_frame_top(&mut bench, screen, objects, fifo_depth, gaps)
+}
+
+/// An error unless an OPP of `n_ops` OPs can take the frame.
+pub fn check_ops(screen: Screen, objects: &[ObjectParams], n_ops: usize) -> Result<(), String> {
     let needed = golden::proof::render::ops_needed(screen, objects) as usize;
     if n_ops < needed {
         return Err(format!("the frame needs {needed} object processors (with reuse), but the OPP has {n_ops}"));
     }
-    let mut bench = OppBench::new(n_ops, fifo_depth, vcd, vectors)?;
+    Ok(())
+}
+
+/// A frame through an OPP top (FIFO depth `fifo_depth`) driven by the golden feeder and sink, with
+/// optional random gaps: the lists and counts, and the recorded vectors if the top records.
+pub fn run_frame_top<B: OppTop>(
+    bench: &mut B,
+    screen: Screen,
+    objects: &[ObjectParams],
+    fifo_depth: usize,
+    gaps: Option<Gaps>,
+) -> Result<(OppRun, Option<(PathBuf, u64)>), String> {
+    let n_ops = bench.model().ops.len();
+    check_ops(screen, objects, n_ops)?;
     let mut feeder = Feeder::new(screen, objects);
     let mut sink = Sink::new(screen);
     let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
     let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, ..Default::default() };
     let mut watchdog = Watchdog::new(PROGRESS_LIMIT);
+    let mut free: Vec<bool> = Vec::with_capacity(n_ops);
     while sink.lists.len() < screen.pixels() {
         let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
         let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
-        let free: Vec<bool> = bench.model.ops.iter().map(|o| o.free()).collect();
+        free.clear();
+        free.extend(bench.model().ops.iter().map(|o| o.free()));
         let f = feeder.offer(&free, go);
         let inp = OppIn { up_valid: f.valid, up_data: f.data, down_ready, load: f.load.map(|(k, id)| (k, objects[id as usize])) };
         let out = bench.cycle(&inp)?;
@@ -186,7 +241,7 @@ pub fn run_frame(
         if f.valid && !out.up_ready {
             run.input_stalls += 1;
         }
-        for op in &bench.model.ops {
+        for op in &bench.model().ops {
             match op.last_action {
                 Action::EmitOwnBefore | Action::EmitOwnEnd => run.insertions += 1,
                 Action::Drop => run.drops += 1,
@@ -199,12 +254,12 @@ pub fn run_frame(
             sink.take(&out.down_data)?;
         }
         let phase = || format!("the OPP frame ({} of {} pixels' lists out)", sink.lists.len(), screen.pixels());
-        watchdog.check(bench.cycle, progress, phase, Some(&bench.trace))?;
+        watchdog.check(bench.cycles(), progress, phase, bench.trace())?;
     }
-    run.cycles = bench.cycle;
+    run.cycles = bench.cycles();
     run.slots_out = sink.slots;
     run.lists = sink.lists;
-    let vec = match bench.vectors.take() {
+    let vec = match bench.take_vectors() {
         Some(w) => Some(w.finish()?),
         None => None,
     };

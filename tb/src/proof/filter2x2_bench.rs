@@ -204,8 +204,8 @@ impl FilterTop for Filter2x2Bench {
     fn take_vectors(&mut self) -> Option<Recorder> {
         self.vectors.take()
     }
-    fn trace(&self) -> &Trace {
-        &self.trace
+    fn trace(&self) -> Option<&Trace> {
+        Some(&self.trace)
     }
 }
 

@@ -248,8 +248,8 @@ impl FilterTop for FilterBench {
     fn take_vectors(&mut self) -> Option<Recorder> {
         self.vectors.take()
     }
-    fn trace(&self) -> &Trace {
-        &self.trace
+    fn trace(&self) -> Option<&Trace> {
+        Some(&self.trace)
     }
 }
 
@@ -298,7 +298,7 @@ pub trait FilterTop {
     /// The vector recorder, if the run records.
     fn take_vectors(&mut self) -> Option<Recorder>;
     /// The waveform, for failure messages.
-    fn trace(&self) -> &Trace;
+    fn trace(&self) -> Option<&Trace>;
 }
 
 /// The outcome of a run of the filter bench.
@@ -349,7 +349,7 @@ pub fn run_filter_top<B: FilterTop>(b: &mut B, cfg: &[CfgWrite], slots: &[Shaded
             outs.push(o.down_data);
         }
         let phase = || format!("the filter stage ({} of {pixels} pixels out; a list without a last slot?)", outs.len());
-        watchdog.check(b.cycles(), progress, phase, Some(b.trace()))?;
+        watchdog.check(b.cycles(), progress, phase, b.trace())?;
     }
     let cycles = b.cycles() - start;
     let rec = match b.take_vectors() {

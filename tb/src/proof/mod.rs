@@ -3,7 +3,8 @@
 //! * [`shade_bench`], [`filter_bench`], [`filter2x2_bench`]: every cycle, the shading stage and the
 //!   filter stage (1x1 and 2x2 area, and the 2x2 box alone) vs their cycle models;
 //! * [`replay`]: one port-list testbench; the generated Verilog of every PROOF top replays its recorded vectors (Icarus / Verilator);
-//! * [`backend`]: the RTL backend of `idxrender render --arch proof --backend rtl`.
+//! * [`verilated`]: the same tops as generated Verilog under Verilator, beside the same cycle models;
+//! * [`backend`]: the RTL and Verilator backends of `idxrender render --arch proof --backend rtl|verilator`.
 
 pub mod backend;
 pub mod bench;
@@ -12,6 +13,7 @@ pub mod filter2x2_bench;
 pub mod filter_bench;
 pub mod replay;
 pub mod shade_bench;
+pub mod verilated;
 #[cfg(test)]
 mod filter2x2_tests;
 #[cfg(test)]

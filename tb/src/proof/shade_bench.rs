@@ -81,6 +81,55 @@ pub fn shade_ports() -> Vec<Port> {
     ]
 }
 
+/// One cycle of recorded vectors for the shading top, in [`shade_ports`] order: the inputs and the
+/// model's outputs.
+pub fn shade_vector_row(i: &ShadeIn, exp: &ShadeOut) -> Vec<String> {
+    let c = i.cfg.unwrap_or_default();
+    let data96: Bits<96> = Bits::<96>::from(c.data as u64) | (Bits::<96>::from((c.data >> 64) as u64) << 64);
+    let up: Bits<{ hdl::proof::ProofSlot::BITS }> = slot_to_rtl(&i.up_data).into();
+    let down: Bits<{ RtlShaded::BITS }> = shaded_to_rtl(&exp.down_data).into();
+    vec![
+        format!("{}", i.cfg.is_some() as u8),
+        format!("{:x}", c.sel),
+        format!("{:x}", c.addr),
+        hex_of(data96),
+        format!("{}", i.up_valid as u8),
+        hex_of(up),
+        format!("{}", i.down_ready as u8),
+        format!("{}", exp.up_ready as u8),
+        format!("{}", exp.down_valid as u8),
+        hex_of(down),
+    ]
+}
+
+/// A shading top beside its cycle model, one clock at a time (the RustHDL bench, and the generated
+/// Verilog under Verilator in `super::verilated`).
+pub trait ShadeTop {
+    /// One clock on both sides, compared; the model's outputs before the edge.
+    fn cycle(&mut self, i: &ShadeIn) -> Result<ShadeOut, String>;
+    /// Clocks so far.
+    fn cycles(&self) -> u64;
+    /// The vector recorder, if the run records.
+    fn take_vectors(&mut self) -> Option<Recorder>;
+    /// The waveform, for failure messages.
+    fn trace(&self) -> Option<&Trace>;
+}
+
+impl ShadeTop for ShadeBench {
+    fn cycle(&mut self, i: &ShadeIn) -> Result<ShadeOut, String> {
+        ShadeBench::cycle(self, i)
+    }
+    fn cycles(&self) -> u64 {
+        self.cycle
+    }
+    fn take_vectors(&mut self) -> Option<Recorder> {
+        self.vectors.take()
+    }
+    fn trace(&self) -> Option<&Trace> {
+        Some(&self.trace)
+    }
+}
+
 pub struct ShadeBench {
     pub uut: ShadingStage,
     pub model: ShadeModel,
@@ -159,21 +208,7 @@ impl ShadeBench {
         let exp = self.model.outputs(i.down_ready);
         self.compare(&exp)?;
         if let Some(w) = self.vectors.as_mut() {
-            let data96: Bits<96> = Bits::<96>::from(c.data as u64) | (Bits::<96>::from((c.data >> 64) as u64) << 64);
-            let up: Bits<{ hdl::proof::ProofSlot::BITS }> = slot_to_rtl(&i.up_data).into();
-            let down: Bits<{ RtlShaded::BITS }> = shaded_to_rtl(&exp.down_data).into();
-            w.cycle(&[
-                format!("{}", i.cfg.is_some() as u8),
-                format!("{:x}", c.sel),
-                format!("{:x}", c.addr),
-                hex_of(data96),
-                format!("{}", i.up_valid as u8),
-                hex_of(up),
-                format!("{}", i.down_ready as u8),
-                format!("{}", exp.up_ready as u8),
-                format!("{}", exp.down_valid as u8),
-                hex_of(down),
-            ])?;
+            w.cycle(&shade_vector_row(i, &exp))?;
         }
         self.model.step(i)?;
         let u = &mut self.uut;
@@ -207,6 +242,17 @@ pub fn run_shade(
     vectors: Option<PathBuf>,
 ) -> Result<(Vec<ShadedSlot>, u64, Option<(PathBuf, u64)>), String> {
     let mut b = ShadeBench::new(n_lights, obj_addr_bits, vcd, vectors)?;
+    run_shade_top(&mut b, cfg, slots, gaps)
+}
+
+/// Configure a shading top, then stream `slots` through it with optional random gaps at the input
+/// and back-pressure at the output: the shaded slots, the cycles and the recorded vectors.
+pub fn run_shade_top<B: ShadeTop>(
+    b: &mut B,
+    cfg: &[CfgWrite],
+    slots: &[Slot],
+    gaps: Option<StageGaps>,
+) -> Result<(Vec<ShadedSlot>, u64, Option<(PathBuf, u64)>), String> {
     let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
     for c in cfg {
         b.cycle(&ShadeIn { cfg: Some(*c), down_ready: true, ..Default::default() })?;
@@ -227,10 +273,10 @@ pub fn run_shade(
             outs.push(o.down_data);
         }
         let phase = || format!("the shading stage ({} of {} slots out)", outs.len(), slots.len());
-        watchdog.check(b.cycle, progress, phase, Some(&b.trace))?;
+        watchdog.check(b.cycles(), progress, phase, b.trace())?;
     }
-    let cycles = b.cycle;
-    let rec = match b.vectors.take() {
+    let cycles = b.cycles();
+    let rec = match b.take_vectors() {
         Some(w) => Some(w.finish()?),
         None => None,
     };

@@ -34,6 +34,8 @@
 //! with `data`, `valid`, `ready`), for a `vcd-diff` of the two. [`VcdScope::Full`] builds without the
 //! depth limit (every signal).
 
+pub mod shared_lib;
+
 use crate::chipset::{HostDrive, PhaseCycles, Progress, VcdScope};
 use crate::common::workspace_target;
 use crate::cs::pack::{command_of, rgb_of};
@@ -86,7 +88,7 @@ fn trace_suffix(vcd: Option<VcdScope>) -> &'static str {
 }
 
 /// FNV-1a, 64 bits: a cache key that does not change between Rust releases.
-fn fnv1a(parts: &[&[u8]]) -> u64 {
+pub(crate) fn fnv1a(parts: &[&[u8]]) -> u64 {
     let mut h: u64 = 0xcbf29ce484222325;
     for p in parts {
         for &b in p.iter().chain(&[0xffu8]) {
@@ -110,11 +112,37 @@ fn verilator_flags(vcd: Option<VcdScope>) -> Vec<String> {
 
 /// Build the harness for `screen` (with a VCD writer of `vcd`'s kind) unless the cache holds it.
 pub fn build(screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
-    // One build at a time in this process (tests run in threads; the machine has 2 cores); other
-    // processes are kept apart by building in a private directory and renaming it into place.
-    static BUILDING: Mutex<()> = Mutex::new(());
-    let _one = BUILDING.lock().unwrap_or_else(|e| e.into_inner());
     let t0 = Instant::now();
+    let version = verilator_version()?;
+    let verilog = hdl::chipset::verilog(screen.width, screen.height)?;
+    let flags = verilator_flags(vcd);
+    let key = format!("{:016x}", fnv1a(&[verilog.as_bytes(), HARNESS_CPP.as_bytes(), PORTS_VLT.as_bytes(), flags.join(" ").as_bytes(), &version]));
+    let name = format!("chipset_{}x{}{}", screen.width, screen.height, trace_suffix(vcd));
+    cached_build(&name, &key, "obj/Vchipset", t0, &|tmp: &Path| {
+        let write = |f: &str, text: &str| std::fs::write(tmp.join(f), text).map_err(|e| format!("cannot write {}: {e}", tmp.join(f).display()));
+        write("chipset.v", &verilog)?;
+        write("harness.cpp", HARNESS_CPP)?;
+        write("ports.vlt", PORTS_VLT)?;
+        let config: &[&str] = if vcd == Some(VcdScope::Ports) { &["ports.vlt"] } else { &[] };
+        let out = Command::new("verilator")
+            .current_dir(tmp)
+            .args(&flags)
+            .args(["-Mdir", "obj"])
+            .args(config)
+            .args(["chipset.v", "harness.cpp"])
+            .output()
+            .map_err(|e| format!("cannot run verilator: {e}"))?;
+        let log = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+        let _ = std::fs::write(tmp.join("build.log"), &log);
+        if !out.status.success() {
+            return Err(format!("verilator failed to build the chipset harness (files in {}):\n{}", tmp.display(), tail(&log, 4000)));
+        }
+        Ok(())
+    })
+}
+
+/// What `verilator --version` prints (part of every cache key), or why Verilator cannot run.
+pub(crate) fn verilator_version() -> Result<Vec<u8>, String> {
     let version = Command::new("verilator")
         .arg("--version")
         .output()
@@ -122,13 +150,19 @@ pub fn build(screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
     if !version.status.success() {
         return Err(format!("verilator --version failed: {}", String::from_utf8_lossy(&version.stderr)));
     }
-    let verilog = hdl::chipset::verilog(screen.width, screen.height)?;
-    let flags = verilator_flags(vcd);
-    let key = format!("{:016x}", fnv1a(&[verilog.as_bytes(), HARNESS_CPP.as_bytes(), PORTS_VLT.as_bytes(), flags.join(" ").as_bytes(), &version.stdout]));
+    Ok(version.stdout)
+}
+
+/// The build directory `target/verilator/<name>/`, made by `make` unless it holds a build whose
+/// `hash` file says `key` and whose `product` (a path inside it) exists. One build at a time in this
+/// process (tests run in threads; the machine has 2 cores); other processes are kept apart by
+/// building in a private directory and renaming it into place.
+pub(crate) fn cached_build(name: &str, key: &str, product: &str, t0: Instant, make: &dyn Fn(&Path) -> Result<(), String>) -> Result<Build, String> {
+    static BUILDING: Mutex<()> = Mutex::new(());
+    let _one = BUILDING.lock().unwrap_or_else(|e| e.into_inner());
     let root = workspace_target().join("verilator");
-    let name = format!("chipset_{}x{}{}", screen.width, screen.height, trace_suffix(vcd));
-    let dir = root.join(&name);
-    let exe_in = |d: &Path| d.join("obj").join("Vchipset");
+    let dir = root.join(name);
+    let exe_in = |d: &Path| d.join(product);
     let cached = |d: &Path| std::fs::read_to_string(d.join("hash")).map(|h| h.trim() == key).unwrap_or(false) && exe_in(d).is_file();
     if cached(&dir) {
         return Ok(Build { exe: exe_in(&dir), fresh: false, seconds: t0.elapsed().as_secs_f64() });
@@ -137,25 +171,11 @@ pub fn build(screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
     let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.subsec_nanos()).unwrap_or(0);
     let tmp = root.join(format!("{name}.build-{}-{nanos}", std::process::id()));
     std::fs::create_dir_all(&tmp).map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
-    let write = |f: &str, text: &str| std::fs::write(tmp.join(f), text).map_err(|e| format!("cannot write {}: {e}", tmp.join(f).display()));
-    write("chipset.v", &verilog)?;
-    write("harness.cpp", HARNESS_CPP)?;
-    write("ports.vlt", PORTS_VLT)?;
-    let config: &[&str] = if vcd == Some(VcdScope::Ports) { &["ports.vlt"] } else { &[] };
-    let out = Command::new("verilator")
-        .current_dir(&tmp)
-        .args(&flags)
-        .args(["-Mdir", "obj"])
-        .args(config)
-        .args(["chipset.v", "harness.cpp"])
-        .output()
-        .map_err(|e| format!("cannot run verilator: {e}"))?;
-    let log = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
-    let _ = std::fs::write(tmp.join("build.log"), &log);
-    if !out.status.success() || !exe_in(&tmp).is_file() {
-        return Err(format!("verilator failed to build the chipset harness (files in {}):\n{}", tmp.display(), tail(&log, 4000)));
+    make(&tmp)?;
+    if !exe_in(&tmp).is_file() {
+        return Err(format!("the build in {} did not make {product}", tmp.display()));
     }
-    write("hash", &format!("{key}\n"))?;
+    std::fs::write(tmp.join("hash"), format!("{key}\n")).map_err(|e| format!("cannot write {}: {e}", tmp.join("hash").display()))?;
     if dir.exists() && !cached(&dir) {
         // A stale entry (another Verilog or harness): move it aside and remove it.
         let old = root.join(format!("{name}.old-{}-{nanos}", std::process::id()));
@@ -175,7 +195,7 @@ pub fn build(screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
     Ok(Build { exe: exe_in(&dir), fresh, seconds: t0.elapsed().as_secs_f64() })
 }
 
-fn tail(s: &str, n: usize) -> &str {
+pub(crate) fn tail(s: &str, n: usize) -> &str {
     let mut i = s.len().saturating_sub(n);
     while !s.is_char_boundary(i) {
         i += 1;
