@@ -37,32 +37,38 @@ fn proof_render_writes_an_antialiased_frame_a_coverage_image_and_stats() {
     assert!(stats["opp"]["cycles"].as_u64().unwrap() >= 96 * 60);
 }
 
-/// The OPP, shading and filter stages all in RTL (OPP -> shading -> filter), against the golden
-/// model, with both filter areas (1x1: `proof_filter`; the paper's 2x2: `proof_filter2x2`): the PNG
-/// files must be identical, and stats.json must say that the filter ran in RTL.
+/// The OPP, shading and filter stages all in RTL (OPP -> shading -> filter), as RustHDL simulations
+/// and as generated Verilog under Verilator, against the golden model, with both filter areas (1x1:
+/// `proof_filter`; the paper's 2x2: `proof_filter2x2`): the PNG files must be identical, and
+/// stats.json must say which backend ran the filter.
 #[test]
-fn proof_rtl_backend_frame_equals_the_golden_frame_byte_for_byte() {
+fn proof_rtl_and_verilator_backend_frames_equal_the_golden_frame_byte_for_byte() {
+    if !tb::common::require_tools("proof_rtl_and_verilator_backend_frames_equal_the_golden_frame_byte_for_byte", &["verilator", "g++"]) {
+        return;
+    }
     for (scene, extra) in [("polyhedron", vec!["--size", "64x40"]), ("teapot", vec!["--grid", "2", "--size", "48x30"])] {
         let mut frames = Vec::new();
         for (filter, top) in [("1x1", "proof_filter"), ("2x2", "proof_filter2x2")] {
             let mut files = Vec::new();
-            for backend in ["golden", "rtl"] {
+            for backend in ["golden", "rtl", "verilator"] {
                 let out = temp_dir(&format!("{scene}-{filter}-{backend}"));
                 let mut args = vec!["render", "--arch", "proof", "--scene", scene, "--filter", filter, "--backend", backend, "--out", out.to_str().unwrap()];
                 args.extend(extra.iter());
                 let (ok, stdout, err) = run(&args);
                 assert!(ok, "{scene} {filter} {backend}: {err}");
                 files.push((std::fs::read(out.join("frame.png")).unwrap(), std::fs::read(out.join("coverage.png")).unwrap()));
-                if backend == "rtl" {
+                if backend != "golden" {
                     let stats: serde_json::Value = serde_json::from_slice(&std::fs::read(out.join("stats.json")).unwrap()).unwrap();
                     let st = &stats["rtl_stage_cycles"];
-                    assert_eq!((st["filter_backend"].as_str(), st["filter_top"].as_str()), (Some("rtl"), Some(top)), "{scene} {filter}: {stats}");
+                    assert_eq!((st["filter_backend"].as_str(), st["filter_top"].as_str()), (Some(backend), Some(top)), "{scene} {filter}: {stats}");
                     assert!(st["filter"].as_u64().unwrap() > 0, "{scene} {filter}: no filter cycles in {stats}");
-                    assert!(stdout.contains(&format!("RTL filter stage ({top}, {filter} area)")), "{scene} {filter}: {stdout}");
+                    assert!(stdout.contains(&format!("{backend}: shading stage")), "{scene} {filter}: {stdout}");
+                    assert!(stdout.contains(&format!("filter stage ({top}, {filter} area)")), "{scene} {filter}: {stdout}");
                     assert!(!stdout.contains("golden"), "{scene} {filter}: the RTL run mentions the golden model: {stdout}");
                 }
             }
             assert!(files[0] == files[1], "{scene} {filter}: the RTL backend's images differ from the golden model's");
+            assert!(files[0] == files[2], "{scene} {filter}: the Verilator backend's images differ from the golden model's");
             frames.push(files.swap_remove(0).0);
         }
         assert!(frames[0] != frames[1], "{scene}: the 2x2 frame should differ from the 1x1 frame");
@@ -89,7 +95,7 @@ fn proof_bad_options_are_clear_errors() {
         (vec!["--ops", "1"], "needs 2 object processors"),
         // Issue 18: this count used to be allocated until the process was killed.
         (vec!["--ops", "100000000"], "at most 2 object processors"),
-        (vec!["--backend", "verilator"], "PROOF has --backend golden and rtl"),
+        (vec!["--vcd"], "--vcd needs --backend rtl or --backend verilator"),
     ] {
         let out = temp_dir("bad");
         let mut a = vec!["render", "--arch", "proof", "--scene", "polyhedron", "--size", "32x20", "--out", out.to_str().unwrap()];

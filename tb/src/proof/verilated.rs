@@ -57,7 +57,13 @@ impl VlOpp {
     /// Verilog drove them (the replay's format).
     pub fn new(n_ops: usize, fifo_depth: usize, vcd: Option<&Path>, vectors: Option<PathBuf>) -> Result<VlOpp, String> {
         let verilog = hdl::proof::verilog_opp("opp", n_ops, fifo_depth)?;
-        let build = build_lib(&format!("proof_opp_{n_ops}ops_depth{fifo_depth}"), "opp", &verilog, &opp_ports(), vcd.is_some())?;
+        VlOpp::from_verilog(&format!("proof_opp_{n_ops}ops_depth{fifo_depth}"), &verilog, n_ops, fifo_depth, vcd, vectors)
+    }
+
+    /// [`VlOpp::new`] on the given Verilog of an OPP (top `opp`) of `n_ops` OPs, cached as `cache`:
+    /// for tests that put a fault into the text.
+    pub fn from_verilog(cache: &str, verilog: &str, n_ops: usize, fifo_depth: usize, vcd: Option<&Path>, vectors: Option<PathBuf>) -> Result<VlOpp, String> {
+        let build = build_lib(cache, "opp", verilog, &opp_ports(), vcd.is_some())?;
         Ok(VlOpp { vl: Vl::open(&build, "opp", &opp_ports(), vcd, vectors)?, model: OppModel::new(n_ops, fifo_depth)? })
     }
 }
