@@ -55,11 +55,8 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     if n_ops > most {
         return Err(format!("--ops {n_ops}: the frame has {} objects, so at most {most} object processors can be used", scene.objects.len()));
     }
-    if n_ops < needed {
-        return Err(format!(
-            "the frame needs {needed} object processors with OP reuse, but --ops is {n_ops}: raise --ops or leave it out"
-        ));
-    }
+    // Fewer OPs than the frame needs: the frame takes several passes, each pass's output lists
+    // going round again with the next batch of objects (seed 002 4.2; golden::proof::cycle_opp::passes).
     let (lists, cycles, backend, image, stage_cycles) = match args.backend {
         BackendArg::Golden => {
             let lists = object_lists(scene.screen, &scene.objects);
@@ -71,7 +68,10 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
                     .progress_chars("=> "),
             );
             bar.set_message(format!("{n_ops} OPs"));
-            let run = run_opp_with_progress(scene.screen, &scene.objects, n_ops, fifo_depth, None, &mut |done, _| bar.set_position(done));
+            let run = run_opp_with_progress(scene.screen, &scene.objects, n_ops, fifo_depth, None, &mut |done, total| {
+                bar.set_length(total);
+                bar.set_position(done)
+            });
             bar.finish_and_clear();
             let run = run?;
             if run.lists != lists {
@@ -129,6 +129,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "front_face": opts.front,
         "camera": opts.camera,
         "opp": cycles,
+        "feedback_bytes": cycles.feedback_bytes(),
         "rtl_stage_cycles": stage_cycles.map(|(s, f)| serde_json::json!({ "shading": s, "filter": f, "filter_backend": backend, "filter_top": filter_top })),
         "stats": stats,
     });
@@ -143,6 +144,12 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "{} (PROOF, {backend}): {}x{}, {} objects, {} OPs needed with reuse, OPP of {} OPs with FIFO depth {}: {} cycles for {} pixels",
         mesh.name, w, h, stats.setup.objects, stats.ops_needed, n_ops, fifo_depth, cycles.cycles, cycles.pixels
     );
+    if cycles.passes > 1 {
+        crate::say!(
+            "  {} passes (fewer OPs than the {needed} needed): the lists went round again, at most {} slots ({} bytes) stored between passes",
+            cycles.passes, cycles.feedback_slots, cycles.feedback_bytes()
+        );
+    }
     crate::say!(
         "  {} list entries, longest list {}, {} pixels anti-aliased; {:.3} s",
         stats.entries, stats.max_list, stats.pixels_with_partial, secs

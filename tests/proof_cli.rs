@@ -75,6 +75,36 @@ fn proof_rtl_and_verilator_backend_frames_equal_the_golden_frame_byte_for_byte()
     }
 }
 
+/// Fewer OPs than the frame needs (issue 19 item 2): the lists go round again in passes, through
+/// every backend, and the frame is the one-pass frame; stats.json counts the passes and the memory.
+#[test]
+fn fewer_ops_than_needed_render_the_same_frame_in_passes_on_every_backend() {
+    if !tb::common::require_tools("fewer_ops_than_needed_render_the_same_frame_in_passes_on_every_backend", &["verilator", "g++"]) {
+        return;
+    }
+    let render = |name: &str, extra: &[&str]| -> (Vec<u8>, serde_json::Value, String) {
+        let out = temp_dir(name);
+        let mut a = vec!["render", "--arch", "proof", "--scene", "teapot", "--grid", "2", "--size", "40x25", "--out", out.to_str().unwrap()];
+        a.extend(extra);
+        let (ok, stdout, err) = run(&a);
+        assert!(ok, "{a:?}: {err}");
+        let stats = serde_json::from_slice(&std::fs::read(out.join("stats.json")).unwrap()).unwrap();
+        (std::fs::read(out.join("frame.png")).unwrap(), stats, stdout)
+    };
+    let (one, stats, _) = render("passes-one", &[]);
+    assert_eq!(stats["opp"]["passes"], 1);
+    let needed = stats["stats"]["ops_needed"].as_u64().unwrap();
+    assert!(needed > 8, "teapot grid 2 at 40x25 needs {needed} OPs");
+    for backend in ["golden", "rtl", "verilator"] {
+        let (frame, stats, stdout) = render(&format!("passes-{backend}"), &["--ops", "8", "--backend", backend]);
+        assert!(frame == one, "{backend}: the frame in passes differs from the one-pass frame");
+        let passes = stats["opp"]["passes"].as_u64().unwrap();
+        assert!(passes >= needed.div_ceil(8), "{backend}: {passes} passes for {needed} OPs needed with 8");
+        assert!(stats["feedback_bytes"].as_u64().unwrap() > 0, "{backend}: {stats}");
+        assert!(stdout.contains(&format!("{passes} passes")), "{backend}: {stdout}");
+    }
+}
+
 /// The 2x2 RTL's line buffer needs a screen at least 2 pixels wide: said before any simulation.
 #[test]
 fn proof_rtl_2x2_filter_on_a_one_pixel_wide_screen_is_a_clear_error() {
@@ -92,7 +122,7 @@ fn proof_bad_options_are_clear_errors() {
     for (args, needle) in [
         (vec!["--filter", "3x3"], "filter"),
         (vec!["--fifo-depth", "0"], "fifo-depth"),
-        (vec!["--ops", "1"], "needs 2 object processors"),
+        (vec!["--ops", "0"], "at least one object processor"),
         // Issue 18: this count used to be allocated until the process was killed.
         (vec!["--ops", "100000000"], "at most 2 object processors"),
         (vec!["--vcd"], "--vcd needs --backend rtl or --backend verilator"),

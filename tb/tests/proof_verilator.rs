@@ -154,3 +154,20 @@ fn a_fault_in_the_opps_verilog_is_caught_by_the_cycle_comparison() {
     let mut top = VlOpp::new(2, 1, None, None).unwrap();
     tb::proof::bench::run_frame_top(&mut top, s.screen, &s.objects, 1, None).unwrap();
 }
+
+/// Issue 19 item 2 at full scale: the castle at 512x512 needs 226 OPs; through the Verilog of a
+/// 32-OP OPP it takes passes, its lists fed back each time, and builds the golden lists.
+#[test]
+fn the_castle_at_512x512_through_a_32_op_verilog_opp_in_passes_builds_the_golden_lists() {
+    if !require_tools("the_castle_at_512x512_through_a_32_op_verilog_opp_in_passes_builds_the_golden_lists", &["verilator", "g++"]) {
+        return;
+    }
+    let s = scene("castle", 512, 512);
+    let lists = object_lists(s.screen, &s.objects);
+    let (vl_lists, run) = opp_lists_verilator(&s, 32, 1, None).unwrap();
+    let model = golden::proof::cycle_opp::run_opp(s.screen, &s.objects, 32, 1, None).unwrap();
+    assert!(vl_lists == lists, "the lists after {} passes differ from the golden lists", run.passes);
+    assert_eq!((run.passes, run.cycles, run.feedback_slots), (model.passes, model.cycles, model.feedback_slots));
+    assert!(run.passes >= 226usize.div_ceil(32), "{} passes", run.passes);
+    println!("castle 512x512, 32 OPs: {} passes, {} cycles, {} slots fed back at most", run.passes, run.cycles, run.feedback_slots);
+}

@@ -16,7 +16,13 @@
 //! pixel (line first, then column, then id), loads the next one into the highest-numbered free OP (one
 //! load per cycle), and does not push a pixel into the pipeline while an object whose box starts at or
 //! before that pixel is still unloaded. An OP becomes free once its object's last box pixel has passed
-//! it. N must be at least [`super::render::ops_needed`]; with fewer the frame cannot finish.
+//! it. With N at least [`super::render::ops_needed`] a frame is one pass.
+//!
+//! Fewer OPs than the frame needs (§4.2's proposal for scenes with more objects than OPs): the
+//! objects are split into passes ([`passes`]), each of which needs at most N OPs, and the OPP's
+//! output list stream of one pass is stored and goes round again as the input of the next pass, with
+//! the next batch of objects ([`Feeder::pass`]). List insertion orders entries by (depth, id) and cuts
+//! behind the first full entry, so the final lists do not depend on the batches.
 
 use super::cycle_op::{Action, Decision, OpIn, OpModel, OpOut};
 use super::format::{Entry, ObjectParams, Slot};
@@ -126,7 +132,11 @@ pub struct Feeder {
     /// Object ids in loading order, with the raster position of their first box pixel.
     pub order: Vec<(u64, u16)>,
     pub next_load: usize,
+    /// The next slot of the input stream to push: the next pixel when the input is empty lists.
     pub next_pixel: u64,
+    /// The input stream of a later pass (the lists of the previous pass), or None: one empty slot per
+    /// pixel.
+    pub input: Option<Vec<Slot>>,
     /// A pixel is being offered and must stay offered until taken.
     pub holding: bool,
 }
@@ -135,16 +145,27 @@ impl Feeder {
     pub fn new(screen: Screen, objects: &[ObjectParams]) -> Feeder {
         let mut order: Vec<(u64, u16)> = objects.iter().map(|o| (o.first_pixel(screen.width), o.id)).collect();
         order.sort();
-        Feeder { width: screen.width, height: screen.height, order, next_load: 0, next_pixel: 0, holding: false }
+        Feeder { width: screen.width, height: screen.height, order, next_load: 0, next_pixel: 0, input: None, holding: false }
+    }
+
+    /// The feeder of one pass: the objects `ids` (of `objects`, indexed by id) and, after the first
+    /// pass, the previous pass's output stream as input.
+    pub fn pass(screen: Screen, objects: &[ObjectParams], ids: &[u16], input: Option<Vec<Slot>>) -> Feeder {
+        let mut order: Vec<(u64, u16)> = ids.iter().map(|&i| (objects[i as usize].first_pixel(screen.width), i)).collect();
+        order.sort();
+        Feeder { width: screen.width, height: screen.height, order, next_load: 0, next_pixel: 0, input, holding: false }
     }
 
     pub fn pixels(&self) -> u64 {
         self.width as u64 * self.height as u64
     }
 
-    /// All pixels pushed.
+    /// All pixels (all input slots) pushed.
     pub fn finished(&self) -> bool {
-        self.next_pixel >= self.pixels()
+        match &self.input {
+            None => self.next_pixel >= self.pixels(),
+            Some(v) => self.next_pixel >= v.len() as u64,
+        }
     }
 
     /// This cycle's offer, given the OPs' free flags and whether the source has a pixel ready (`go`
@@ -152,10 +173,16 @@ impl Feeder {
     pub fn offer(&self, free: &[bool], go: bool) -> FeedOut {
         let load = if self.next_load < self.order.len() { free.iter().rposition(|&f| f).map(|k| (k, self.order[self.next_load].1)) } else { None };
         let after = self.next_load + load.is_some() as usize;
-        let p = self.next_pixel;
+        let w = self.width as u64;
+        let (p, data) = match &self.input {
+            None => (self.next_pixel, Slot::empty((self.next_pixel % w) as u16, (self.next_pixel / w) as u16)),
+            Some(v) => match v.get(self.next_pixel as usize) {
+                Some(s) => (s.y as u64 * w + s.x as u64, *s),
+                None => (self.pixels(), Slot::default()),
+            },
+        };
         let allowed = p < self.pixels() && (after >= self.order.len() || self.order[after].0 > p);
         let valid = allowed && (go || self.holding);
-        let data = Slot::empty((p % self.width as u64) as u16, (p / self.width as u64) as u16);
         FeedOut { valid, data: if valid { data } else { Slot::default() }, load }
     }
 
@@ -180,11 +207,18 @@ pub struct Sink {
     pub lists: Vec<Vec<Entry>>,
     pub cur: Vec<Entry>,
     pub slots: u64,
+    /// Every slot taken, in order, when asked for ([`Sink::keeping_slots`]): the stream that goes
+    /// round again in the next pass.
+    pub stream: Option<Vec<Slot>>,
 }
 
 impl Sink {
     pub fn new(screen: Screen) -> Sink {
         Sink { width: screen.width, lists: Vec::with_capacity(screen.pixels()), ..Default::default() }
+    }
+    /// A sink that also keeps the raw slot stream.
+    pub fn keeping_slots(screen: Screen) -> Sink {
+        Sink { stream: Some(Vec::with_capacity(screen.pixels())), ..Sink::new(screen) }
     }
     /// Take one slot.
     pub fn take(&mut self, s: &Slot) -> Result<(), String> {
@@ -194,6 +228,9 @@ impl Sink {
             return Err(format!("slot for pixel ({}, {}) while pixel {:?} was expected", s.x, s.y, expect));
         }
         self.slots += 1;
+        if let Some(v) = self.stream.as_mut() {
+            v.push(*s);
+        }
         if s.has_entry {
             self.cur.push(s.entry);
         }
@@ -245,6 +282,53 @@ pub struct OppRun {
     /// Own entries inserted before the head or appended (jams), and slots dropped behind full entries.
     pub insertions: u64,
     pub drops: u64,
+    /// Passes of the pixel stream through the OPP (1 when the OPP has the OPs the frame needs).
+    pub passes: usize,
+    /// The most slots stored between two passes (the feedback memory, in slots; 0 for one pass).
+    pub feedback_slots: u64,
+}
+
+impl OppRun {
+    /// The feedback memory in bytes: [`OppRun::feedback_slots`] slots of
+    /// [`super::format::SLOT_BITS`] bits.
+    pub fn feedback_bytes(&self) -> u64 {
+        (self.feedback_slots * super::format::SLOT_BITS).div_ceil(8)
+    }
+}
+
+/// Object ids split into passes of an OPP of `n_ops` OPs, in loading order: each object goes to the
+/// first pass in which fewer than `n_ops` of that pass's objects span its first pixel (raster-order
+/// spans, counted as [`super::render::ops_needed`] counts them), so each pass needs at most `n_ops`
+/// OPs with reuse. One pass when `n_ops` >= `ops_needed`. `n_ops` must be at least 1.
+pub fn passes(screen: Screen, objects: &[ObjectParams], n_ops: usize) -> Vec<Vec<u16>> {
+    use std::cmp::Reverse;
+    use std::collections::BinaryHeap;
+    let mut order: Vec<(u64, u16)> = objects.iter().map(|o| (o.first_pixel(screen.width), o.id)).collect();
+    order.sort();
+    // Per pass: the ids, and the last pixels of its objects still spanning the current position.
+    let mut out: Vec<(Vec<u16>, BinaryHeap<Reverse<u64>>)> = Vec::new();
+    for (first, id) in order {
+        let last = objects[id as usize].last_pixel(screen.width);
+        let mut placed = false;
+        for (ids, live) in out.iter_mut() {
+            while live.peek().is_some_and(|&Reverse(l)| l < first) {
+                live.pop();
+            }
+            if live.len() < n_ops.max(1) {
+                ids.push(id);
+                live.push(Reverse(last));
+                placed = true;
+                break;
+            }
+        }
+        if !placed {
+            out.push((vec![id], BinaryHeap::from(vec![Reverse(last)])));
+        }
+    }
+    if out.is_empty() {
+        out.push((Vec::new(), BinaryHeap::new()));
+    }
+    out.into_iter().map(|(ids, _)| ids).collect()
 }
 
 /// Run a frame of objects through the cycle model: `n_ops` OPs with FIFOs of `fifo_depth`, optional
@@ -264,56 +348,73 @@ pub fn run_opp_with_progress(
     gaps: Option<Gaps>,
     progress: &mut dyn FnMut(u64, u64),
 ) -> Result<OppRun, String> {
-    let needed = super::render::ops_needed(screen, objects) as usize;
-    if n_ops < needed {
-        return Err(format!("the frame needs {needed} object processors (with reuse), but the OPP has {n_ops}"));
+    if n_ops == 0 {
+        return Err("an OPP needs at least one object processor".into());
     }
     let mut opp = OppModel::new(n_ops, fifo_depth)?;
-    let mut feeder = Feeder::new(screen, objects);
-    let mut sink = Sink::new(screen);
+    let batches = passes(screen, objects, n_ops);
     let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
-    let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, ..Default::default() };
+    let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, passes: batches.len(), ..Default::default() };
     let mut idle = 0u64;
     let mut cycle = 0u64;
     let mut free: Vec<bool> = Vec::with_capacity(n_ops);
-    while sink.lists.len() < screen.pixels() {
-        if cycle % 4096 == 0 {
-            progress(sink.lists.len() as u64, screen.pixels() as u64);
-        }
-        let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
-        let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
-        free.clear();
-        free.extend(opp.ops.iter().map(|o| o.free()));
-        let f = feeder.offer(&free, go);
-        let inp = OppIn { up_valid: f.valid, up_data: f.data, down_ready, load: f.load.map(|(k, id)| (k, objects[id as usize])) };
-        let out = opp.step(&inp)?;
-        if !feeder.finished() && !f.valid && (go || feeder.holding) {
-            run.waits_for_load += 1;
-        }
-        if f.valid && !out.up_ready {
-            run.input_stalls += 1;
-        }
-        for op in &opp.ops {
-            match op.last_action {
-                Action::EmitOwnBefore | Action::EmitOwnEnd => run.insertions += 1,
-                Action::Drop => run.drops += 1,
-                _ => {}
+    let mut input: Option<Vec<Slot>> = None;
+    for (pass, ids) in batches.iter().enumerate() {
+        let more = pass + 1 < batches.len();
+        let mut feeder = Feeder::pass(screen, objects, ids, input.take());
+        let mut sink = if more { Sink::keeping_slots(screen) } else { Sink::new(screen) };
+        while sink.lists.len() < screen.pixels() {
+            if cycle % 4096 == 0 {
+                let done = (pass * screen.pixels() + sink.lists.len()) as u64;
+                progress(done, (batches.len() * screen.pixels()) as u64);
+            }
+            let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
+            let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
+            free.clear();
+            free.extend(opp.ops.iter().map(|o| o.free()));
+            let f = feeder.offer(&free, go);
+            let inp = OppIn { up_valid: f.valid, up_data: f.data, down_ready, load: f.load.map(|(k, id)| (k, objects[id as usize])) };
+            let out = opp.step(&inp)?;
+            if !feeder.finished() && !f.valid && (go || feeder.holding) {
+                run.waits_for_load += 1;
+            }
+            if f.valid && !out.up_ready {
+                run.input_stalls += 1;
+            }
+            for op in &opp.ops {
+                match op.last_action {
+                    Action::EmitOwnBefore | Action::EmitOwnEnd => run.insertions += 1,
+                    Action::Drop => run.drops += 1,
+                    _ => {}
+                }
+            }
+            feeder.commit(&f, out.up_ready);
+            let progress = f.load.is_some() || (f.valid && out.up_ready) || (out.down_valid && down_ready);
+            if out.down_valid && down_ready {
+                sink.take(&out.down_data)?;
+            }
+            cycle += 1;
+            idle = if progress { 0 } else { idle + 1 };
+            if idle > 10_000 {
+                return Err(format!(
+                    "the OPP made no progress for 10000 cycles at cycle {cycle} (pass {} of {}, pixel {} of {})",
+                    pass + 1,
+                    batches.len(),
+                    sink.lists.len(),
+                    screen.pixels()
+                ));
             }
         }
-        feeder.commit(&f, out.up_ready);
-        let progress = f.load.is_some() || (f.valid && out.up_ready) || (out.down_valid && down_ready);
-        if out.down_valid && down_ready {
-            sink.take(&out.down_data)?;
-        }
-        cycle += 1;
-        idle = if progress { 0 } else { idle + 1 };
-        if idle > 10_000 {
-            return Err(format!("the OPP made no progress for 10000 cycles at cycle {cycle} (pixel {} of {})", sink.lists.len(), screen.pixels()));
+        run.slots_out = sink.slots;
+        if more {
+            let stream = sink.stream.take().unwrap_or_default();
+            run.feedback_slots = run.feedback_slots.max(stream.len() as u64);
+            input = Some(stream);
+        } else {
+            run.lists = sink.lists;
         }
     }
     run.cycles = cycle;
-    run.slots_out = sink.slots;
-    run.lists = sink.lists;
     Ok(run)
 }
 
@@ -356,10 +457,45 @@ mod tests {
     }
 
     #[test]
-    fn too_few_object_processors_is_an_error_naming_the_need() {
+    fn fewer_object_processors_than_needed_take_more_passes_and_build_the_same_lists_with_gaps() {
         let s = Screen::new(40, 24).unwrap();
         let objs = scene(s);
-        let e = run_opp(s, &objs, 1, 1, None).unwrap_err();
-        assert!(e.contains("needs"), "{e}");
+        let want = object_lists(s, &objs);
+        let needed = ops_needed(s, &objs) as usize;
+        assert!(needed >= 3, "the scene should need several OPs, needs {needed}");
+        let one = run_opp(s, &objs, needed, 1, None).unwrap();
+        assert_eq!((one.passes, one.feedback_slots), (1, 0));
+        for n in 1..needed {
+            for depth in [1, 3] {
+                for (seed, gi, go) in [(1, 0, 0), (7, 30, 30), (5, 10, 70)] {
+                    let run = run_opp(s, &objs, n, depth, Some(Gaps { seed, source_gap_percent: gi, sink_gap_percent: go })).unwrap();
+                    assert_eq!(run.lists, want, "{n} OPs, depth {depth} seed {seed}");
+                    assert!(run.passes >= needed.div_ceil(n) && run.passes > 1, "{n} OPs: {} passes", run.passes);
+                    assert!(run.feedback_slots >= s.pixels() as u64, "{n} OPs: {} slots stored", run.feedback_slots);
+                    if gi == 0 && go == 0 {
+                        assert!(run.cycles > one.cycles, "{n} OPs: {} cycles, one pass {}", run.cycles, one.cycles);
+                    }
+                }
+            }
+        }
+        assert!(run_opp(s, &objs, 0, 1, None).unwrap_err().contains("at least one"));
+    }
+
+    #[test]
+    fn each_pass_needs_at_most_the_opps_object_processors_and_every_object_is_in_exactly_one_pass() {
+        let s = Screen::new(40, 24).unwrap();
+        let objs = scene(s);
+        let needed = ops_needed(s, &objs) as usize;
+        for n in 1..=needed + 1 {
+            let p = passes(s, &objs, n);
+            let mut all: Vec<u16> = p.iter().flatten().copied().collect();
+            all.sort();
+            assert_eq!(all, (0..objs.len() as u16).collect::<Vec<_>>(), "{n} OPs");
+            for batch in &p {
+                let sub: Vec<ObjectParams> = batch.iter().map(|&i| objs[i as usize]).collect();
+                assert!(ops_needed(s, &sub) as usize <= n, "{n} OPs: a pass needs {}", ops_needed(s, &sub));
+            }
+            assert_eq!(p.len() == 1, n >= needed, "{n} OPs: {} passes", p.len());
+        }
     }
 }

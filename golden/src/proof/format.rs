@@ -140,6 +140,10 @@ impl Entry {
     }
 }
 
+/// Bits of one time slot in the RTL (`hdl::proof::ProofSlot::BITS`, checked by a tb test): the width
+/// of the feedback memory that stores a pass's output stream.
+pub const SLOT_BITS: u64 = 159;
+
 /// One time slot of the pixel stream through the OPP: one list entry of one pixel, or the single
 /// empty slot of a pixel whose list is empty. `last` marks a pixel's final slot.
 #[derive(Copy, Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]

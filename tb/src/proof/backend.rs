@@ -99,7 +99,6 @@ fn image_of(scene: &ProofScene, run: &FilterRun) -> Result<(Vec<u8>, Vec<u8>, u6
 /// The object lists of a frame built by the generated Verilog of an OPP of `n_ops` OPs under
 /// Verilator, compared with the cycle model in every cycle.
 pub fn opp_lists_verilator(scene: &ProofScene, n_ops: usize, fifo_depth: usize, vcd: Option<&Path>) -> Result<(Vec<Vec<Entry>>, OppRun), String> {
-    super::bench::check_ops(scene.screen, &scene.objects, n_ops)?;
     let mut top = super::verilated::VlOpp::new(n_ops, fifo_depth, vcd, None)?;
     let (run, _) = super::bench::run_frame_top(&mut top, scene.screen, &scene.objects, fifo_depth, None)?;
     Ok((run.lists.clone(), run))

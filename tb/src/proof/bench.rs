@@ -6,7 +6,8 @@
 use crate::common::{Trace, Watchdog};
 use super::convert::{hex_of, params_to_rtl, slot_from_rtl, slot_to_rtl};
 use super::replay::{inp, out, Port, Recorder};
-use golden::proof::cycle_opp::{Feeder, GapRng, Gaps, OppIn, OppModel, OppOut, OppRun, Sink};
+use golden::proof::cycle_opp::{passes, Feeder, GapRng, Gaps, OppIn, OppModel, OppOut, OppRun, Sink};
+use golden::proof::format::Slot;
 use golden::proof::cycle_op::Action;
 use golden::proof::format::ObjectParams;
 use golden::format::Screen;
@@ -187,6 +188,7 @@ impl OppTop for OppBench {
 
 /// A frame through the RTL OPP beside its cycle model, driven by the golden feeder and sink; with
 /// optional random gaps. Returns the lists and counts (equal to `golden::proof::cycle_opp::run_opp`'s).
+/// With fewer OPs than the frame needs, the frame takes several passes (see [`run_frame_top`]).
 pub fn run_frame(
     screen: Screen,
     objects: &[ObjectParams],
@@ -196,22 +198,15 @@ pub fn run_frame(
     vcd: Option<&Path>,
     vectors: Option<PathBuf>,
 ) -> Result<(OppRun, Option<(PathBuf, u64)>), String> {
-    check_ops(screen, objects, n_ops)?;
     let mut bench = OppBench::new(n_ops, fifo_depth, vcd, vectors)?;
     run_frame_top(&mut bench, screen, objects, fifo_depth, gaps)
 }
 
-/// An error unless an OPP of `n_ops` OPs can take the frame.
-pub fn check_ops(screen: Screen, objects: &[ObjectParams], n_ops: usize) -> Result<(), String> {
-    let needed = golden::proof::render::ops_needed(screen, objects) as usize;
-    if n_ops < needed {
-        return Err(format!("the frame needs {needed} object processors (with reuse), but the OPP has {n_ops}"));
-    }
-    Ok(())
-}
-
 /// A frame through an OPP top (FIFO depth `fifo_depth`) driven by the golden feeder and sink, with
-/// optional random gaps: the lists and counts, and the recorded vectors if the top records.
+/// optional random gaps: the lists and counts, and the recorded vectors if the top records. With fewer
+/// OPs than the frame needs, the objects are split into passes (`golden::proof::cycle_opp::passes`)
+/// and each pass's output stream is fed back as the next pass's input, through the same top without a
+/// reset, exactly as `run_opp` does with the cycle model.
 pub fn run_frame_top<B: OppTop>(
     bench: &mut B,
     screen: Screen,
@@ -220,45 +215,55 @@ pub fn run_frame_top<B: OppTop>(
     gaps: Option<Gaps>,
 ) -> Result<(OppRun, Option<(PathBuf, u64)>), String> {
     let n_ops = bench.model().ops.len();
-    check_ops(screen, objects, n_ops)?;
-    let mut feeder = Feeder::new(screen, objects);
-    let mut sink = Sink::new(screen);
+    let batches = passes(screen, objects, n_ops);
     let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
-    let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, ..Default::default() };
+    let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, passes: batches.len(), ..Default::default() };
     let mut watchdog = Watchdog::new(PROGRESS_LIMIT);
     let mut free: Vec<bool> = Vec::with_capacity(n_ops);
-    while sink.lists.len() < screen.pixels() {
-        let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
-        let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
-        free.clear();
-        free.extend(bench.model().ops.iter().map(|o| o.free()));
-        let f = feeder.offer(&free, go);
-        let inp = OppIn { up_valid: f.valid, up_data: f.data, down_ready, load: f.load.map(|(k, id)| (k, objects[id as usize])) };
-        let out = bench.cycle(&inp)?;
-        if !feeder.finished() && !f.valid && (go || feeder.holding) {
-            run.waits_for_load += 1;
-        }
-        if f.valid && !out.up_ready {
-            run.input_stalls += 1;
-        }
-        for op in &bench.model().ops {
-            match op.last_action {
-                Action::EmitOwnBefore | Action::EmitOwnEnd => run.insertions += 1,
-                Action::Drop => run.drops += 1,
-                _ => {}
+    let mut input: Option<Vec<Slot>> = None;
+    for (pass, ids) in batches.iter().enumerate() {
+        let more = pass + 1 < batches.len();
+        let mut feeder = Feeder::pass(screen, objects, ids, input.take());
+        let mut sink = if more { Sink::keeping_slots(screen) } else { Sink::new(screen) };
+        while sink.lists.len() < screen.pixels() {
+            let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
+            let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
+            free.clear();
+            free.extend(bench.model().ops.iter().map(|o| o.free()));
+            let f = feeder.offer(&free, go);
+            let inp = OppIn { up_valid: f.valid, up_data: f.data, down_ready, load: f.load.map(|(k, id)| (k, objects[id as usize])) };
+            let out = bench.cycle(&inp)?;
+            if !feeder.finished() && !f.valid && (go || feeder.holding) {
+                run.waits_for_load += 1;
             }
+            if f.valid && !out.up_ready {
+                run.input_stalls += 1;
+            }
+            for op in &bench.model().ops {
+                match op.last_action {
+                    Action::EmitOwnBefore | Action::EmitOwnEnd => run.insertions += 1,
+                    Action::Drop => run.drops += 1,
+                    _ => {}
+                }
+            }
+            feeder.commit(&f, out.up_ready);
+            let progress = f.load.is_some() || (f.valid && out.up_ready) || (out.down_valid && down_ready);
+            if out.down_valid && down_ready {
+                sink.take(&out.down_data)?;
+            }
+            let phase = || format!("the OPP frame, pass {} of {} ({} of {} pixels' lists out)", pass + 1, batches.len(), sink.lists.len(), screen.pixels());
+            watchdog.check(bench.cycles(), progress, phase, bench.trace())?;
         }
-        feeder.commit(&f, out.up_ready);
-        let progress = f.load.is_some() || (f.valid && out.up_ready) || (out.down_valid && down_ready);
-        if out.down_valid && down_ready {
-            sink.take(&out.down_data)?;
+        run.slots_out = sink.slots;
+        if more {
+            let stream = sink.stream.take().unwrap_or_default();
+            run.feedback_slots = run.feedback_slots.max(stream.len() as u64);
+            input = Some(stream);
+        } else {
+            run.lists = sink.lists;
         }
-        let phase = || format!("the OPP frame ({} of {} pixels' lists out)", sink.lists.len(), screen.pixels());
-        watchdog.check(bench.cycles(), progress, phase, bench.trace())?;
     }
     run.cycles = bench.cycles();
-    run.slots_out = sink.slots;
-    run.lists = sink.lists;
     let vec = match bench.take_vectors() {
         Some(w) => Some(w.finish()?),
         None => None,

@@ -86,6 +86,33 @@ fn reused_object_processors_match_their_cycle_model_every_cycle_with_random_gaps
     }
 }
 
+/// Issue 19 item 2: an OPP with fewer OPs than the frame needs renders it in passes, its output
+/// stream fed back as the next pass's input through the same RTL without a reset; every port and OP
+/// register equals the cycle model in every cycle, with gaps, and the lists equal the one-pass lists.
+#[test]
+fn an_opp_with_fewer_ops_than_needed_feeds_its_lists_back_in_passes_and_matches_its_model_every_cycle() {
+    let mut rng = Rng::new(0xfeed_bac);
+    let seed = rng.seed();
+    println!("seed {seed} (SEED=n replays)");
+    let s = Screen::new(32, 20).unwrap();
+    let objs = random_objects(&mut rng, s, 24, 9);
+    let need = ops_needed(s, &objs) as usize;
+    assert!(need >= 6, "the stimulus should need several OPs, needs {need}");
+    for (n, depth, gi, go) in [(2, 1, 0, 0), (3, 1, 30, 40), (need - 1, 2, 50, 20), (1, 3, 20, 20)] {
+        let gaps = Gaps { seed: rng.next_u64(), source_gap_percent: gi, sink_gap_percent: go };
+        let model = run_opp(s, &objs, n, depth, Some(gaps)).unwrap();
+        assert!(model.passes > 1, "{n} OPs of {need}: one pass");
+        frame_matches("opp_passes_every_cycle", seed, s, &objs, n, depth, Some(gaps));
+        let (rtl, _) = run_frame(s, &objs, n, depth, Some(gaps), None, None).unwrap();
+        assert_eq!((rtl.passes, rtl.feedback_slots), (model.passes, model.feedback_slots), "{n} OPs");
+    }
+}
+
+#[test]
+fn the_golden_slot_width_is_the_rtl_slots() {
+    assert_eq!(golden::proof::format::SLOT_BITS as usize, <hdl::proof::ProofSlot as rust_hdl::prelude::Synth>::BITS);
+}
+
 #[test]
 fn eight_object_processors_match_the_cycle_model_every_cycle_with_random_gaps() {
     let mut rng = Rng::new(0x8_0b5);
@@ -240,6 +267,6 @@ fn an_opp_frame_that_stops_making_progress_ends_at_once_naming_the_phase() {
     let objs = random_objects(&mut rng, s, 6, 8);
     let gaps = Gaps { seed: 3, source_gap_percent: 0, sink_gap_percent: 100 };
     let e = run_frame(s, &objs, 8, 1, Some(gaps), None, None).err().expect("a frame with no consumer cannot finish");
-    assert!(e.contains("no progress for 10000 cycles in the OPP frame (0 of 96 pixels' lists out)"), "{e}");
+    assert!(e.contains("no progress for 10000 cycles in the OPP frame, pass 1 of 1 (0 of 96 pixels' lists out)"), "{e}");
     assert!(e.contains("VCD=1"), "{e}");
 }
