@@ -548,24 +548,24 @@ fn bandwidth_table(s: &mut String, rows: &[BandwidthRow], per_buffer: bool) {
 // Charts
 
 /// One bar set: a label under it and one value per series (side by side, or stacked).
-struct Bars {
-    label: String,
-    values: Vec<f64>,
+pub(crate) struct Bars {
+    pub label: String,
+    pub values: Vec<f64>,
 }
 
-struct Group {
-    name: String,
-    bars: Vec<Bars>,
+pub(crate) struct Group {
+    pub name: String,
+    pub bars: Vec<Bars>,
 }
 
-struct Chart {
-    title: String,
-    y_label: String,
-    series: Vec<String>,
-    groups: Vec<Group>,
-    stacked: bool,
+pub(crate) struct Chart {
+    pub title: String,
+    pub y_label: String,
+    pub series: Vec<String>,
+    pub groups: Vec<Group>,
+    pub stacked: bool,
     /// A dashed reference line (e.g. Type I = 100%).
-    reference: Option<f64>,
+    pub reference: Option<f64>,
 }
 
 const PALETTE: [(u8, u8, u8); 6] = [(68, 114, 196), (237, 125, 49), (112, 173, 71), (192, 80, 77), (128, 100, 162), (150, 150, 150)];
@@ -578,7 +578,7 @@ fn register_font() {
     });
 }
 
-fn draw(c: &Chart) -> Result<Vec<u8>, String> {
+pub(crate) fn draw(c: &Chart) -> Result<Vec<u8>, String> {
     use plotters::prelude::*;
     use plotters::style::text_anchor::{HPos, Pos, VPos};
     register_font();

@@ -51,6 +51,15 @@ pub struct BenchArgs {
     /// Built-in scenes to measure, comma-separated (default: polyhedron, teapot, castle, dolphins).
     #[arg(long, value_delimiter = ',')]
     pub scenes: Vec<String>,
+    /// Instead of the chipset figures: seed 002's real-time claim, PROOF's frames per second at
+    /// 512x512 against the number of object processors (writes out/proof-realtime.md, .json, .png
+    /// unless --out names another file).
+    #[arg(long)]
+    pub proof_realtime: bool,
+    /// fpga-report JSON files holding the `opp`, `proof_shade` and `proof_filter` rows on ecp5-45k
+    /// (comma-separated or repeated), for --proof-realtime's clock.
+    #[arg(long, value_delimiter = ',')]
+    pub proof_fpga: Vec<PathBuf>,
 }
 
 /// The two screen sizes of the issue: seed 001's size (Table IV's low end) and the models' native size.
@@ -61,6 +70,13 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
     let t_start = Instant::now();
     // Everything that can be wrong with the arguments is found before the first measurement.
     let scenes = scene_names(&args.scenes)?;
+    if args.proof_realtime {
+        let out = if args.out == Path::new("out/bench.md") { PathBuf::from("out/proof-realtime.md") } else { args.out.clone() };
+        return crate::proof_realtime::run(&out, &args.proof_fpga, &scenes);
+    }
+    if !args.proof_fpga.is_empty() {
+        return Err("--proof-fpga applies to --proof-realtime".into());
+    }
     let fpga = read_fpga_report(args.fpga_report.as_deref())?;
     let (out_dir, md_name, json_name) = output_paths(&args.out)?;
     let load_start = load_average();

@@ -11,6 +11,7 @@ mod cli;
 mod fpga;
 mod output;
 mod proof;
+mod proof_realtime;
 mod render;
 mod vcd_diff;
 mod verilog;

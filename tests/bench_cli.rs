@@ -257,3 +257,44 @@ fn bad_arguments_are_one_line_errors_that_keep_the_earlier_table() {
         assert!(!d.join("bench.json").exists(), "{all:?} wrote bench.json");
     }
 }
+
+/// `bench --proof-realtime`: the PROOF real-time study writes its table, JSON and chart; the frame
+/// rates are the clock over the cycles of the cycle model, fewer OPs take more passes, and the clock is
+/// the slowest of the stage tops in the given fpga-report JSON.
+#[test]
+fn bench_proof_realtime_gives_frames_per_second_against_ops_from_the_cycle_model_and_the_slowest_stage() {
+    let dir = temp_dir("proof-realtime");
+    let fpga = dir.join("fpga.json");
+    let rows = r#"{"rows": [
+        {"top": "opp", "device": "ecp5-45k", "fmax_mhz": 40.0, "lut4": 12000},
+        {"top": "proof_shade", "device": "ecp5-45k", "fmax_mhz": 50.0, "lut4": 600},
+        {"top": "proof_filter", "device": "ecp5-45k", "fmax_mhz": 35.0, "lut4": 1500},
+        {"top": "opp", "device": "up5k", "fmax_mhz": 10.0, "lut4": 15000}]}"#;
+    write(&fpga, rows);
+    let out = dir.join("rt.md");
+    let (ok, _, err) = run(&["bench", "--proof-realtime", "--scenes", "dolphins", "--proof-fpga", fpga.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    let md = std::fs::read_to_string(&out).unwrap();
+    assert!(md.contains("Clock: 35.00 MHz"), "{md}");
+    assert!(image::open(dir.join("rt.png")).is_ok(), "no chart");
+    let j: Value = serde_json::from_slice(&std::fs::read(dir.join("rt.json")).unwrap()).unwrap();
+    let runs = j["rows"][0]["runs"].as_array().unwrap();
+    let needed = j["rows"][0]["ops_needed"].as_u64().unwrap();
+    let mut last_passes = u64::MAX;
+    for r in runs {
+        let (n, passes, cycles) = (r["ops"].as_u64().unwrap(), r["passes"].as_u64().unwrap(), r["cycles"].as_u64().unwrap());
+        assert!(passes <= last_passes, "more OPs, more passes: {r}");
+        last_passes = passes;
+        assert_eq!(passes == 1, n >= needed, "{r}");
+        assert!(cycles >= passes * 512 * 512, "{r}");
+        let fps = format!("{:.1}", 35.0e6 / cycles as f64);
+        assert!(md.contains(&format!("| {cycles} |")) && md.contains(&fps), "{fps} for {cycles} cycles not in the table:\n{md}");
+    }
+    // A report without the stage tops gives no clock, and the table says so.
+    write(&fpga, r#"{"rows": [{"top": "rc", "device": "ecp5-45k", "fmax_mhz": 40.0, "lut4": 1}]}"#);
+    let (ok, _, err) = run(&["bench", "--proof-realtime", "--scenes", "polyhedron", "--proof-fpga", fpga.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    assert!(std::fs::read_to_string(&out).unwrap().contains("No Fmax"));
+    let (ok, _, err) = run(&["bench", "--proof-fpga", fpga.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert!(!ok && err.contains("--proof-fpga applies to --proof-realtime"), "{err}");
+}

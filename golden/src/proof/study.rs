@@ -76,6 +76,38 @@ pub fn fifo_row_with(name: &str, mesh: &Mesh, opts: &RenderOptions, depths: &[us
     Ok(FifoRow { scene: name.to_string(), objects: sc.objects.len(), ops_needed: need, runs })
 }
 
+/// One scene's row of the real-time study (seed 002's claim of 30 frames per second at 512x512):
+/// the OPP cycle model with each number of physical OPs, fewer than needed taking passes.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct RealtimeRow {
+    pub scene: String,
+    pub objects: usize,
+    pub ops_needed: usize,
+    /// One run per OP count (FIFO depth 1, no gaps), the lists checked against the algorithmic model.
+    pub runs: Vec<OppRun>,
+}
+
+/// Run `mesh` at `w`x`h` through the OPP cycle model with each of `ops` physical OPs (counts above
+/// the scene's need are clamped to it: more OPs than objects alive on a line are never used).
+pub fn realtime_row(name: &str, mesh: &Mesh, w: u32, h: u32, ops: &[usize]) -> Result<RealtimeRow, String> {
+    let sc = scene_setup(mesh, &cli_options(mesh, w, h))?;
+    let need = (ops_needed(sc.screen, &sc.objects) as usize).max(1);
+    let lists = object_lists(sc.screen, &sc.objects);
+    let mut counts: Vec<usize> = ops.iter().map(|&n| n.clamp(1, need)).collect();
+    counts.push(need);
+    counts.sort();
+    counts.dedup();
+    let mut runs = Vec::new();
+    for n in counts {
+        let r = run_opp(sc.screen, &sc.objects, n, 1, None)?;
+        if r.lists != lists {
+            return Err(format!("{name} with {n} OPs: the OPP cycle model's lists differ from the algorithmic lists"));
+        }
+        runs.push(r);
+    }
+    Ok(RealtimeRow { scene: name.to_string(), objects: sc.objects.len(), ops_needed: need, runs })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
