@@ -180,6 +180,10 @@ pub struct FpgaArgs {
     /// Scratch directory for the Verilog, netlists and logs.
     #[arg(long, default_value = "target/fpga")]
     pub work: PathBuf,
+    /// Object processors of the `opp` top (default 8, as `idxrender verilog` writes it): how LUT4
+    /// and Fmax grow with the chain. Only with `--block opp`.
+    #[arg(long)]
+    pub opp_ops: Option<usize>,
 }
 
 /// Cell counts of one module in yosys's `stat`.
@@ -435,7 +439,10 @@ fn tool_version(tool: &str, arg: &str) -> String {
 const SCREEN_WORDS: u64 = 16384;
 
 fn report_top(top: &str, devices: &[Device], tools: &PnrTools, args: &FpgaArgs, dir: &Path) -> Result<Vec<Row>, String> {
-    let v = hdl::verilog_top(top)?;
+    let v = match (top, args.opp_ops) {
+        ("opp", Some(n)) => hdl::proof::verilog_opp("opp", n, 1)?,
+        _ => hdl::verilog_top(top)?,
+    };
     let ports = parse_ports(&v, top)?;
     if let Some((n, w)) = verilog_facts(&v).memories.into_iter().find(|(n, _)| *n >= SCREEN_WORDS) {
         return Err(format!("{top} holds an internal memory of {n} x {w} bits: a screen-size buffer must be outside the core (memory ports at the top)"));
@@ -578,6 +585,12 @@ pub fn json(rows: &[Row]) -> String {
 
 pub fn run(args: &FpgaArgs) -> Result<(), String> {
     let tops = selected_tops(args.block.as_deref())?;
+    if args.opp_ops.is_some() && args.block.as_deref() != Some("opp") {
+        return Err("--opp-ops applies to --block opp".into());
+    }
+    if args.opp_ops == Some(0) {
+        return Err("--opp-ops 0: the OPP needs at least one object processor".into());
+    }
     for tool in ["yosys", "nextpnr-ice40"] {
         if Command::new(tool).arg("--version").stdout(Stdio::null()).stderr(Stdio::null()).status().is_err() {
             return Err(format!("`{tool}` is not installed or not on PATH (fpga-report needs yosys and nextpnr-ice40)"));

@@ -66,6 +66,16 @@ fn fpga_report_rejects_an_unknown_block() {
     assert!(err.contains("unknown block 'nosuch'"), "{err}");
 }
 
+#[test]
+fn fpga_report_takes_an_opp_size_only_for_the_opp_and_never_zero() {
+    let dir = scratch("fpga_report_opp_ops");
+    for (args, needle) in [(vec!["--block", "rc", "--opp-ops", "16"], "--opp-ops applies to --block opp"), (vec!["--block", "opp", "--opp-ops", "0"], "at least one object processor")] {
+        let o = Command::new(env!("CARGO_BIN_EXE_idxrender")).arg("fpga-report").args(&args).arg("--out").arg(dir.join("r.md")).output().unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success() && err.contains(needle), "{args:?}: {err}");
+    }
+}
+
 /// `--out` is checked before any synthesis (issue 18: `--out report.json` used to write the JSON over the
 /// Markdown name, and a bad folder was found only after the tools had run).
 #[test]
