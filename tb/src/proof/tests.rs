@@ -108,6 +108,30 @@ fn an_opp_with_fewer_ops_than_needed_feeds_its_lists_back_in_passes_and_matches_
     }
 }
 
+/// The feedback path in the Verilog: a frame in passes through three OPs, recorded from the RustHDL
+/// bench, replays on the generated Verilog under Icarus.
+#[test]
+fn generated_verilog_of_a_three_op_pipeline_replays_a_frame_in_passes() {
+    if !require_tools("generated_verilog_of_a_three_op_pipeline_replays_a_frame_in_passes", &["iverilog"]) {
+        return;
+    }
+    let mut rng = Rng::new(0x3_0b5);
+    println!("seed {}", rng.seed());
+    let s = Screen::new(20, 12).unwrap();
+    let objs = random_objects(&mut rng, s, 14, 8);
+    let dir = scratch_dir("proof_replay_passes");
+    let vec_path = dir.join("opp3_vectors.txt");
+    let gaps = Gaps { seed: rng.next_u64(), source_gap_percent: 25, sink_gap_percent: 25 };
+    let (run, rec) = run_frame(s, &objs, 3, 1, Some(gaps), None, Some(vec_path)).unwrap();
+    assert!(run.passes > 1, "{} passes", run.passes);
+    assert_eq!(run.lists, object_lists(s, &objs));
+    let (vp, cycles) = rec.unwrap();
+    let v = hdl::proof::verilog_opp("opp", 3, 1).unwrap();
+    let verdict = replay("iverilog", &dir, "opp", &super::bench::opp_ports(), &v, &vp, cycles).unwrap_or_else(|e| panic!("{e}"));
+    println!("{} passes: {verdict}", run.passes);
+    assert!(verdict.contains(&cycles.to_string()));
+}
+
 #[test]
 fn the_golden_slot_width_is_the_rtl_slots() {
     assert_eq!(golden::proof::format::SLOT_BITS as usize, <hdl::proof::ProofSlot as rust_hdl::prelude::Synth>::BITS);
