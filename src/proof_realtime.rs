@@ -127,7 +127,7 @@ pub fn run(out: &Path, fpga: &[PathBuf], scenes: &[String]) -> Result<(), String
                 "* {}: {}",
                 r.scene,
                 match best {
-                    Some(run) => format!("N = {} of the counts tried ({} passes, {:.1} frames/s)", run.ops, run.passes, fps(run.cycles)),
+                    Some(run) => format!("N = {} of the counts tried ({} pass{}, {:.1} frames/s)", run.ops, run.passes, if run.passes == 1 { "" } else { "es" }, fps(run.cycles)),
                     None => "not reached with any N tried".into(),
                 }
             );

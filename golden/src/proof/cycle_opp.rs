@@ -337,9 +337,9 @@ pub fn run_opp(screen: Screen, objects: &[ObjectParams], n_ops: usize, fifo_dept
     run_opp_with_progress(screen, objects, n_ops, fifo_depth, gaps, &mut |_, _| {})
 }
 
-/// [`run_opp`], reporting `progress(pixels done, pixels)` every 4096 cycles: the model steps every
-/// object processor in every cycle, so a frame costs about cycles x processors (a fan of 3000
-/// triangles around one pixel needs some 3000 processors: tens of seconds at 320x200).
+/// [`run_opp`], reporting `progress(pixels done, pixels)` every 4096 cycles (pixels of all passes):
+/// the model steps every object processor in every cycle, so a frame costs about cycles x processors
+/// (a fan of 3000 triangles around one pixel needs some 3000 processors: tens of seconds at 320x200).
 pub fn run_opp_with_progress(
     screen: Screen,
     objects: &[ObjectParams],
@@ -351,11 +351,60 @@ pub fn run_opp_with_progress(
     if n_ops == 0 {
         return Err("an OPP needs at least one object processor".into());
     }
-    let mut opp = OppModel::new(n_ops, fifo_depth)?;
+    let mut top = ModelOnly { opp: OppModel::new(n_ops, fifo_depth)?, idle: 0, cycle: 0 };
+    drive_frame(&mut top, screen, objects, fifo_depth, gaps, progress)
+}
+
+/// What [`drive_frame`] drives: the cycle model alone ([`run_opp`]), or an RTL top beside it (the
+/// testbenches), so that both see the same feeder, sink, gaps and passes.
+pub trait OppDrive {
+    /// The cycle model (its OPs' `free` drive the object loader; their last actions are counted).
+    fn model(&self) -> &OppModel;
+    /// One clock: the outputs before the edge.
+    fn cycle(&mut self, inp: &OppIn) -> Result<OppOut, String>;
+    /// After each clock: `progress` says whether anything moved; an error (a stalled frame) ends it.
+    fn watch(&mut self, progress: bool, phase: &dyn Fn() -> String) -> Result<(), String>;
+}
+
+/// The cycle model alone, with its own no-progress limit.
+struct ModelOnly {
+    opp: OppModel,
+    idle: u64,
+    cycle: u64,
+}
+
+impl OppDrive for ModelOnly {
+    fn model(&self) -> &OppModel {
+        &self.opp
+    }
+    fn cycle(&mut self, inp: &OppIn) -> Result<OppOut, String> {
+        self.cycle += 1;
+        self.opp.step(inp)
+    }
+    fn watch(&mut self, progress: bool, phase: &dyn Fn() -> String) -> Result<(), String> {
+        self.idle = if progress { 0 } else { self.idle + 1 };
+        if self.idle > 10_000 {
+            return Err(format!("the OPP made no progress for 10000 cycles at cycle {} ({})", self.cycle, phase()));
+        }
+        Ok(())
+    }
+}
+
+/// A frame through `top`, driven by the object loader and pixel source ([`Feeder`]) and collected by
+/// the [`Sink`], with optional random gaps; with fewer OPs than the frame needs, in [`passes`], each
+/// pass's output stream fed back as the next pass's input through the same top.
+pub fn drive_frame(
+    top: &mut dyn OppDrive,
+    screen: Screen,
+    objects: &[ObjectParams],
+    fifo_depth: usize,
+    gaps: Option<Gaps>,
+    progress: &mut dyn FnMut(u64, u64),
+) -> Result<OppRun, String> {
+    let n_ops = top.model().ops.len();
     let batches = passes(screen, objects, n_ops);
     let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
     let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, passes: batches.len(), ..Default::default() };
-    let mut idle = 0u64;
     let mut cycle = 0u64;
     let mut free: Vec<bool> = Vec::with_capacity(n_ops);
     let mut input: Option<Vec<Slot>> = None;
@@ -365,23 +414,22 @@ pub fn run_opp_with_progress(
         let mut sink = if more { Sink::keeping_slots(screen) } else { Sink::new(screen) };
         while sink.lists.len() < screen.pixels() {
             if cycle % 4096 == 0 {
-                let done = (pass * screen.pixels() + sink.lists.len()) as u64;
-                progress(done, (batches.len() * screen.pixels()) as u64);
+                progress((pass * screen.pixels() + sink.lists.len()) as u64, (batches.len() * screen.pixels()) as u64);
             }
             let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
             let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
             free.clear();
-            free.extend(opp.ops.iter().map(|o| o.free()));
+            free.extend(top.model().ops.iter().map(|o| o.free()));
             let f = feeder.offer(&free, go);
             let inp = OppIn { up_valid: f.valid, up_data: f.data, down_ready, load: f.load.map(|(k, id)| (k, objects[id as usize])) };
-            let out = opp.step(&inp)?;
+            let out = top.cycle(&inp)?;
             if !feeder.finished() && !f.valid && (go || feeder.holding) {
                 run.waits_for_load += 1;
             }
             if f.valid && !out.up_ready {
                 run.input_stalls += 1;
             }
-            for op in &opp.ops {
+            for op in &top.model().ops {
                 match op.last_action {
                     Action::EmitOwnBefore | Action::EmitOwnEnd => run.insertions += 1,
                     Action::Drop => run.drops += 1,
@@ -389,21 +437,13 @@ pub fn run_opp_with_progress(
                 }
             }
             feeder.commit(&f, out.up_ready);
-            let progress = f.load.is_some() || (f.valid && out.up_ready) || (out.down_valid && down_ready);
+            let moved = f.load.is_some() || (f.valid && out.up_ready) || (out.down_valid && down_ready);
             if out.down_valid && down_ready {
                 sink.take(&out.down_data)?;
             }
             cycle += 1;
-            idle = if progress { 0 } else { idle + 1 };
-            if idle > 10_000 {
-                return Err(format!(
-                    "the OPP made no progress for 10000 cycles at cycle {cycle} (pass {} of {}, pixel {} of {})",
-                    pass + 1,
-                    batches.len(),
-                    sink.lists.len(),
-                    screen.pixels()
-                ));
-            }
+            let phase = || format!("the OPP frame, pass {} of {} ({} of {} pixels' lists out)", pass + 1, batches.len(), sink.lists.len(), screen.pixels());
+            top.watch(moved, &phase)?;
         }
         run.slots_out = sink.slots;
         if more {

@@ -6,9 +6,7 @@
 use crate::common::{Trace, Watchdog};
 use super::convert::{hex_of, params_to_rtl, slot_from_rtl, slot_to_rtl};
 use super::replay::{inp, out, Port, Recorder};
-use golden::proof::cycle_opp::{passes, Feeder, GapRng, Gaps, OppIn, OppModel, OppOut, OppRun, Sink};
-use golden::proof::format::Slot;
-use golden::proof::cycle_op::Action;
+use golden::proof::cycle_opp::{drive_frame, Gaps, OppDrive, OppIn, OppModel, OppOut, OppRun};
 use golden::proof::format::ObjectParams;
 use golden::format::Screen;
 use hdl::proof::{ObjParams, Opp, ProofSlot};
@@ -202,11 +200,11 @@ pub fn run_frame(
     run_frame_top(&mut bench, screen, objects, fifo_depth, gaps)
 }
 
-/// A frame through an OPP top (FIFO depth `fifo_depth`) driven by the golden feeder and sink, with
-/// optional random gaps: the lists and counts, and the recorded vectors if the top records. With fewer
-/// OPs than the frame needs, the objects are split into passes (`golden::proof::cycle_opp::passes`)
-/// and each pass's output stream is fed back as the next pass's input, through the same top without a
-/// reset, exactly as `run_opp` does with the cycle model.
+/// A frame through an OPP top (FIFO depth `fifo_depth`) driven by the golden feeder and sink
+/// (`golden::proof::cycle_opp::drive_frame`, the cycle model's own loop), with optional random gaps:
+/// the lists and counts, and the recorded vectors if the top records. With fewer OPs than the frame
+/// needs, the objects are split into passes and each pass's output stream is fed back as the next
+/// pass's input, through the same top without a reset, exactly as `run_opp` does with the model.
 pub fn run_frame_top<B: OppTop>(
     bench: &mut B,
     screen: Screen,
@@ -214,59 +212,28 @@ pub fn run_frame_top<B: OppTop>(
     fifo_depth: usize,
     gaps: Option<Gaps>,
 ) -> Result<(OppRun, Option<(PathBuf, u64)>), String> {
-    let n_ops = bench.model().ops.len();
-    let batches = passes(screen, objects, n_ops);
-    let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
-    let mut run = OppRun { ops: n_ops, fifo_depth, pixels: screen.pixels() as u64, passes: batches.len(), ..Default::default() };
-    let mut watchdog = Watchdog::new(PROGRESS_LIMIT);
-    let mut free: Vec<bool> = Vec::with_capacity(n_ops);
-    let mut input: Option<Vec<Slot>> = None;
-    for (pass, ids) in batches.iter().enumerate() {
-        let more = pass + 1 < batches.len();
-        let mut feeder = Feeder::pass(screen, objects, ids, input.take());
-        let mut sink = if more { Sink::keeping_slots(screen) } else { Sink::new(screen) };
-        while sink.lists.len() < screen.pixels() {
-            let go = gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
-            let down_ready = gaps.map(|g| !rng.percent(g.sink_gap_percent)).unwrap_or(true);
-            free.clear();
-            free.extend(bench.model().ops.iter().map(|o| o.free()));
-            let f = feeder.offer(&free, go);
-            let inp = OppIn { up_valid: f.valid, up_data: f.data, down_ready, load: f.load.map(|(k, id)| (k, objects[id as usize])) };
-            let out = bench.cycle(&inp)?;
-            if !feeder.finished() && !f.valid && (go || feeder.holding) {
-                run.waits_for_load += 1;
-            }
-            if f.valid && !out.up_ready {
-                run.input_stalls += 1;
-            }
-            for op in &bench.model().ops {
-                match op.last_action {
-                    Action::EmitOwnBefore | Action::EmitOwnEnd => run.insertions += 1,
-                    Action::Drop => run.drops += 1,
-                    _ => {}
-                }
-            }
-            feeder.commit(&f, out.up_ready);
-            let progress = f.load.is_some() || (f.valid && out.up_ready) || (out.down_valid && down_ready);
-            if out.down_valid && down_ready {
-                sink.take(&out.down_data)?;
-            }
-            let phase = || format!("the OPP frame, pass {} of {} ({} of {} pixels' lists out)", pass + 1, batches.len(), sink.lists.len(), screen.pixels());
-            watchdog.check(bench.cycles(), progress, phase, bench.trace())?;
-        }
-        run.slots_out = sink.slots;
-        if more {
-            let stream = sink.stream.take().unwrap_or_default();
-            run.feedback_slots = run.feedback_slots.max(stream.len() as u64);
-            input = Some(stream);
-        } else {
-            run.lists = sink.lists;
-        }
-    }
-    run.cycles = bench.cycles();
+    let run = drive_frame(&mut Watched { top: bench, watchdog: Watchdog::new(PROGRESS_LIMIT) }, screen, objects, fifo_depth, gaps, &mut |_, _| {})?;
     let vec = match bench.take_vectors() {
         Some(w) => Some(w.finish()?),
         None => None,
     };
     Ok((run, vec))
+}
+
+/// An OPP top under the benches' watchdog (which names the waveform when it fires).
+struct Watched<'a, B: OppTop> {
+    top: &'a mut B,
+    watchdog: Watchdog,
+}
+
+impl<B: OppTop> OppDrive for Watched<'_, B> {
+    fn model(&self) -> &OppModel {
+        self.top.model()
+    }
+    fn cycle(&mut self, inp: &OppIn) -> Result<OppOut, String> {
+        self.top.cycle(inp)
+    }
+    fn watch(&mut self, progress: bool, phase: &dyn Fn() -> String) -> Result<(), String> {
+        self.watchdog.check(self.top.cycles(), progress, phase, self.top.trace())
+    }
 }
