@@ -20,6 +20,9 @@ use golden::proof::setup::scene_setup;
 use golden::render::RenderOptions;
 use golden::scene::Mesh;
 
+/// The most object processors an OPP of the RTL backends is built with.
+const RTL_MAX_OPS: usize = 1024;
+
 fn parse_filter(s: &str) -> Result<FilterArea, String> {
     match s {
         "1x1" => Ok(FilterArea::Box1),
@@ -54,6 +57,13 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     let most = scene.objects.len().max(1);
     if n_ops > most {
         return Err(format!("--ops {n_ops}: the frame has {} objects, so at most {most} object processors can be used", scene.objects.len()));
+    }
+    // The RTL backends build an OPP of exactly n_ops OPs: the Verilator build of 256 takes minutes
+    // and grows with N, a RustHDL OPP of thousands would not finish; refused before any work.
+    if args.backend != BackendArg::Golden && n_ops > RTL_MAX_OPS {
+        return Err(format!(
+            "--ops {n_ops}: the RTL backends build an OPP of that many object processors; at most {RTL_MAX_OPS} (the frame needs {needed}; fewer take passes)"
+        ));
     }
     // Fewer OPs than the frame needs: the frame takes several passes, each pass's output lists
     // going round again with the next batch of objects (seed 002 4.2; golden::proof::cycle_opp::passes).

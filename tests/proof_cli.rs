@@ -123,12 +123,18 @@ fn proof_bad_options_are_clear_errors() {
         (vec!["--filter", "3x3"], "filter"),
         (vec!["--fifo-depth", "0"], "fifo-depth"),
         (vec!["--ops", "0"], "at least one object processor"),
+        // The RTL backends build an OPP of N OPs: refused above 1024 before any work.
+        (vec!["--scene", "teapot", "--ops", "1025", "--backend", "verilator"], "at most 1024"),
+        (vec!["--scene", "teapot", "--ops", "2000", "--backend", "rtl"], "at most 1024"),
         // Issue 18: this count used to be allocated until the process was killed.
         (vec!["--ops", "100000000"], "at most 2 object processors"),
         (vec!["--vcd"], "--vcd needs --backend rtl or --backend verilator"),
     ] {
         let out = temp_dir("bad");
-        let mut a = vec!["render", "--arch", "proof", "--scene", "polyhedron", "--size", "32x20", "--out", out.to_str().unwrap()];
+        let mut a = vec!["render", "--arch", "proof", "--size", "32x20", "--out", out.to_str().unwrap()];
+        if !args.contains(&"--scene") {
+            a.extend(["--scene", "polyhedron"]);
+        }
         a.extend(args.iter());
         let (ok, _, err) = run(&a);
         assert!(!ok && !err.contains("panicked") && err.contains(needle), "{a:?}: {err}");
