@@ -6,6 +6,7 @@
 use crate::common::{Trace, Watchdog};
 use super::convert::{hex_of, params_to_rtl, slot_from_rtl, slot_to_rtl};
 use super::replay::{inp, out, Port, Recorder};
+use super::StageTop;
 use golden::proof::cycle_opp::{drive_frame, Gaps, OppDrive, OppIn, OppModel, OppOut, OppRun};
 use golden::proof::format::ObjectParams;
 use golden::format::Screen;
@@ -151,36 +152,18 @@ impl OppBench {
     }
 }
 
-/// An OPP top beside its cycle model, one clock at a time (the RustHDL bench, and the generated
-/// Verilog under Verilator in `super::verilated`).
-pub trait OppTop {
-    /// One clock on both sides, compared; the model's outputs before the edge.
-    fn cycle(&mut self, inp: &OppIn) -> Result<OppOut, String>;
-    /// The cycle model (its OPs' `free` drive the object loader).
+/// An OPP top beside its cycle model (the RustHDL bench, and the generated Verilog under Verilator in
+/// `super::verilated`): a [`StageTop`] whose model's OPs drive the object loader.
+pub trait OppTop: StageTop<OppIn, OppOut> {
+    /// The cycle model.
     fn model(&self) -> &OppModel;
-    /// Clocks so far.
-    fn cycles(&self) -> u64;
-    /// The vector recorder, if the run records.
-    fn take_vectors(&mut self) -> Option<Recorder>;
-    /// The waveform, for failure messages.
-    fn trace(&self) -> Option<&Trace>;
 }
 
+super::rusthdl_stage_top!(OppBench, OppIn, OppOut);
+
 impl OppTop for OppBench {
-    fn cycle(&mut self, inp: &OppIn) -> Result<OppOut, String> {
-        OppBench::cycle(self, inp)
-    }
     fn model(&self) -> &OppModel {
         &self.model
-    }
-    fn cycles(&self) -> u64 {
-        self.cycle
-    }
-    fn take_vectors(&mut self) -> Option<Recorder> {
-        self.vectors.take()
-    }
-    fn trace(&self) -> Option<&Trace> {
-        Some(&self.trace)
     }
 }
 

@@ -9,7 +9,7 @@
 
 use crate::common::{Trace, Watchdog};
 use super::convert::hex_of;
-use super::filter_bench::{check_tag, compare_front, drive_filter_inputs, filter_ports, filter_vector_row, pixel_from_rtl, pixel_to_rtl, run_filter_top, FilterRun, FilterTop};
+use super::filter_bench::{check_tag, compare_front, drive_filter_inputs, filter_ports, filter_vector_row, pixel_from_rtl, pixel_to_rtl, run_filter_top, FilterRun};
 use super::shade_bench::StageGaps;
 use super::replay::{inp, out, Port, Recorder};
 use golden::proof::cycle_filter::{FilterIn, FilterOut, FilteredPixel};
@@ -194,20 +194,7 @@ impl Filter2x2Bench {
     }
 }
 
-impl FilterTop for Filter2x2Bench {
-    fn cycle(&mut self, i: &FilterIn) -> Result<FilterOut, String> {
-        Filter2x2Bench::cycle(self, i)
-    }
-    fn cycles(&self) -> u64 {
-        self.cycle
-    }
-    fn take_vectors(&mut self) -> Option<Recorder> {
-        self.vectors.take()
-    }
-    fn trace(&self) -> Option<&Trace> {
-        Some(&self.trace)
-    }
-}
+super::rusthdl_stage_top!(Filter2x2Bench, FilterIn, FilterOut);
 
 /// Configure, then stream a frame's `slots` through the RTL 2x2 filter stage for a `width` x `height`
 /// screen beside its model, with optional random gaps at the input and back-pressure at the output;

@@ -238,20 +238,7 @@ impl FilterBench {
     }
 }
 
-impl FilterTop for FilterBench {
-    fn cycle(&mut self, i: &FilterIn) -> Result<FilterOut, String> {
-        FilterBench::cycle(self, i)
-    }
-    fn cycles(&self) -> u64 {
-        self.cycle
-    }
-    fn take_vectors(&mut self) -> Option<Recorder> {
-        self.vectors.take()
-    }
-    fn trace(&self) -> Option<&Trace> {
-        Some(&self.trace)
-    }
-}
+super::rusthdl_stage_top!(FilterBench, FilterIn, FilterOut);
 
 /// Drive a filter top's inputs for one cycle (the 1x1 and the 2x2 top have the same ports).
 macro_rules! drive_filter_inputs {
@@ -289,18 +276,6 @@ pub fn filter_vector_row(i: &FilterIn, exp: &FilterOut) -> Vec<String> {
     ]
 }
 
-/// A filter top beside its cycle model, one clock at a time (the 1x1 and the 2x2 bench).
-pub trait FilterTop {
-    /// One clock on both sides, compared; the model's outputs before the edge.
-    fn cycle(&mut self, i: &FilterIn) -> Result<FilterOut, String>;
-    /// Clocks so far.
-    fn cycles(&self) -> u64;
-    /// The vector recorder, if the run records.
-    fn take_vectors(&mut self) -> Option<Recorder>;
-    /// The waveform, for failure messages.
-    fn trace(&self) -> Option<&Trace>;
-}
-
 /// The outcome of a run of the filter bench.
 pub struct FilterRun {
     pub pixels: Vec<FilteredPixel>,
@@ -326,7 +301,7 @@ pub fn run_filter(
 
 /// Configure a filter top, then stream `slots` through it with optional random gaps at the input and
 /// back-pressure at the output until every list's pixel has left; returns the pixels in order.
-pub fn run_filter_top<B: FilterTop>(b: &mut B, cfg: &[CfgWrite], slots: &[ShadedSlot], gaps: Option<StageGaps>) -> Result<FilterRun, String> {
+pub fn run_filter_top<B: super::StageTop<FilterIn, FilterOut>>(b: &mut B, cfg: &[CfgWrite], slots: &[ShadedSlot], gaps: Option<StageGaps>) -> Result<FilterRun, String> {
     let mut rng = GapRng(gaps.map(|g| g.seed).unwrap_or(1));
     for c in cfg {
         b.cycle(&FilterIn { cfg: Some(*c), down_ready: true, ..Default::default() })?;

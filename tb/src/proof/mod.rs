@@ -22,3 +22,38 @@ mod filter_tests;
 mod stage_tests;
 #[cfg(test)]
 mod tests;
+
+/// A PROOF top beside its cycle model, one clock at a time: the RustHDL benches and the generated
+/// Verilog under Verilator ([`verilated`]) alike, so that one driving loop per stage serves both
+/// (`bench::run_frame_top`, `shade_bench::run_shade_top`, `filter_bench::run_filter_top`).
+pub trait StageTop<I, O> {
+    /// One clock on both sides, compared; the model's outputs before the edge.
+    fn cycle(&mut self, i: &I) -> Result<O, String>;
+    /// Clocks so far.
+    fn cycles(&self) -> u64;
+    /// The vector recorder, if the run records.
+    fn take_vectors(&mut self) -> Option<replay::Recorder>;
+    /// The waveform, for failure messages.
+    fn trace(&self) -> Option<&crate::common::Trace>;
+}
+
+/// `StageTop` for a RustHDL bench with fields `cycle`, `vectors`, `trace` and a method `cycle`.
+macro_rules! rusthdl_stage_top {
+    ($bench:ty, $in:ty, $out:ty) => {
+        impl $crate::proof::StageTop<$in, $out> for $bench {
+            fn cycle(&mut self, i: &$in) -> Result<$out, String> {
+                <$bench>::cycle(self, i)
+            }
+            fn cycles(&self) -> u64 {
+                self.cycle
+            }
+            fn take_vectors(&mut self) -> Option<$crate::proof::replay::Recorder> {
+                self.vectors.take()
+            }
+            fn trace(&self) -> Option<&$crate::common::Trace> {
+                Some(&self.trace)
+            }
+        }
+    };
+}
+pub(crate) use rusthdl_stage_top;

@@ -102,33 +102,7 @@ pub fn shade_vector_row(i: &ShadeIn, exp: &ShadeOut) -> Vec<String> {
     ]
 }
 
-/// A shading top beside its cycle model, one clock at a time (the RustHDL bench, and the generated
-/// Verilog under Verilator in `super::verilated`).
-pub trait ShadeTop {
-    /// One clock on both sides, compared; the model's outputs before the edge.
-    fn cycle(&mut self, i: &ShadeIn) -> Result<ShadeOut, String>;
-    /// Clocks so far.
-    fn cycles(&self) -> u64;
-    /// The vector recorder, if the run records.
-    fn take_vectors(&mut self) -> Option<Recorder>;
-    /// The waveform, for failure messages.
-    fn trace(&self) -> Option<&Trace>;
-}
-
-impl ShadeTop for ShadeBench {
-    fn cycle(&mut self, i: &ShadeIn) -> Result<ShadeOut, String> {
-        ShadeBench::cycle(self, i)
-    }
-    fn cycles(&self) -> u64 {
-        self.cycle
-    }
-    fn take_vectors(&mut self) -> Option<Recorder> {
-        self.vectors.take()
-    }
-    fn trace(&self) -> Option<&Trace> {
-        Some(&self.trace)
-    }
-}
+super::rusthdl_stage_top!(ShadeBench, ShadeIn, ShadeOut);
 
 pub struct ShadeBench {
     pub uut: ShadingStage,
@@ -247,7 +221,7 @@ pub fn run_shade(
 
 /// Configure a shading top, then stream `slots` through it with optional random gaps at the input
 /// and back-pressure at the output: the shaded slots, the cycles and the recorded vectors.
-pub fn run_shade_top<B: ShadeTop>(
+pub fn run_shade_top<B: super::StageTop<ShadeIn, ShadeOut>>(
     b: &mut B,
     cfg: &[CfgWrite],
     slots: &[Slot],

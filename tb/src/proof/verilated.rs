@@ -11,9 +11,10 @@
 //! id), so one build of each serves every scene. The 2x2 filter's line buffer is built per screen.
 
 use super::bench::{opp_ports, opp_vector, OppTop};
-use super::filter_bench::{filter_ports, filter_vector_row, FilterTop};
+use super::filter_bench::{filter_ports, filter_vector_row};
 use super::replay::{Port, Recorder};
-use super::shade_bench::{shade_ports, shade_vector_row, ShadeTop};
+use super::shade_bench::{shade_ports, shade_vector_row};
+use super::StageTop;
 use crate::common::Trace;
 use crate::verilator::shared_lib::{build_lib, VlTop};
 use crate::verilator::Build;
@@ -25,6 +26,27 @@ use std::path::{Path, PathBuf};
 
 /// Address bits of the object tables in the verilated shading and filter stages: the object id's 16.
 pub const TABLE_BITS: usize = 16;
+
+/// `StageTop` for a Verilator top with a field `vl` and a method `cycle` (no RustHDL waveform: a
+/// failure names the VCD itself when there is one).
+macro_rules! verilated_stage_top {
+    ($top:ty, $in:ty, $out:ty) => {
+        impl StageTop<$in, $out> for $top {
+            fn cycle(&mut self, i: &$in) -> Result<$out, String> {
+                <$top>::cycle(self, i)
+            }
+            fn cycles(&self) -> u64 {
+                self.vl.top.cycle
+            }
+            fn take_vectors(&mut self) -> Option<Recorder> {
+                self.vl.vectors.take()
+            }
+            fn trace(&self) -> Option<&Trace> {
+                None
+            }
+        }
+    };
+}
 
 /// A verilated top and what a bench needs beside it.
 struct Vl {
@@ -68,24 +90,20 @@ impl VlOpp {
     }
 }
 
-impl OppTop for VlOpp {
+impl VlOpp {
     fn cycle(&mut self, inp: &OppIn) -> Result<OppOut, String> {
         let exp = self.model.outputs(inp.down_ready);
         self.vl.cycle(&opp_vector(inp, &exp))?;
         self.model.step(inp)?;
         Ok(exp)
     }
+}
+
+verilated_stage_top!(VlOpp, OppIn, OppOut);
+
+impl OppTop for VlOpp {
     fn model(&self) -> &OppModel {
         &self.model
-    }
-    fn cycles(&self) -> u64 {
-        self.vl.top.cycle
-    }
-    fn take_vectors(&mut self) -> Option<Recorder> {
-        self.vl.vectors.take()
-    }
-    fn trace(&self) -> Option<&Trace> {
-        None
     }
 }
 
@@ -103,23 +121,16 @@ impl VlShade {
     }
 }
 
-impl ShadeTop for VlShade {
+impl VlShade {
     fn cycle(&mut self, i: &ShadeIn) -> Result<ShadeOut, String> {
         let exp = self.model.outputs(i.down_ready);
         self.vl.cycle(&shade_vector_row(i, &exp))?;
         self.model.step(i)?;
         Ok(exp)
     }
-    fn cycles(&self) -> u64 {
-        self.vl.top.cycle
-    }
-    fn take_vectors(&mut self) -> Option<Recorder> {
-        self.vl.vectors.take()
-    }
-    fn trace(&self) -> Option<&Trace> {
-        None
-    }
 }
+
+verilated_stage_top!(VlShade, ShadeIn, ShadeOut);
 
 /// The filter stage's cycle model: the 1x1 box or the 2x2 area.
 enum FilterKind {
@@ -149,7 +160,7 @@ impl VlFilter {
     }
 }
 
-impl FilterTop for VlFilter {
+impl VlFilter {
     fn cycle(&mut self, i: &FilterIn) -> Result<FilterOut, String> {
         let exp = match &self.model {
             FilterKind::Box1(m) => m.outputs(i.down_ready),
@@ -162,13 +173,6 @@ impl FilterTop for VlFilter {
         };
         Ok(exp)
     }
-    fn cycles(&self) -> u64 {
-        self.vl.top.cycle
-    }
-    fn take_vectors(&mut self) -> Option<Recorder> {
-        self.vl.vectors.take()
-    }
-    fn trace(&self) -> Option<&Trace> {
-        None
-    }
 }
+
+verilated_stage_top!(VlFilter, FilterIn, FilterOut);
