@@ -67,18 +67,17 @@ pub fn merge_identical_modules(v: &str) -> String {
     }
     let index: HashMap<String, usize> = modules.iter().enumerate().map(|(i, m)| (m.name.clone(), i)).collect();
     let mut canon: Vec<usize> = (0..modules.len()).collect();
+    // An instance line with the child's type replaced by the child's kept name.
+    let retyped = |line: &str, canon: &[usize]| -> Option<String> {
+        let (ty, at) = instance_type(line, &index)?;
+        Some(format!("{}{}{}", &line[..at], modules[canon[index[ty]]].name, &line[at + ty.len()..]))
+    };
     // The body of module i with its own name blanked and each child's type replaced by its kept name.
     let key = |i: usize, canon: &[usize]| -> String {
         let m = &modules[i];
         let mut k = String::new();
         for line in &m.lines {
-            if let Some((ty, at)) = instance_type(line, &index) {
-                k.push_str(&line[..at]);
-                k.push_str(&modules[canon[index[ty]]].name);
-                k.push_str(&line[at + ty.len()..]);
-            } else {
-                k.push_str(&line.replace(m.name.as_str(), "\u{0}"));
-            }
+            k.push_str(&retyped(line, canon).unwrap_or_else(|| line.replace(m.name.as_str(), "\u{0}")));
             k.push('\n');
         }
         k
@@ -104,12 +103,9 @@ pub fn merge_identical_modules(v: &str) -> String {
             }
             Piece::Module(i) if canon[*i] == *i => {
                 for line in &modules[*i].lines {
-                    if let Some((ty, at)) = instance_type(line, &index) {
-                        out.push_str(&line[..at]);
-                        out.push_str(&modules[canon[index[ty]]].name);
-                        out.push_str(&line[at + ty.len()..]);
-                    } else {
-                        out.push_str(line);
+                    match retyped(line, &canon) {
+                        Some(l) => out.push_str(&l),
+                        None => out.push_str(line),
                     }
                     out.push('\n');
                 }
