@@ -56,7 +56,9 @@ struct Vl {
 
 impl Vl {
     fn open(build: &Build, name: &str, ports: &[Port], vcd: Option<&Path>, vectors: Option<PathBuf>) -> Result<Vl, String> {
-        Ok(Vl { top: VlTop::open(build, name, ports, vcd)?, vectors: vectors.map(|p| Recorder::create(p, ports)).transpose()? })
+        let mut top = VlTop::open(build, name, ports, vcd)?;
+        top.keep_rows = vectors.is_some();
+        Ok(Vl { top, vectors: vectors.map(|p| Recorder::create(p, ports)).transpose()? })
     }
     /// One clock of `row`; records what the Verilog gave.
     fn cycle(&mut self, row: &[String]) -> Result<(), String> {

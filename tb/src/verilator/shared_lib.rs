@@ -214,6 +214,9 @@ pub struct VlTop {
     pub top: String,
     /// Clocks so far.
     pub cycle: u64,
+    /// Whether [`VlTop::cycle`] returns the row the Verilog gave (for a recorded trace); without it
+    /// the outputs are compared only, not formatted.
+    pub keep_rows: bool,
     vcd: Option<std::path::PathBuf>,
     scratch: Vec<u32>,
     expect: Vec<u32>,
@@ -257,6 +260,7 @@ impl VlTop {
             ports: ports.to_vec(),
             top: top.to_string(),
             cycle: 0,
+            keep_rows: true,
             vcd: vcd.map(Path::to_path_buf),
             scratch: vec![0; widest],
             expect: vec![0; widest],
@@ -274,7 +278,8 @@ impl VlTop {
 
     /// One clock: drive the inputs of `row` (hex per port, in port order), compare every output with
     /// the row's expected value before the rising edge, then clock. Returns the outputs the Verilog
-    /// gave, as hex in the row's digit counts (for a recorded trace of this run).
+    /// gave, as hex in the row's digit counts (for a recorded trace of this run), or an empty row
+    /// unless [`VlTop::keep_rows`].
     pub fn cycle(&mut self, row: &[String]) -> Result<Vec<String>, String> {
         if row.len() != self.ports.len() {
             return Err(self.fail(&format!("a row of {} values for {} ports", row.len(), self.ports.len())));
@@ -292,18 +297,19 @@ impl VlTop {
             (self.clock)(self.handle, 0);
             (self.dump)(self.handle, 10 * self.cycle);
         }
-        let mut got_row = Vec::with_capacity(self.ports.len());
+        let mut got_row = Vec::with_capacity(if self.keep_rows { self.ports.len() } else { 0 });
         for k in 0..self.ports.len() {
             let p = &self.ports[k];
             if p.input {
-                got_row.push(row[k].clone());
+                if self.keep_rows {
+                    got_row.push(row[k].clone());
+                }
                 continue;
             }
             let n = words_of(p.width);
             // SAFETY: as above.
             unsafe { (self.get)(self.handle, k as i32, self.scratch.as_mut_ptr()) };
             mask(&mut self.scratch[..n], p.width);
-            let got = hex_words(&self.scratch[..n], p.width);
             let guarded_off = p.guard.is_some_and(|g| {
                 let gi = self.ports.iter().position(|q| q.name == g).unwrap_or(k);
                 row[gi].trim_start_matches('0').is_empty()
@@ -311,10 +317,13 @@ impl VlTop {
             if !guarded_off {
                 parse_hex(&row[k], p.width, &mut self.expect[..n]).map_err(|e| format!("{}: {e}", p.name))?;
                 if self.scratch[..n] != self.expect[..n] {
+                    let got = hex_words(&self.scratch[..n], p.width);
                     return Err(self.fail(&format!("{} verilog {got} model {}", p.name, hex_words(&self.expect[..n], p.width))));
                 }
             }
-            got_row.push(got);
+            if self.keep_rows {
+                got_row.push(hex_words(&self.scratch[..n], p.width));
+            }
         }
         // SAFETY: as above.
         unsafe {
