@@ -98,3 +98,35 @@ pub fn hex_of<const N: usize>(v: Bits<N>) -> String {
         })
         .collect()
 }
+
+/// A 128-bit configuration word on the 96-bit `cfg_data` port.
+pub fn bits96(v: u128) -> Bits<96> {
+    Bits::<96>::from(v as u64) | (Bits::<96>::from((v >> 64) as u64) << 64)
+}
+
+/// One cycle of recorded vectors of a configured stage top (shading, 1x1 and 2x2 filter: the same
+/// ports, `cfg_*`, `upstream`, `downstream`), given the stream payloads as hex.
+#[allow(clippy::too_many_arguments)]
+pub fn cfg_stage_row(
+    cfg: Option<golden::proof::cycle_shade::CfgWrite>,
+    up_valid: bool,
+    up: String,
+    down_ready: bool,
+    up_ready: bool,
+    down_valid: bool,
+    down: String,
+) -> Vec<String> {
+    let c = cfg.unwrap_or_default();
+    vec![
+        format!("{}", cfg.is_some() as u8),
+        format!("{:x}", c.sel),
+        format!("{:x}", c.addr),
+        hex_of(bits96(c.data)),
+        format!("{}", up_valid as u8),
+        up,
+        format!("{}", down_ready as u8),
+        format!("{}", up_ready as u8),
+        format!("{}", down_valid as u8),
+        down,
+    ]
+}

@@ -151,9 +151,7 @@ pub struct FilterBench {
     pub vectors: Option<Recorder>,
 }
 
-pub fn bits96(v: u128) -> Bits<96> {
-    Bits::<96>::from(v as u64) | (Bits::<96>::from((v >> 64) as u64) << 64)
-}
+pub use super::convert::bits96;
 
 impl FilterBench {
     pub fn new(obj_addr_bits: usize, vcd: Option<&Path>, vectors: Option<PathBuf>) -> Result<FilterBench, String> {
@@ -259,21 +257,9 @@ pub(crate) use drive_filter_inputs;
 /// One cycle of recorded vectors for a filter top, in [`filter_ports`] order: the inputs and the
 /// model's outputs.
 pub fn filter_vector_row(i: &FilterIn, exp: &FilterOut) -> Vec<String> {
-    let c = i.cfg.unwrap_or_default();
     let up: Bits<{ RtlShaded::BITS }> = shaded_to_rtl(&i.up_data).into();
     let down: Bits<{ RtlPixel::BITS }> = pixel_to_rtl(&exp.down_data).into();
-    vec![
-        format!("{}", i.cfg.is_some() as u8),
-        format!("{:x}", c.sel),
-        format!("{:x}", c.addr),
-        hex_of(bits96(c.data)),
-        format!("{}", i.up_valid as u8),
-        hex_of(up),
-        format!("{}", i.down_ready as u8),
-        format!("{}", exp.up_ready as u8),
-        format!("{}", exp.down_valid as u8),
-        hex_of(down),
-    ]
+    super::convert::cfg_stage_row(i.cfg, i.up_valid, hex_of(up), i.down_ready, exp.up_ready, exp.down_valid, hex_of(down))
 }
 
 /// The outcome of a run of the filter bench.

@@ -84,22 +84,9 @@ pub fn shade_ports() -> Vec<Port> {
 /// One cycle of recorded vectors for the shading top, in [`shade_ports`] order: the inputs and the
 /// model's outputs.
 pub fn shade_vector_row(i: &ShadeIn, exp: &ShadeOut) -> Vec<String> {
-    let c = i.cfg.unwrap_or_default();
-    let data96: Bits<96> = Bits::<96>::from(c.data as u64) | (Bits::<96>::from((c.data >> 64) as u64) << 64);
     let up: Bits<{ hdl::proof::ProofSlot::BITS }> = slot_to_rtl(&i.up_data).into();
     let down: Bits<{ RtlShaded::BITS }> = shaded_to_rtl(&exp.down_data).into();
-    vec![
-        format!("{}", i.cfg.is_some() as u8),
-        format!("{:x}", c.sel),
-        format!("{:x}", c.addr),
-        hex_of(data96),
-        format!("{}", i.up_valid as u8),
-        hex_of(up),
-        format!("{}", i.down_ready as u8),
-        format!("{}", exp.up_ready as u8),
-        format!("{}", exp.down_valid as u8),
-        hex_of(down),
-    ]
+    super::convert::cfg_stage_row(i.cfg, i.up_valid, hex_of(up), i.down_ready, exp.up_ready, exp.down_valid, hex_of(down))
 }
 
 super::rusthdl_stage_top!(ShadeBench, ShadeIn, ShadeOut);
@@ -170,7 +157,7 @@ impl ShadeBench {
         u.cfg_write.next = i.cfg.is_some();
         u.cfg_sel.next = (c.sel as u64).into();
         u.cfg_addr.next = (c.addr as u64).into();
-        u.cfg_data.next = Bits::<96>::from(c.data as u64) | (Bits::<96>::from((c.data >> 64) as u64) << 64);
+        u.cfg_data.next = super::convert::bits96(c.data);
         u.upstream.valid.next = i.up_valid;
         u.upstream.data.next = slot_to_rtl(&i.up_data);
         u.downstream.ready.next = i.down_ready;
