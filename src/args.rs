@@ -29,6 +29,17 @@ pub enum BackendArg {
     Verilator,
 }
 
+/// Seed 000's index-rendering architecture (`--type`).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum TypeArg {
+    /// No Z-buffer: the old depth is regenerated from TdbV, the triangles' depth planes.
+    #[value(name = "III")]
+    Iii,
+    /// I-buffer and Z-buffer.
+    #[value(name = "IV")]
+    Iv,
+}
+
 #[derive(Copy, Clone, Debug, ValueEnum)]
 pub enum ShadingArg {
     Flat,
@@ -92,6 +103,10 @@ pub struct RenderArgs {
     /// Triangle-index width in bits (0 is reserved for background; default 16). Only with --arch index.
     #[arg(long)]
     pub index_bits: Option<u32>,
+    /// Seed 000's index-rendering type: IV keeps a Z-buffer, III regenerates depth from TdbV (the
+    /// triangles' depth planes) instead. Only with --arch index.
+    #[arg(long = "type", value_enum)]
+    pub rc_type: Option<TypeArg>,
     /// Output directory.
     #[arg(long, default_value = "out")]
     pub out: PathBuf,
@@ -232,6 +247,10 @@ pub fn render_options(args: &RenderArgs, mesh: &Mesh) -> Result<RenderOptions, S
         },
         front,
         index_bits: args.index_bits.unwrap_or(INDEX_BITS_DEFAULT),
+        rc_type: match args.rc_type {
+            Some(TypeArg::Iii) => golden::raster::RcType::III,
+            Some(TypeArg::Iv) | None => golden::raster::RcType::IV,
+        },
         ..RenderOptions::for_scene(mesh, screen, shading)
     })
 }

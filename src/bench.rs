@@ -182,6 +182,7 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
     let report = Report {
         command: std::iter::once("idxrender".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" "),
         mode: mode.name.to_string(),
+        rc_type: golden::raster::RcType::IV.name(),
         golden_min_seconds: mode.golden_min.0.as_secs_f64(),
         golden_min_frames: mode.golden_min.1,
         seconds: t_start.elapsed().as_secs_f64(),
@@ -954,6 +955,8 @@ fn utc_now() -> String {
 struct Report {
     command: String,
     mode: String,
+    /// Seed 000's index-rendering type of the chipset measured (the RTL builds Type IV).
+    rc_type: &'static str,
     /// Each golden frame was repeated for at least this time and this many frames.
     golden_min_seconds: f64,
     golden_min_frames: u64,
@@ -1008,7 +1011,7 @@ fn extremes(frames: &[FrameRow]) -> Option<((&'static str, String, f64), (&'stat
 }
 
 fn summary(r: &Report) -> Vec<String> {
-    let mut lines = Vec::new();
+    let mut lines = vec![format!("chipset: seed 000 Type {}", r.rc_type)];
     for g in &r.golden {
         lines.push(format!("golden {} {}: {:.1} frames/s", g.scene, size_str(g.size), g.frames_per_second));
     }
@@ -1036,6 +1039,7 @@ fn markdown(r: &Report) -> String {
     let mut md = String::new();
     let _ = writeln!(md, "# Performance, side by side (`idxrender bench`)\n");
     let _ = writeln!(md, "Command: `{}` ({} mode, {:.0} s). Date: {}.\n", r.command, r.mode, r.seconds, m.date_utc);
+    let _ = writeln!(md, "Chipset measured: seed 000 Type {} (I-buffer and Z-buffer).\n", r.rc_type);
     let load = |l: Option<f64>| l.map(|x| format!("{x:.2}")).unwrap_or("unknown".into());
     let _ = writeln!(
         md,

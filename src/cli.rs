@@ -46,6 +46,7 @@ fn run_render(args: &RenderArgs) -> Result<(), String> {
             let given: Vec<&str> = proof_only.iter().filter(|o| o.1).map(|o| o.0).collect();
             Err(format!("{} applies to --arch proof only", given.join(", ")))
         }
+        ArchArg::Proof if args.rc_type.is_some() => Err("--type applies to --arch index only (seed 000's Types III and IV are index-rendering architectures)".into()),
         ArchArg::Proof if args.index_bits.is_some() => Err("--index-bits applies to --arch index only (PROOF keeps no triangle index)".into()),
         ArchArg::Proof if args.frames != 1 => Err("--frames applies to --arch index (the chipset); PROOF renders one frame".into()),
         ArchArg::Proof => crate::proof::run_render(args, &mesh, &opts),

@@ -23,6 +23,9 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         return Err("--vcd needs --backend rtl or --backend verilator".into());
     }
     if args.backend != BackendArg::Golden {
+        if opts.rc_type == golden::raster::RcType::III {
+            return Err("--type III runs through --backend golden only: the chipset RTL builds Type IV (Z-buffer)".into());
+        }
         if opts.index_bits > RTL_INDEX_BITS {
             return Err(format!(
                 "--index-bits {}: the RTL's triangle index is {RTL_INDEX_BITS} bits; use --backend golden for wider indices",
@@ -64,14 +67,15 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "front_face": opts.front,
         "camera": opts.camera,
         "index_bits": opts.index_bits,
+        "type": opts.rc_type.name(),
         "backend": match args.backend { BackendArg::Golden => "golden", BackendArg::Rtl => "rtl", BackendArg::Verilator => "verilator" },
         "stats": frame.stats,
     });
     let mut files = crate::output::write_frame(od.dir(), &frame, &stats)?;
     let s = &frame.stats;
     crate::say!(
-        "{}: {}x{} {:?}, {} triangles in (a), {} after culling (b), {} flagged visible, {} visible in the image (c)",
-        mesh.name, opts.screen.width, opts.screen.height, opts.shading, s.triangles_in, s.after_culling, s.flagged_visible, s.visible_final
+        "{}: {}x{} {:?}, Type {}, {} triangles in (a), {} after culling (b), {} flagged visible, {} visible in the image (c)",
+        mesh.name, opts.screen.width, opts.screen.height, opts.shading, opts.rc_type.name(), s.triangles_in, s.after_culling, s.flagged_visible, s.visible_final
     );
     crate::say!(
         "  {} fragments, {} Z passes, {} covered pixels, depth complexity {:.2}; host cost {} (Type I {}, Type II {})",

@@ -92,6 +92,9 @@ fn quick_bench_writes_a_table_whose_figures_agree_with_its_raw_counts_and_the_fp
     let m = &json["machine"];
     assert!(md.contains("Machine: ") && md.contains(m["cpu"].as_str().unwrap()) && md.contains(m["verilator"].as_str().unwrap()), "machine line");
     assert!(m["logical_cpus"].as_u64().unwrap() >= 1);
+    // The bench names the index-rendering type it measured.
+    assert_eq!(json["rc_type"], "IV");
+    assert!(md.contains("Chipset measured: seed 000 Type IV") && stdout.contains("chipset: seed 000 Type IV"), "type line");
 
     // Golden: every scene at both sizes, fps = frames / seconds, as printed.
     let golden = json["golden"].as_array().unwrap();

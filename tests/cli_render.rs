@@ -257,3 +257,24 @@ fn a_folder_with_other_files_is_refused_and_left_as_it_was() {
     assert_eq!(std::fs::read_to_string(out.join("notes.txt")).unwrap(), "mine");
     assert_eq!(snapshot(&out).len(), 1);
 }
+
+#[test]
+fn type_iii_writes_the_same_frame_and_index_buffer_as_type_iv_and_says_which_it_drew() {
+    let (a, b) = (temp_dir("type-iii"), temp_dir("type-iv"));
+    for (t, out) in [("III", &a), ("IV", &b)] {
+        let (ok, stdout, err) = run(&["render", "--scene", "castle", "--size", "96x64", "--type", t, "--out", out.to_str().unwrap()]);
+        assert!(ok, "--type {t}: {err}");
+        assert!(stdout.contains(&format!("Type {t},")), "--type {t}: {stdout}");
+        let stats: serde_json::Value = serde_json::from_slice(&std::fs::read(out.join("stats.json")).unwrap()).unwrap();
+        assert_eq!(stats["type"], t);
+    }
+    for f in ["frame.png", "index.bin"] {
+        assert_eq!(std::fs::read(a.join(f)).unwrap(), std::fs::read(b.join(f)).unwrap(), "{f}");
+    }
+    let stats: serde_json::Value = serde_json::from_slice(&std::fs::read(a.join("stats.json")).unwrap()).unwrap();
+    let t = &stats["stats"]["rc"]["traffic"];
+    assert_eq!((t["z_reads"].as_u64(), t["z_writes"].as_u64()), (Some(0), Some(0)), "Type III has no Z-buffer: {t}");
+    assert!(t["tdbv_reads"].as_u64().unwrap() > 0 && t["tdbv_writes"].as_u64().unwrap() > 0, "{t}");
+    assert_clean_error(&["render", "--scene", "castle", "--type", "V"], "--type");
+    assert_clean_error(&["render", "--arch", "proof", "--scene", "castle", "--type", "III"], "--type applies to --arch index only");
+}

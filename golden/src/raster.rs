@@ -13,8 +13,35 @@
 //! * Depth: a [`Plane`] through the three vertex depths (one reciprocal per triangle), clamped to
 //!   0..=2^24-1. Z-test "less": of equal depths the first drawn wins. The Z-buffer is cleared to the far
 //!   value, the I-buffer to 0 (background). On a pass both are written.
+//! * Two of seed 000's index-rendering architectures ([`RcType`]): Type IV keeps a Z-buffer beside the
+//!   I-buffer; Type III keeps none and regenerates the old depth of a pixel from TdbV, the triangle
+//!   database for visibility, which holds every drawn triangle's depth plane: the plane of the index
+//!   stored at the pixel, evaluated there. The traversal steps the same plane with exact integer adds
+//!   (`raw = C + A*X + B*Y`), so the regenerated depth is the depth Type IV would have stored and the
+//!   two types draw the same I-buffer, bit for bit, whenever every triangle of a frame has its own index.
 
 use crate::format::{reciprocal, Plane, Recip, Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND, SUBPIXEL_HALF};
+
+/// Seed 000's index-rendering architecture the RC implements: where the old depth of a pixel comes from.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default, serde::Serialize)]
+pub enum RcType {
+    /// No Z-buffer: the depth plane of the triangle whose index the I-buffer holds, read from TdbV and
+    /// evaluated at the pixel.
+    III,
+    /// A Z-buffer beside the I-buffer (the conventional Z-test).
+    #[default]
+    IV,
+}
+
+impl RcType {
+    /// "III" or "IV", as the command line and the reports spell it.
+    pub fn name(self) -> &'static str {
+        match self {
+            RcType::III => "III",
+            RcType::IV => "IV",
+        }
+    }
+}
 
 /// Which faces are culled (glCullFace, with culling disabled as `None`).
 #[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
@@ -191,27 +218,79 @@ pub struct RcCounts {
     pub fragments: u64,
     pub z_passes: u64,
     pub flagged_visible: u64,
+    /// The visibility test's memory words, clears not included: Type IV reads the Z-buffer and the
+    /// I-buffer word for every fragment and writes both on a pass; Type III reads the I-buffer word,
+    /// then TdbV where the pixel is owned by a triangle, writes the I-buffer on a pass, and writes one
+    /// TdbV record per triangle it walks.
+    pub traffic: RcTraffic,
 }
 
-/// The RC's buffers: Z-buffer and I-buffer, one entry per pixel, row 0 at the top.
+/// Words moved on each of the RC's memories (reads and writes), clears not included.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct RcTraffic {
+    pub z_reads: u64,
+    pub z_writes: u64,
+    pub i_reads: u64,
+    pub i_writes: u64,
+    pub tdbv_reads: u64,
+    pub tdbv_writes: u64,
+}
+
+/// The RC's buffers, one entry per pixel, row 0 at the top: the I-buffer, and the Z-buffer (Type IV)
+/// or TdbV (Type III, one depth plane per triangle index).
 #[derive(Clone, Debug)]
 pub struct Rasterizer {
     pub screen: Screen,
+    pub ty: RcType,
+    /// Type IV's Z-buffer; unused (left at the far value) in Type III.
     pub zbuf: Vec<u32>,
     pub ibuf: Vec<u32>,
+    /// Type III's TdbV, indexed by triangle index (entry 0, the background, is never read).
+    pub tdbv: Vec<Plane>,
     pub counts: RcCounts,
 }
 
 impl Rasterizer {
+    /// A Type IV RC (Z-buffer).
     pub fn new(screen: Screen) -> Rasterizer {
-        Rasterizer { screen, zbuf: vec![DEPTH_MAX; screen.pixels()], ibuf: vec![INDEX_BACKGROUND; screen.pixels()], counts: RcCounts::default() }
+        Rasterizer::of_type(screen, RcType::IV)
     }
 
-    /// Frame start: clear both buffers.
+    pub fn of_type(screen: Screen, ty: RcType) -> Rasterizer {
+        Rasterizer {
+            screen,
+            ty,
+            zbuf: vec![DEPTH_MAX; screen.pixels()],
+            ibuf: vec![INDEX_BACKGROUND; screen.pixels()],
+            tdbv: Vec::new(),
+            counts: RcCounts::default(),
+        }
+    }
+
+    /// Frame start: clear the buffers (TdbV needs none: only indices in the I-buffer are read).
     pub fn clear(&mut self) {
         self.zbuf.fill(DEPTH_MAX);
         self.ibuf.fill(INDEX_BACKGROUND);
         self.counts = RcCounts::default();
+    }
+
+    /// The depth a pixel holds: Type IV's Z-buffer word; Type III's regenerated from TdbV (the far value
+    /// where the I-buffer holds the background).
+    pub fn depth(&self, x: i32, y: i32) -> u32 {
+        let a = y as usize * self.screen.width as usize + x as usize;
+        match self.ty {
+            RcType::IV => self.zbuf[a],
+            RcType::III => match self.ibuf[a] {
+                INDEX_BACKGROUND => DEPTH_MAX,
+                i => self.tdbv[i as usize].eval_clamped(x as u32, y as u32, DEPTH_MAX as i64) as u32,
+            },
+        }
+    }
+
+    /// The depth of every pixel (see [`Rasterizer::depth`]): what the Z-buffer holds in Type IV.
+    pub fn depths(&self) -> Vec<u32> {
+        let (w, h) = (self.screen.width as i32, self.screen.height as i32);
+        (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| self.depth(x, y)).collect()
     }
 
     /// Draw one triangle with hardware index `index` (1..).
@@ -231,6 +310,14 @@ impl Rasterizer {
         let w = self.screen.width as usize;
         if !s.bbox.is_empty() {
             self.counts.candidates += s.bbox.pixels();
+            if self.ty == RcType::III {
+                // The traversal writes the triangle's depth plane into TdbV when it starts the walk.
+                if self.tdbv.len() <= index as usize {
+                    self.tdbv.resize(index as usize + 1, Plane::default());
+                }
+                self.tdbv[index as usize] = s.depth;
+                self.counts.traffic.tdbv_writes += 1;
+            }
             for y in s.bbox.y0..=s.bbox.y1 {
                 for x in s.bbox.x0..=s.bbox.x1 {
                     if !s.covers(x, y) {
@@ -239,9 +326,29 @@ impl Rasterizer {
                     self.counts.fragments += 1;
                     let z = s.depth_at(x, y);
                     let a = y as usize * w + x as usize;
-                    if z < self.zbuf[a] {
-                        self.zbuf[a] = z;
+                    let t = &mut self.counts.traffic;
+                    t.i_reads += 1;
+                    let old = match self.ty {
+                        RcType::IV => {
+                            t.z_reads += 1;
+                            // The I-buffer word read with the depth: a background index marks it stale.
+                            if self.ibuf[a] == INDEX_BACKGROUND { DEPTH_MAX } else { self.zbuf[a] }
+                        }
+                        RcType::III => match self.ibuf[a] {
+                            INDEX_BACKGROUND => DEPTH_MAX,
+                            i => {
+                                t.tdbv_reads += 1;
+                                self.tdbv[i as usize].eval_clamped(x as u32, y as u32, DEPTH_MAX as i64) as u32
+                            }
+                        },
+                    };
+                    if z < old {
+                        if self.ty == RcType::IV {
+                            self.zbuf[a] = z;
+                            t.z_writes += 1;
+                        }
                         self.ibuf[a] = index;
+                        t.i_writes += 1;
                         self.counts.z_passes += 1;
                         visible = true;
                     }

@@ -10,7 +10,7 @@
 
 use crate::format::{max_index, Screen, WinVertex, INDEX_BACKGROUND};
 use crate::host::{eye_normals, normalize, to_rgb8, upper_pipeline, Camera, ClipStats, Geometry, HostOps, Lighting, Ops};
-use crate::raster::{Culled, CullMode, FrontFace, RcCounts, Rasterizer, TriResult};
+use crate::raster::{Culled, CullMode, FrontFace, RcCounts, RcType, Rasterizer, TriResult};
 use crate::scene::Mesh;
 use crate::shade::{colour_setup, flat_setup, normal_q14, PhongLights, Shading, TdbsEntry};
 
@@ -88,8 +88,13 @@ pub struct GoldenChipset {
 }
 
 impl GoldenChipset {
+    /// The Type IV chipset (Z-buffer).
     pub fn new(screen: Screen) -> GoldenChipset {
-        GoldenChipset { rc: Rasterizer::new(screen), tdbs: Vec::new(), setups: Vec::new() }
+        GoldenChipset::of_type(screen, RcType::IV)
+    }
+
+    pub fn of_type(screen: Screen, ty: RcType) -> GoldenChipset {
+        GoldenChipset { rc: Rasterizer::of_type(screen, ty), tdbs: Vec::new(), setups: Vec::new() }
     }
 
     fn colour_setup(&mut self, c: &SetupCommand) {
@@ -121,7 +126,7 @@ impl GoldenChipset {
                 rgb.extend_from_slice(&px);
             }
         }
-        ScanOut { rgb, ibuf: self.rc.ibuf.clone(), zbuf: self.rc.zbuf.clone() }
+        ScanOut { rgb, ibuf: self.rc.ibuf.clone(), zbuf: self.rc.depths() }
     }
 }
 
@@ -158,6 +163,8 @@ pub struct RenderOptions {
     pub lighting: Lighting,
     pub index_bits: u32,
     pub background: [u8; 3],
+    /// Seed 000's Type IV (Z-buffer, the default) or Type III (depth regenerated from TdbV).
+    pub rc_type: RcType,
 }
 
 /// The background colour of every frame (index 0 in the I-buffer).
@@ -181,6 +188,7 @@ impl RenderOptions {
             lighting: Lighting::default(),
             index_bits: crate::format::INDEX_BITS_DEFAULT,
             background: BACKGROUND,
+            rc_type: RcType::IV,
         }
     }
 }
@@ -387,7 +395,7 @@ impl<'a> HostFrame<'a> {
         let rc = match rc_counts {
             Some(c) => c,
             None => {
-                let mut model = Rasterizer::new(opts.screen);
+                let mut model = Rasterizer::of_type(opts.screen, opts.rc_type);
                 for c in &self.cmds {
                     model.draw(c.index, &c.v, opts.cull, opts.front);
                 }
@@ -462,6 +470,6 @@ pub fn render_with(mesh: &Mesh, opts: &RenderOptions, chip: &mut dyn Chipset) ->
 
 /// Render one frame through the algorithmic model.
 pub fn render(mesh: &Mesh, opts: &RenderOptions) -> Result<Frame, String> {
-    let mut chip = GoldenChipset::new(opts.screen);
+    let mut chip = GoldenChipset::of_type(opts.screen, opts.rc_type);
     render_with(mesh, opts, &mut chip)
 }

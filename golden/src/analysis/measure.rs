@@ -5,12 +5,12 @@
 //! the covered pixels, the TdbS writes and the host's and CS's lighting counts. One number the
 //! bandwidth of seed 000's Type III needs is not among them: how many fragments land on a pixel that
 //! some triangle already owns (each fetches that triangle's depth plane from TdbV). [`tdbv_reads`]
-//! counts it by replaying the frame's rasterizer triangles with the public RC setup and Z-test, and
-//! checks its own replay against the golden frame (same I-buffer, same counters) before it is used.
+//! counts it by drawing the frame again with the Type III RC ([`crate::raster::RcType::III`]), and
+//! checks that frame against the Type IV one (same I-buffer, same counters) before it is used.
 
-use crate::format::{Screen, INDEX_BACKGROUND};
-use crate::host::{upper_pipeline, HostOps};
-use crate::raster::{setup, RcCounts};
+use crate::format::INDEX_BACKGROUND;
+use crate::host::HostOps;
+use crate::raster::{RcCounts, RcType};
 use crate::render::{render, Frame, RenderOptions};
 use crate::host::Camera;
 use crate::scene::{Mesh, Triangle};
@@ -160,53 +160,26 @@ pub fn cached_fetches(ibuf: &[u32]) -> u64 {
     n
 }
 
-/// Replay the frame's rasterizer triangles (the RC's setup, fill rule and Z-test) and count the
-/// fragments whose pixel already holds a triangle index: the TdbV reads of seed 000's Type III, which
-/// regenerates the stored depth from that triangle's plane instead of reading a Z-buffer. The replay
-/// must reproduce the frame's I-buffer and fragment counters, else it is an error.
+/// The TdbV reads of seed 000's Type III, which regenerates the stored depth from the plane of the
+/// triangle a pixel holds instead of reading a Z-buffer: the frame drawn again by the Type III RC
+/// ([`RcType::III`]), which counts the fragments whose pixel already holds a triangle index. Its
+/// I-buffer and fragment counters must reproduce the frame's, else it is an error.
 pub fn tdbv_reads(mesh: &Mesh, opts: &RenderOptions, frame: &Frame) -> Result<u64, String> {
-    let screen: Screen = opts.screen;
-    let geo = upper_pipeline(mesh, &opts.camera, screen);
-    let w = screen.width as usize;
-    let mut zbuf = vec![crate::format::DEPTH_MAX; screen.pixels()];
-    let mut ibuf = vec![INDEX_BACKGROUND; screen.pixels()];
-    let (mut fragments, mut passes, mut reads) = (0u64, 0u64, 0u64);
-    for (i, t) in geo.hw.iter().enumerate() {
-        let Ok(s) = setup(&t.v, opts.cull, opts.front, screen) else { continue };
-        if s.bbox.is_empty() {
-            continue;
-        }
-        for y in s.bbox.y0..=s.bbox.y1 {
-            for x in s.bbox.x0..=s.bbox.x1 {
-                if !s.covers(x, y) {
-                    continue;
-                }
-                fragments += 1;
-                let a = y as usize * w + x as usize;
-                if ibuf[a] != INDEX_BACKGROUND {
-                    reads += 1;
-                }
-                let z = s.depth_at(x, y);
-                if z < zbuf[a] {
-                    zbuf[a] = z;
-                    ibuf[a] = i as u32 + 1;
-                    passes += 1;
-                }
-            }
-        }
-    }
-    if ibuf != frame.hw_index || fragments != frame.stats.rc.fragments || passes != frame.stats.rc.z_passes {
+    let iii = render(mesh, &RenderOptions { rc_type: RcType::III, ..opts.clone() })?;
+    let (got, want) = (&iii.stats.rc, &frame.stats.rc);
+    if iii.hw_index != frame.hw_index || got.fragments != want.fragments || got.z_passes != want.z_passes {
         return Err(format!(
-            "{}: the TdbV-read replay does not reproduce the golden frame ({fragments} fragments, {passes} passes vs {} and {})",
-            mesh.name, frame.stats.rc.fragments, frame.stats.rc.z_passes
+            "{}: the Type III frame does not reproduce the golden frame ({} fragments, {} passes vs {} and {})",
+            mesh.name, got.fragments, got.z_passes, want.fragments, want.z_passes
         ));
     }
-    Ok(reads)
+    Ok(got.traffic.tdbv_reads)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::format::Screen;
     use crate::host::{Camera, Lighting};
     use crate::raster::{CullMode, FrontFace};
     use crate::scene::builtin;
@@ -220,6 +193,7 @@ mod tests {
             front: FrontFace::Ccw,
             lighting: Lighting::default(),
             index_bits: 16,
+            rc_type: crate::raster::RcType::IV,
             background: [0, 0, 0],
         }
     }

@@ -422,6 +422,7 @@ mod tests {
             front: FrontFace::Ccw,
             lighting: Lighting::default(),
             index_bits: 16,
+            rc_type: crate::raster::RcType::IV,
             background: [0, 0, 0],
         };
         measure::measure(mesh, &opts).unwrap()

@@ -451,6 +451,7 @@ mod tests {
             front: if mesh.front_face == Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
             lighting: Default::default(),
             index_bits: 16,
+            rc_type: crate::raster::RcType::IV,
             background: bg,
         };
         let mut chip = GoldenChipset::new(screen);

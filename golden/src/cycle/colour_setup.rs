@@ -202,6 +202,7 @@ mod tests {
             front: if mesh.front_face == Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
             lighting: Default::default(),
             index_bits: 16,
+            rc_type: crate::raster::RcType::IV,
             background: [10, 20, 30],
         };
         let mut rec = GoldenChipset::new(screen);

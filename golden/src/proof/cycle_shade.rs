@@ -412,6 +412,7 @@ mod tests {
             front: if mesh.front_face == crate::scene::Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
             lighting: crate::host::Lighting::default(),
             index_bits: 16,
+            rc_type: crate::raster::RcType::IV,
             background: [24, 24, 40],
         }
     }

@@ -44,6 +44,7 @@ pub fn record(name: &str, shading: Shading, width: u32, height: u32) -> Result<R
         front: if mesh.front_face == Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
         lighting: Default::default(),
         index_bits: 16,
+        rc_type: golden::raster::RcType::IV,
         background,
     };
     let mut chip = GoldenChipset::new(screen);

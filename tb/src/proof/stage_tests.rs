@@ -20,6 +20,7 @@ pub fn scene(name: &str, grid: u32, w: u32, h: u32) -> ProofScene {
         front: if mesh.front_face == golden::scene::Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
         lighting: golden::host::Lighting::default(),
         index_bits: 16,
+        rc_type: golden::raster::RcType::IV,
         background: [24, 24, 40],
     };
     scene_setup(&mesh, &opts).unwrap()

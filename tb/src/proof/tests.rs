@@ -187,6 +187,7 @@ fn scene_options(mesh: &golden::scene::Mesh, w: u32, h: u32) -> golden::render::
         front: if mesh.front_face == golden::scene::Winding::Cw { FrontFace::Cw } else { FrontFace::Ccw },
         lighting: golden::host::Lighting::default(),
         index_bits: 16,
+        rc_type: golden::raster::RcType::IV,
         background: [24, 24, 40],
     }
 }
