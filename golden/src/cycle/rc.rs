@@ -64,8 +64,8 @@
 //! passes; its result enters the result queue at the end of the cycle of its last candidate's
 //! z-test. The end-of-frame result is pushed after every earlier write has been performed.
 
-use crate::format::{Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND};
-use crate::raster::{setup, Culled, CullMode, FrontFace, Setup};
+use crate::format::{Plane, Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND};
+use crate::raster::{setup, Culled, CullMode, FrontFace, RcType, Setup};
 
 /// The setup pipeline's stages (docs/rc.md, "Setup"): `Det` determinant and bounding box; `Order`
 /// culling, canonical order, the edges' operands and the reciprocal's request; `Edges` edge start
@@ -83,6 +83,10 @@ pub const RECIP_LATENCY: usize = 10;
 pub const RECORD_QUEUE: usize = 4;
 /// Results the result queue holds (three: results leave at one per clock with `res_ready` high).
 pub const RESULT_QUEUE: usize = 3;
+/// Type III: the stages of the visibility test (F1 I-buffer word, F2 TdbV record, F3 compare and
+/// write), and its result queue, deep enough for a result per clock with three in flight.
+pub const TDBV_STAGES: usize = 3;
+pub const RESULT_QUEUE_III: usize = 5;
 /// Cycles from accepting a command to its record being offered to the traversal when nothing waits:
 /// a drawn triangle (the reciprocal, requested in S1's cycle, arrives in S5 RECIP_LATENCY cycles later;
 /// then S5's four cycles and S6's four), and any other command (one cycle in each stage).
@@ -179,6 +183,8 @@ pub struct RcInputs {
     pub z_rd_data: u32,
     /// The I-buffer word read with `z_re`/`z_rd_addr` (background: the Z word is stale).
     pub i_rd_data: u32,
+    /// Type III: the TdbV record (a depth plane) read one cycle after `tdbv_re`.
+    pub tdbv_rd_data: Plane,
 }
 
 /// The outputs of one cycle.
@@ -195,11 +201,47 @@ pub struct RcOutputs {
     pub i_we: bool,
     pub i_wr_addr: u32,
     pub i_wr_data: u32,
+    /// Type III: TdbV's read port (the index read from the I-buffer) and write port (a walked
+    /// triangle's depth plane at its index).
+    pub tdbv_re: bool,
+    pub tdbv_rd_addr: u32,
+    pub tdbv_we: bool,
+    pub tdbv_wr_addr: u32,
+    pub tdbv_wr_data: Plane,
 }
 
 impl RcOutputs {
-    /// The ports as (name, value) pairs, in a fixed order: what benches compare and print.
-    pub fn ports(&self) -> [(&'static str, u64); 15] {
+    /// The ports of the top of type `ty` as (name, value) pairs, in a fixed order: what benches
+    /// compare and print. Type III's I-buffer read is `z_re`/`z_rd_addr` here, named `i_re`/`i_rd_addr`.
+    pub fn ports(&self, ty: RcType) -> Vec<(&'static str, u64)> {
+        let bits = |v: i64, n: u32| (v as u64) & ((1u64 << n) - 1);
+        match ty {
+            RcType::IV => self.ports_iv().to_vec(),
+            RcType::III => vec![
+                ("cmd_ready", self.cmd_ready as u64),
+                ("res_valid", self.res_valid as u64),
+                ("res.eof", self.res.eof as u64),
+                ("res.index", self.res.index as u64),
+                ("res.culled", self.res.culled as u64),
+                ("res.zero_area", self.res.zero_area as u64),
+                ("res.visible", self.res.visible as u64),
+                ("i_re", self.z_re as u64),
+                ("i_rd_addr", self.z_rd_addr as u64),
+                ("tdbv_re", self.tdbv_re as u64),
+                ("tdbv_rd_addr", self.tdbv_rd_addr as u64),
+                ("tdbv_we", self.tdbv_we as u64),
+                ("tdbv_wr_addr", self.tdbv_wr_addr as u64),
+                ("tdbv_wr_a", bits(self.tdbv_wr_data.a, 40)),
+                ("tdbv_wr_b", bits(self.tdbv_wr_data.b, 40)),
+                ("tdbv_wr_c", bits(self.tdbv_wr_data.c, 56)),
+                ("i_we", self.i_we as u64),
+                ("i_wr_addr", self.i_wr_addr as u64),
+                ("i_wr_data", self.i_wr_data as u64),
+            ],
+        }
+    }
+
+    fn ports_iv(&self) -> [(&'static str, u64); 15] {
         [
             ("cmd_ready", self.cmd_ready as u64),
             ("res_valid", self.res_valid as u64),
@@ -264,12 +306,12 @@ struct SetupMoves {
     cmd_ready: bool,
 }
 
-/// A token entering the z-test stage.
+/// A token entering the z-test stage (Type III: the first of its three stages).
 #[derive(Copy, Clone, Debug, PartialEq)]
 enum Token {
     None,
     Clear { addr: u32 },
-    Frag { inside: bool, last: bool, addr: u32, z: u32, index: u32 },
+    Frag { inside: bool, last: bool, addr: u32, x: i32, y: i32, z: u32, index: u32 },
     Result(RcResult),
 }
 
@@ -342,9 +384,16 @@ pub struct RcModel {
     // traversal
     tstate: TravState,
     walking: Option<(u32, Setup)>,
-    // z-test stage
-    f1: Token,
-    fwd: Option<(u32, u32)>,
+    ty: RcType,
+    // z-test stage: Type IV F1 only; Type III F1, F2, F3
+    vis_pipe: [Token; TDBV_STAGES],
+    /// Type III: F2's token found its pixel owned (the I-buffer word was not the background), and F3's
+    /// old depth regenerated from the TdbV record in F2.
+    f2_owned: bool,
+    f3_old: u32,
+    /// The writes of the last cycles, newest first (address, depth): Type IV forwards the first, Type III
+    /// all three (the writes its I-buffer read cannot have seen).
+    hist: [Option<(u32, u32)>; TDBV_STAGES],
     vis: bool,
     // result queue, head first
     res: std::collections::VecDeque<RcResult>,
@@ -361,16 +410,24 @@ pub struct RcModel {
 }
 
 impl RcModel {
+    /// The Type IV RC (Z-buffer).
     pub fn new(screen: Screen) -> RcModel {
+        RcModel::of_type(screen, RcType::IV)
+    }
+
+    pub fn of_type(screen: Screen, ty: RcType) -> RcModel {
         RcModel {
+            ty,
             screen,
             stages: [None; SETUP_STAGES],
             recip: [false; RECIP_LATENCY],
             queue: std::collections::VecDeque::new(),
             tstate: TravState::Idle,
             walking: None,
-            f1: Token::None,
-            fwd: None,
+            vis_pipe: [Token::None; TDBV_STAGES],
+            f2_owned: false,
+            f3_old: DEPTH_MAX,
+            hist: [None; TDBV_STAGES],
             vis: false,
             res: std::collections::VecDeque::new(),
             cycle: 0,
@@ -392,7 +449,7 @@ impl RcModel {
             && !self.recip.iter().any(|&b| b)
             && self.queue.is_empty()
             && self.tstate == TravState::Idle
-            && self.f1 == Token::None
+            && self.in_flight().iter().all(|t| *t == Token::None)
             && self.res.is_empty()
     }
 
@@ -436,7 +493,7 @@ impl RcModel {
     /// The token the traversal issues this cycle and whether it takes the offered record, given this
     /// cycle's walk step.
     fn traversal(&self, walk: Option<WalkStep>) -> (Token, bool) {
-        let result_free = self.res.len() + (self.f1.pushes_result() as usize) < RESULT_QUEUE;
+        let result_free = self.res.len() + self.in_flight().iter().filter(|t| t.pushes_result()).count() < self.result_queue();
         match self.tstate {
             TravState::Clear { addr } => (Token::Clear { addr }, false),
             TravState::Walk { x, y } => {
@@ -449,8 +506,8 @@ impl RcModel {
                 // own (a triangle to walk, a frame start): no idle cycle between triangles.
                 let take = w.end && matches!(self.offered(), Some(Record::Walk { .. }) | Some(Record::Frame { .. }));
                 match (w.frag, w.end) {
-                    (Some(fx), last) => (Token::Frag { inside: true, last, addr: self.addr(fx, y), z: s.depth_at(fx, y), index }, take),
-                    (None, true) => (Token::Frag { inside: false, last: true, addr: self.addr(x, y), z: 0, index }, take),
+                    (Some(fx), last) => (Token::Frag { inside: true, last, addr: self.addr(fx, y), x: fx, y, z: s.depth_at(fx, y), index }, take),
+                    (None, true) => (Token::Frag { inside: false, last: true, addr: self.addr(x, y), x, y, z: 0, index }, take),
                     (None, false) => (Token::None, false),
                 }
             }
@@ -485,15 +542,39 @@ impl RcModel {
         }
     }
 
-    /// The z-test stage's decision this cycle: (write, pass).
+    /// The visibility test's stages holding tokens: Type IV's one, Type III's three.
+    fn in_flight(&self) -> &[Token] {
+        match self.ty {
+            RcType::IV => &self.vis_pipe[..1],
+            RcType::III => &self.vis_pipe[..],
+        }
+    }
+
+    fn result_queue(&self) -> usize {
+        match self.ty {
+            RcType::IV => RESULT_QUEUE,
+            RcType::III => RESULT_QUEUE_III,
+        }
+    }
+
+    /// The stage that decides and writes: Type IV's F1, Type III's F3.
+    fn deciding(&self) -> Token {
+        *self.in_flight().last().expect("at least one stage")
+    }
+
+    /// The decision this cycle: (write, pass). The old depth is, newest first, that of a write the
+    /// token's read cannot have seen (forwarding), else the memory's: Type IV the Z word (far where
+    /// the I-buffer word read with it is the background), Type III the depth regenerated in F2.
     fn z_test(&self, z_rd_data: u32, i_rd_data: u32) -> (Option<(u32, u32, u32)>, bool) {
-        match self.f1 {
+        let missed = &self.hist[..self.in_flight().len()];
+        match self.deciding() {
             Token::Clear { addr } => (Some((addr, DEPTH_MAX, INDEX_BACKGROUND)), false),
             Token::Frag { inside: true, addr, z, index, .. } => {
-                let old = match self.fwd {
-                    Some((a, d)) if a == addr => d,
-                    _ if i_rd_data == INDEX_BACKGROUND => DEPTH_MAX,
-                    _ => z_rd_data,
+                let old = match (missed.iter().flatten().find(|(a, _)| *a == addr), self.ty) {
+                    (Some(&(_, d)), _) => d,
+                    (None, RcType::III) => self.f3_old,
+                    (None, RcType::IV) if i_rd_data == INDEX_BACKGROUND => DEPTH_MAX,
+                    (None, RcType::IV) => z_rd_data,
                 };
                 if z < old {
                     (Some((addr, z, index)), true)
@@ -516,9 +597,21 @@ impl RcModel {
         let (write, pass) = self.z_test(inp.z_rd_data, inp.i_rd_data);
         let moves = self.setup_moves();
         self.record_queue_full_cycles += (self.queue.len() == RECORD_QUEUE) as u64;
-        self.result_queue_full_cycles += (self.res.len() == RESULT_QUEUE) as u64;
+        self.result_queue_full_cycles += (self.res.len() == self.result_queue()) as u64;
         self.recip_stall_cycles += !moves.recip_advance as u64;
         let mut out = RcOutputs { cmd_ready: moves.cmd_ready, ..RcOutputs::default() };
+        // Type III: F1 reads TdbV at the index the I-buffer returned (where it is not the background);
+        // a walked triangle's depth plane is written into TdbV in the cycle its record is taken.
+        let tdbv_read = match (self.ty, self.vis_pipe[0]) {
+            (RcType::III, Token::Frag { inside: true, .. }) if inp.i_rd_data != INDEX_BACKGROUND => Some(inp.i_rd_data),
+            _ => None,
+        };
+        if let Some(i) = tdbv_read {
+            (out.tdbv_re, out.tdbv_rd_addr) = (true, i);
+        }
+        if let (RcType::III, true, Some(Record::Walk { index, setup })) = (self.ty, take, self.offered()) {
+            (out.tdbv_we, out.tdbv_wr_addr, out.tdbv_wr_data) = (true, index, setup.depth);
+        }
         if let Some(&r) = self.res.front() {
             out.res_valid = true;
             out.res = r;
@@ -528,7 +621,9 @@ impl RcModel {
             out.z_rd_addr = addr;
         }
         if let Some((addr, z, i)) = write {
-            (out.z_we, out.z_wr_addr, out.z_wr_data) = (true, addr, z);
+            if self.ty == RcType::IV {
+                (out.z_we, out.z_wr_addr, out.z_wr_data) = (true, addr, z);
+            }
             (out.i_we, out.i_wr_addr, out.i_wr_data) = (true, addr, i);
         }
 
@@ -537,7 +632,7 @@ impl RcModel {
         if out.res_valid && inp.res_ready {
             self.res.pop_front();
         }
-        match self.f1 {
+        match self.deciding() {
             Token::Result(r) => self.res.push_back(r),
             Token::Frag { last: true, index, .. } => {
                 self.res.push_back(RcResult { index, visible: self.vis || pass, ..RcResult::default() });
@@ -546,8 +641,18 @@ impl RcModel {
             Token::Frag { .. } => self.vis |= pass,
             _ => {}
         }
-        self.fwd = write.map(|(a, z, _)| (a, z));
-        self.f1 = tok;
+        self.hist.rotate_right(1);
+        self.hist[0] = write.map(|(a, z, _)| (a, z));
+        if self.ty == RcType::III {
+            // F2 -> F3: the old depth from the TdbV record that arrived now (F2's pixel was owned).
+            self.f3_old = match self.vis_pipe[1] {
+                Token::Frag { inside: true, x, y, .. } if self.f2_owned => inp.tdbv_rd_data.eval_clamped(x as u32, y as u32, DEPTH_MAX as i64) as u32,
+                _ => DEPTH_MAX,
+            };
+            self.f2_owned = tdbv_read.is_some();
+        }
+        self.vis_pipe.rotate_right(1);
+        self.vis_pipe[0] = tok;
 
         // Traversal.
         let offered = self.offered();
@@ -635,7 +740,7 @@ mod tests {
         let (mut rd, mut ird) = (0u32, 0u32);
         for _ in 0..1_000_000u64 {
             let valid = next < cmds.len();
-            let inp = RcInputs { cmd_valid: valid, cmd: if valid { cmds[next] } else { RcCmd::idle() }, res_ready: true, z_rd_data: rd, i_rd_data: ird };
+            let inp = RcInputs { cmd_valid: valid, cmd: if valid { cmds[next] } else { RcCmd::idle() }, res_ready: true, z_rd_data: rd, i_rd_data: ird, tdbv_rd_data: Plane::default() };
             let o = m.step(&inp);
             if valid && o.cmd_ready {
                 next += 1;

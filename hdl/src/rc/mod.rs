@@ -25,8 +25,10 @@
 //! Timing: see `docs/rc.md` and `golden::cycle::rc`, the cycle-accurate model it is checked against.
 //! Index width: 16 bits (rust-hdl 0.46's `LogicStruct` cannot be generic, so the width is fixed).
 
+pub mod rc3;
 pub mod reciprocal;
 pub mod setup;
+pub mod tdbv_test;
 pub mod traversal;
 pub mod z_test;
 

@@ -87,6 +87,8 @@ pub struct SetupRec {
     pub a: Bits<40>,
     pub b: Bits<40>,
     pub raw: Bits<56>,
+    /// The depth plane's C (its value at pixel (0, 0)): Type III's TdbV record with a and b.
+    pub c: Bits<56>,
 }
 
 /// What S2..S6 carry beside a [`SetupRec`] to find the depth plane (not queued).
@@ -143,6 +145,7 @@ pub struct Setup {
     pub rec_raw: Signal<Out, Signed<56>>,
     pub rec_a: Signal<Out, Signed<40>>,
     pub rec_b: Signal<Out, Signed<40>>,
+    pub rec_c: Signal<Out, Signed<56>>,
 
     // Children
     recip: Reciprocal,
@@ -493,6 +496,7 @@ impl Setup {
             rec_raw: Default::default(),
             rec_a: Default::default(),
             rec_b: Default::default(),
+            rec_c: Default::default(),
             recip: Default::default(),
             mul_d0: Default::default(),
             mul_d1: Default::default(),
@@ -1252,6 +1256,7 @@ impl Logic for Setup {
         }
         self.pushed.next = self.s6.q.val();
         self.pushed.next.raw = unsigned_cast(self.raw_now.val());
+        self.pushed.next.c = unsigned_cast(self.p_c.q.val());
         self.q_len.d.next = self.q_after.val();
         if self.leave6.val() {
             self.q_len.d.next = self.q_after.val() + self.k1_3.val();
@@ -1291,6 +1296,7 @@ impl Logic for Setup {
         self.rec_raw.next = signed_cast(self.q0.q.val().raw);
         self.rec_a.next = signed_cast(self.q0.q.val().a);
         self.rec_b.next = signed_cast(self.q0.q.val().b);
+        self.rec_c.next = signed_cast(self.q0.q.val().c);
 
         // ---- The stages' registers at the edge, last first ----
         // S6: phase 0 the products of C's terms; 1 their sum and those of raw's; 2 C and raw's sum.

@@ -94,6 +94,9 @@ pub struct Traversal {
     pub tok_addr: Signal<Out, Bits<20>>,
     pub tok_z: Signal<Out, Bits<24>>,
     pub tok_index: Signal<Out, Bits<16>>,
+    /// The fragment's pixel (Type III regenerates the old depth there; Type IV leaves them unread).
+    pub tok_x: Signal<Out, Bits<10>>,
+    pub tok_y: Signal<Out, Bits<10>>,
     pub tok_eof: Signal<Out, Bit>,
     pub tok_culled: Signal<Out, Bit>,
     pub tok_zero_area: Signal<Out, Bit>,
@@ -195,6 +198,7 @@ pub struct Traversal {
     rounded_u: Signal<Local, Bits<56>>,
     depth: Signal<Local, Bits<24>>,
     faddr: Signal<Local, Bits<20>>,
+    fsel10: Signal<Local, Bits<10>>,
     load_walk: Signal<Local, Bit>,
     load_clear: Signal<Local, Bit>,
     rsx1_0: Signal<Local, Signed<36>>,
@@ -295,6 +299,8 @@ impl Traversal {
             tok_addr: Default::default(),
             tok_z: Default::default(),
             tok_index: Default::default(),
+            tok_x: Default::default(),
+            tok_y: Default::default(),
             tok_eof: Default::default(),
             tok_culled: Default::default(),
             tok_zero_area: Default::default(),
@@ -384,6 +390,7 @@ impl Traversal {
             rounded_u: Default::default(),
             depth: Default::default(),
             faddr: Default::default(),
+            fsel10: Default::default(),
             load_walk: Default::default(),
             load_clear: Default::default(),
             rsx1_0: Default::default(),
@@ -630,6 +637,9 @@ impl Logic for Traversal {
         self.tok_addr.next = self.k0_20.val();
         self.tok_z.next = self.k0_24.val();
         self.tok_index.next = self.index.q.val();
+        self.fsel10.next = bit_cast::<10, 2>(self.fsel.val());
+        self.tok_x.next = self.k0_10.val();
+        self.tok_y.next = self.k0_10.val();
         self.tok_eof.next = false;
         self.tok_culled.next = false;
         self.tok_zero_area.next = false;
@@ -665,6 +675,8 @@ impl Logic for Traversal {
                         self.tok_covered.next = self.has_frag.val();
                         self.tok_last.next = self.walk_end.val();
                         self.tok_addr.next = self.faddr.val();
+                        self.tok_x.next = self.x.q.val() + self.fsel10.val();
+                        self.tok_y.next = self.y.q.val();
                     }
                     if self.has_frag.val() {
                         self.tok_z.next = self.depth.val();

@@ -38,7 +38,10 @@ impl VectorWriter {
         Ok(VectorWriter { out: BufWriter::new(f), path, cycles: 0 })
     }
 
-    pub fn cycle(&mut self, inp: &RcInputs, exp: &RcOutputs) -> Result<(), String> {
+    pub fn cycle(&mut self, ty: golden::raster::RcType, inp: &RcInputs, exp: &RcOutputs) -> Result<(), String> {
+        if ty != golden::raster::RcType::IV {
+            return Err("the rc replay records the Type IV top's ports; rc3 records through super::replay3".into());
+        }
         let cmd: Bits<{ RcCommand::BITS }> = command_word(&inp.cmd).into();
         let res = RcResult {
             eof: exp.res.eof,

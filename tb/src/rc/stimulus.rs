@@ -172,7 +172,13 @@ pub struct Reference {
 }
 
 pub fn reference(screen: Screen, cmds: &[RcCmd]) -> Reference {
-    let mut r = Rasterizer::new(screen);
+    reference_of(golden::raster::RcType::IV, screen, cmds)
+}
+
+/// [`reference`] for the RC of type `ty`; its `zbuf` is the depth of every pixel (Type III: regenerated
+/// from TdbV).
+pub fn reference_of(ty: golden::raster::RcType, screen: Screen, cmds: &[RcCmd]) -> Reference {
+    let mut r = Rasterizer::of_type(screen, ty);
     let mut results = Vec::new();
     for c in cmds {
         match c.kind {
@@ -194,7 +200,7 @@ pub fn reference(screen: Screen, cmds: &[RcCmd]) -> Reference {
             CmdKind::EndOfFrame => results.push(RcResult { eof: true, ..RcResult::default() }),
         }
     }
-    Reference { zbuf: r.zbuf.clone(), ibuf: r.ibuf.clone(), results, rast: r }
+    Reference { zbuf: r.depths(), ibuf: r.ibuf.clone(), results, rast: r }
 }
 
 /// Cleared buffers, as the reference starts.

@@ -1,0 +1,473 @@
+//! `tdbv_test`: Type III's visibility test (seed 000 §II, Type III): no Z-buffer; the old depth of a
+//! pixel is regenerated from TdbV, the depth plane of the triangle whose index the I-buffer holds,
+//! evaluated at the pixel. Three stages and a result queue of five.
+//!
+//! ```text
+//!              F1                      F2                         F3
+//!  tok_* --> | token  |--------->  | token, owned |-------->  | token, owned, A*X, B*Y, C |
+//!  i_rd_data-+-> tdbv_re = covered  tdbv_rd_a/b/c -> A*X, B*Y  | old = newest of the last    |--> i_we, i_wr_*
+//!            |   & index != 0;      (40x11 products)           |  three writes to the pixel, |--> result (valid/ready)
+//!            |   tdbv_rd_addr =                                |  else owned ? clamp(round(  |--> result_free
+//!            |   index                                         |  C + A*X + B*Y)) : far      |
+//!                                                              | pass = covered & z < old    |
+//! ```
+//!
+//! A fragment issued by the traversal in cycle t (with its I-buffer read) is in F1 in t+1, when the
+//! I-buffer word arrives; F1 reads TdbV at that index (not at the background index 0: the pixel is
+//! free and its old depth is far). In t+2 the record arrives in F2, which forms the products A*X and
+//! B*Y. In t+3 F3 regenerates the old depth `clamp(round((C + A*X + B*Y) / 2^16))`, exactly the value
+//! the traversal stepped to when the owner was drawn (the same integers: `raw = C + A*X + B*Y`), so
+//! Type III decides as Type IV does.
+//!
+//! Hazards: the I-buffer read of cycle t returns the word before the writes of t, t+1 and t+2 (all
+//! made by F3). F3 keeps those three writes (address, depth written) and takes the newest one to the
+//! same pixel instead of the regenerated depth: a fragment right behind another on the same pixel
+//! (same triangle or the next, no gap) sees its depth without a stall. A TdbV record cannot be in
+//! flight when it is read: it is written in the cycle the traversal takes the triangle, before the
+//! triangle's first fragment, and an index reaches the I-buffer only through such a fragment.
+//! A clear token writes the background index (its depth counts as far). Every output is 0 when its
+//! enable or valid is low.
+
+use super::traversal::{TOK_CLEAR, TOK_FRAG, TOK_RESULT};
+use super::RcResult;
+use crate::common::{signed_bit_cast_safe, MulS, StreamOut};
+use rust_hdl::prelude::*;
+
+/// Results the queue holds: with three tokens in flight, five sustain one result per clock.
+pub const RESULT_QUEUE_III: u64 = 5;
+
+#[derive(LogicBlock)]
+pub struct TdbvTest {
+    pub clock: Signal<In, Clock>,
+    // From the traversal
+    pub tok_kind: Signal<In, Bits<2>>,
+    pub tok_covered: Signal<In, Bit>,
+    pub tok_last: Signal<In, Bit>,
+    pub tok_addr: Signal<In, Bits<20>>,
+    pub tok_x: Signal<In, Bits<10>>,
+    pub tok_y: Signal<In, Bits<10>>,
+    pub tok_z: Signal<In, Bits<24>>,
+    pub tok_index: Signal<In, Bits<16>>,
+    pub tok_eof: Signal<In, Bit>,
+    pub tok_culled: Signal<In, Bit>,
+    pub tok_zero_area: Signal<In, Bit>,
+    // To the traversal
+    /// A result token issued this cycle will find room in the result queue.
+    pub result_free: Signal<Out, Bit>,
+    // From the I-buffer: the index at the fragment's pixel, read one cycle earlier.
+    pub i_rd_data: Signal<In, Bits<16>>,
+    // TdbV read port: the stored index's depth plane, one cycle after the read.
+    pub tdbv_re: Signal<Out, Bit>,
+    pub tdbv_rd_addr: Signal<Out, Bits<16>>,
+    pub tdbv_rd_a: Signal<In, Signed<40>>,
+    pub tdbv_rd_b: Signal<In, Signed<40>>,
+    pub tdbv_rd_c: Signal<In, Signed<56>>,
+    // To the I-buffer
+    pub i_we: Signal<Out, Bit>,
+    pub i_wr_addr: Signal<Out, Bits<20>>,
+    pub i_wr_data: Signal<Out, Bits<16>>,
+    // To the result port
+    pub result: StreamOut<RcResult>,
+
+    f1_kind: DFF<Bits<2>>,
+    f1_covered: DFF<Bit>,
+    f1_last: DFF<Bit>,
+    f1_addr: DFF<Bits<20>>,
+    f1_x: DFF<Bits<10>>,
+    f1_y: DFF<Bits<10>>,
+    f1_z: DFF<Bits<24>>,
+    f1_index: DFF<Bits<16>>,
+    f1_eof: DFF<Bit>,
+    f1_culled: DFF<Bit>,
+    f1_zero_area: DFF<Bit>,
+    f2_kind: DFF<Bits<2>>,
+    f2_covered: DFF<Bit>,
+    f2_last: DFF<Bit>,
+    f2_addr: DFF<Bits<20>>,
+    f2_x: DFF<Bits<10>>,
+    f2_y: DFF<Bits<10>>,
+    f2_z: DFF<Bits<24>>,
+    f2_index: DFF<Bits<16>>,
+    f2_eof: DFF<Bit>,
+    f2_culled: DFF<Bit>,
+    f2_zero_area: DFF<Bit>,
+    f2_owned: DFF<Bit>,
+    f3_kind: DFF<Bits<2>>,
+    f3_covered: DFF<Bit>,
+    f3_last: DFF<Bit>,
+    f3_addr: DFF<Bits<20>>,
+    f3_z: DFF<Bits<24>>,
+    f3_index: DFF<Bits<16>>,
+    f3_eof: DFF<Bit>,
+    f3_culled: DFF<Bit>,
+    f3_zero_area: DFF<Bit>,
+    f3_owned: DFF<Bit>,
+    f3_ax: DFF<Signed<51>>,
+    f3_by: DFF<Signed<51>>,
+    f3_c: DFF<Signed<56>>,
+    /// The last three writes, newest first: valid, address, depth written.
+    h1_v: DFF<Bit>,
+    h1_addr: DFF<Bits<20>>,
+    h1_z: DFF<Bits<24>>,
+    h2_v: DFF<Bit>,
+    h2_addr: DFF<Bits<20>>,
+    h2_z: DFF<Bits<24>>,
+    h3_v: DFF<Bit>,
+    h3_addr: DFF<Bits<20>>,
+    h3_z: DFF<Bits<24>>,
+    visible: DFF<Bit>,
+    /// The result queue, head first, and its length.
+    r0: DFF<RcResult>,
+    r1: DFF<RcResult>,
+    r2: DFF<RcResult>,
+    r3: DFF<RcResult>,
+    r4: DFF<RcResult>,
+    r_len: DFF<Bits<3>>,
+
+    mul_ax: MulS<40, 11, 51>,
+    mul_by: MulS<40, 11, 51>,
+    x11: Signal<Local, Bits<11>>,
+    y11: Signal<Local, Bits<11>>,
+    ax56: Signal<Local, Signed<56>>,
+    by56: Signal<Local, Signed<56>>,
+    raw_ab: Signal<Local, Signed<56>>,
+    raw_c: Signal<Local, Signed<56>>,
+    rawh: Signal<Local, Signed<56>>,
+    rounded_u: Signal<Local, Bits<56>>,
+    plane_z: Signal<Local, Bits<24>>,
+    old_z: Signal<Local, Bits<24>>,
+    pass: Signal<Local, Bit>,
+    write_z: Signal<Local, Bits<24>>,
+    push1: Signal<Local, Bits<3>>,
+    push2: Signal<Local, Bits<3>>,
+    push3: Signal<Local, Bits<3>>,
+    pending: Signal<Local, Bits<3>>,
+    pushes: Signal<Local, Bit>,
+    r_pop: Signal<Local, Bit>,
+    r_after: Signal<Local, Bits<3>>,
+    r_new: Signal<Local, RcResult>,
+
+    depth_max: Constant<Bits<24>>,
+    half: Constant<Signed<56>>,
+    k0_24: Constant<Bits<24>>,
+    k0_20: Constant<Bits<20>>,
+    k0_16: Constant<Bits<16>>,
+    k0_15: Constant<Bits<15>>,
+    tok_clear: Constant<Bits<2>>,
+    tok_frag: Constant<Bits<2>>,
+    tok_result: Constant<Bits<2>>,
+    k0_3: Constant<Bits<3>>,
+    k1_3: Constant<Bits<3>>,
+    k2_3: Constant<Bits<3>>,
+    k3_3: Constant<Bits<3>>,
+    k4_3: Constant<Bits<3>>,
+    k5_3: Constant<Bits<3>>,
+}
+
+impl Default for TdbvTest {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            tok_kind: Default::default(),
+            tok_covered: Default::default(),
+            tok_last: Default::default(),
+            tok_addr: Default::default(),
+            tok_x: Default::default(),
+            tok_y: Default::default(),
+            tok_z: Default::default(),
+            tok_index: Default::default(),
+            tok_eof: Default::default(),
+            tok_culled: Default::default(),
+            tok_zero_area: Default::default(),
+            result_free: Default::default(),
+            i_rd_data: Default::default(),
+            tdbv_re: Default::default(),
+            tdbv_rd_addr: Default::default(),
+            tdbv_rd_a: Default::default(),
+            tdbv_rd_b: Default::default(),
+            tdbv_rd_c: Default::default(),
+            i_we: Default::default(),
+            i_wr_addr: Default::default(),
+            i_wr_data: Default::default(),
+            result: Default::default(),
+            f1_kind: Default::default(),
+            f1_covered: Default::default(),
+            f1_last: Default::default(),
+            f1_addr: Default::default(),
+            f1_x: Default::default(),
+            f1_y: Default::default(),
+            f1_z: Default::default(),
+            f1_index: Default::default(),
+            f1_eof: Default::default(),
+            f1_culled: Default::default(),
+            f1_zero_area: Default::default(),
+            f2_kind: Default::default(),
+            f2_covered: Default::default(),
+            f2_last: Default::default(),
+            f2_addr: Default::default(),
+            f2_x: Default::default(),
+            f2_y: Default::default(),
+            f2_z: Default::default(),
+            f2_index: Default::default(),
+            f2_eof: Default::default(),
+            f2_culled: Default::default(),
+            f2_zero_area: Default::default(),
+            f2_owned: Default::default(),
+            f3_kind: Default::default(),
+            f3_covered: Default::default(),
+            f3_last: Default::default(),
+            f3_addr: Default::default(),
+            f3_z: Default::default(),
+            f3_index: Default::default(),
+            f3_eof: Default::default(),
+            f3_culled: Default::default(),
+            f3_zero_area: Default::default(),
+            f3_owned: Default::default(),
+            f3_ax: Default::default(),
+            f3_by: Default::default(),
+            f3_c: Default::default(),
+            h1_v: Default::default(),
+            h1_addr: Default::default(),
+            h1_z: Default::default(),
+            h2_v: Default::default(),
+            h2_addr: Default::default(),
+            h2_z: Default::default(),
+            h3_v: Default::default(),
+            h3_addr: Default::default(),
+            h3_z: Default::default(),
+            visible: Default::default(),
+            r0: Default::default(),
+            r1: Default::default(),
+            r2: Default::default(),
+            r3: Default::default(),
+            r4: Default::default(),
+            r_len: Default::default(),
+            mul_ax: Default::default(),
+            mul_by: Default::default(),
+            x11: Default::default(),
+            y11: Default::default(),
+            ax56: Default::default(),
+            by56: Default::default(),
+            raw_ab: Default::default(),
+            raw_c: Default::default(),
+            rawh: Default::default(),
+            rounded_u: Default::default(),
+            plane_z: Default::default(),
+            old_z: Default::default(),
+            pass: Default::default(),
+            write_z: Default::default(),
+            push1: Default::default(),
+            push2: Default::default(),
+            push3: Default::default(),
+            pending: Default::default(),
+            pushes: Default::default(),
+            r_pop: Default::default(),
+            r_after: Default::default(),
+            r_new: Default::default(),
+            depth_max: Constant::new(((1u64 << 24) - 1).into()),
+            half: Constant::new((1i64 << 15).into()),
+            k0_24: Constant::new(0.into()),
+            k0_20: Constant::new(0.into()),
+            k0_16: Constant::new(0.into()),
+            k0_15: Constant::new(0.into()),
+            tok_clear: Constant::new(TOK_CLEAR.into()),
+            tok_frag: Constant::new(TOK_FRAG.into()),
+            tok_result: Constant::new(TOK_RESULT.into()),
+            k0_3: Constant::new(0.into()),
+            k1_3: Constant::new(1.into()),
+            k2_3: Constant::new(2.into()),
+            k3_3: Constant::new(3.into()),
+            k4_3: Constant::new(4.into()),
+            k5_3: Constant::new(RESULT_QUEUE_III.into()),
+        }
+    }
+}
+
+impl Logic for TdbvTest {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, f1_kind, f1_covered, f1_last, f1_addr, f1_x, f1_y, f1_z, f1_index, f1_eof, f1_culled, f1_zero_area, f2_kind,
+            f2_covered, f2_last, f2_addr, f2_x, f2_y, f2_z, f2_index, f2_eof, f2_culled, f2_zero_area, f2_owned, f3_kind, f3_covered,
+            f3_last, f3_addr, f3_z, f3_index, f3_eof, f3_culled, f3_zero_area, f3_owned, f3_ax, f3_by, f3_c, h1_v, h1_addr, h1_z,
+            h2_v, h2_addr, h2_z, h3_v, h3_addr, h3_z, visible, r0, r1, r2, r3, r4, r_len
+        );
+        // ---- F1 takes every token; it reads TdbV at the index the I-buffer returned ----
+        self.f1_kind.d.next = self.tok_kind.val();
+        self.f1_covered.d.next = self.tok_covered.val();
+        self.f1_last.d.next = self.tok_last.val();
+        self.f1_addr.d.next = self.tok_addr.val();
+        self.f1_x.d.next = self.tok_x.val();
+        self.f1_y.d.next = self.tok_y.val();
+        self.f1_z.d.next = self.tok_z.val();
+        self.f1_index.d.next = self.tok_index.val();
+        self.f1_eof.d.next = self.tok_eof.val();
+        self.f1_culled.d.next = self.tok_culled.val();
+        self.f1_zero_area.d.next = self.tok_zero_area.val();
+        self.tdbv_re.next = (self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_covered.q.val() & (self.i_rd_data.val() != self.k0_16.val());
+        self.tdbv_rd_addr.next = self.k0_16.val();
+        if self.tdbv_re.val() {
+            self.tdbv_rd_addr.next = self.i_rd_data.val();
+        }
+
+        // ---- F2: the record arrives; the products A*X and B*Y ----
+        self.f2_kind.d.next = self.f1_kind.q.val();
+        self.f2_covered.d.next = self.f1_covered.q.val();
+        self.f2_last.d.next = self.f1_last.q.val();
+        self.f2_addr.d.next = self.f1_addr.q.val();
+        self.f2_x.d.next = self.f1_x.q.val();
+        self.f2_y.d.next = self.f1_y.q.val();
+        self.f2_z.d.next = self.f1_z.q.val();
+        self.f2_index.d.next = self.f1_index.q.val();
+        self.f2_eof.d.next = self.f1_eof.q.val();
+        self.f2_culled.d.next = self.f1_culled.q.val();
+        self.f2_zero_area.d.next = self.f1_zero_area.q.val();
+        self.f2_owned.d.next = self.tdbv_re.val();
+        self.x11.next = bit_cast::<11, 10>(self.f2_x.q.val());
+        self.y11.next = bit_cast::<11, 10>(self.f2_y.q.val());
+        self.mul_ax.a.next = self.tdbv_rd_a.val();
+        self.mul_ax.b.next = signed_cast(self.x11.val());
+        self.mul_by.a.next = self.tdbv_rd_b.val();
+        self.mul_by.b.next = signed_cast(self.y11.val());
+
+        self.f3_kind.d.next = self.f2_kind.q.val();
+        self.f3_covered.d.next = self.f2_covered.q.val();
+        self.f3_last.d.next = self.f2_last.q.val();
+        self.f3_addr.d.next = self.f2_addr.q.val();
+        self.f3_z.d.next = self.f2_z.q.val();
+        self.f3_index.d.next = self.f2_index.q.val();
+        self.f3_eof.d.next = self.f2_eof.q.val();
+        self.f3_culled.d.next = self.f2_culled.q.val();
+        self.f3_zero_area.d.next = self.f2_zero_area.q.val();
+        self.f3_owned.d.next = self.f2_owned.q.val();
+        self.f3_ax.d.next = self.mul_ax.p.val();
+        self.f3_by.d.next = self.mul_by.p.val();
+        self.f3_c.d.next = self.tdbv_rd_c.val();
+
+        // ---- F3: the regenerated depth, the forwarding, the decision and the write ----
+        self.ax56.next = signed_bit_cast_safe::<56, 51>(self.f3_ax.q.val());
+        self.by56.next = signed_bit_cast_safe::<56, 51>(self.f3_by.q.val());
+        self.raw_ab.next = self.ax56.val() + self.by56.val();
+        self.raw_c.next = self.f3_c.q.val() + self.half.val();
+        self.rawh.next = self.raw_ab.val() + self.raw_c.val();
+        self.rounded_u.next = unsigned_cast(self.rawh.val());
+        self.plane_z.next = self.rounded_u.val().get_bits::<24>(16);
+        if self.rounded_u.val().get_bits::<15>(40) != self.k0_15.val() {
+            self.plane_z.next = self.depth_max.val();
+        }
+        if self.rawh.val().get_bit(55) {
+            self.plane_z.next = self.k0_24.val();
+        }
+        self.old_z.next = self.depth_max.val();
+        if self.f3_owned.q.val() {
+            self.old_z.next = self.plane_z.val();
+        }
+        // Newest last: the write of three cycles ago, two, one.
+        if self.h3_v.q.val() & (self.h3_addr.q.val() == self.f3_addr.q.val()) {
+            self.old_z.next = self.h3_z.q.val();
+        }
+        if self.h2_v.q.val() & (self.h2_addr.q.val() == self.f3_addr.q.val()) {
+            self.old_z.next = self.h2_z.q.val();
+        }
+        if self.h1_v.q.val() & (self.h1_addr.q.val() == self.f3_addr.q.val()) {
+            self.old_z.next = self.h1_z.q.val();
+        }
+        self.pass.next = (self.f3_kind.q.val() == self.tok_frag.val()) & self.f3_covered.q.val() & (self.f3_z.q.val() < self.old_z.val());
+        self.i_we.next = false;
+        self.i_wr_addr.next = self.k0_20.val();
+        self.i_wr_data.next = self.k0_16.val();
+        self.write_z.next = self.depth_max.val();
+        if self.pass.val() {
+            self.i_we.next = true;
+            self.i_wr_addr.next = self.f3_addr.q.val();
+            self.i_wr_data.next = self.f3_index.q.val();
+            self.write_z.next = self.f3_z.q.val();
+        }
+        if self.f3_kind.q.val() == self.tok_clear.val() {
+            self.i_we.next = true;
+            self.i_wr_addr.next = self.f3_addr.q.val();
+        }
+        self.h1_v.d.next = self.i_we.val();
+        self.h1_addr.d.next = self.i_wr_addr.val();
+        self.h1_z.d.next = self.write_z.val();
+        self.h2_v.d.next = self.h1_v.q.val();
+        self.h2_addr.d.next = self.h1_addr.q.val();
+        self.h2_z.d.next = self.h1_z.q.val();
+        self.h3_v.d.next = self.h2_v.q.val();
+        self.h3_addr.d.next = self.h2_addr.q.val();
+        self.h3_z.d.next = self.h2_z.q.val();
+
+        // ---- Results: a triangle's last fragment or a result token, from F3 ----
+        self.push1.next = self.k0_3.val();
+        if (self.f1_kind.q.val() == self.tok_result.val()) | ((self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_last.q.val()) {
+            self.push1.next = self.k1_3.val();
+        }
+        self.push2.next = self.k0_3.val();
+        if (self.f2_kind.q.val() == self.tok_result.val()) | ((self.f2_kind.q.val() == self.tok_frag.val()) & self.f2_last.q.val()) {
+            self.push2.next = self.k1_3.val();
+        }
+        self.push3.next = self.k0_3.val();
+        self.pushes.next = (self.f3_kind.q.val() == self.tok_result.val()) | ((self.f3_kind.q.val() == self.tok_frag.val()) & self.f3_last.q.val());
+        if self.pushes.val() {
+            self.push3.next = self.k1_3.val();
+        }
+        // Room for a result token issued now: the queue's length plus the results in flight below five.
+        self.pending.next = self.r_len.q.val() + self.push1.val() + self.push2.val() + self.push3.val();
+        self.result_free.next = self.pending.val() < self.k5_3.val();
+        if self.f3_kind.q.val() == self.tok_frag.val() {
+            self.visible.d.next = self.visible.q.val() | self.pass.val();
+            if self.f3_last.q.val() {
+                self.visible.d.next = false;
+            }
+        }
+        self.r_new.next.index = self.f3_index.q.val();
+        self.r_new.next.eof = self.f3_eof.q.val();
+        self.r_new.next.culled = self.f3_culled.q.val();
+        self.r_new.next.zero_area = self.f3_zero_area.q.val();
+        self.r_new.next.visible = false;
+        if self.f3_kind.q.val() == self.tok_frag.val() {
+            self.r_new.next.eof = false;
+            self.r_new.next.culled = false;
+            self.r_new.next.zero_area = false;
+            self.r_new.next.visible = self.visible.q.val() | self.pass.val();
+        }
+        // The queue: pop the head, then push behind what stays.
+        self.r_pop.next = (self.r_len.q.val() != self.k0_3.val()) & self.result.ready.val();
+        self.r_after.next = self.r_len.q.val();
+        if self.r_pop.val() {
+            self.r_after.next = self.r_len.q.val() - self.k1_3.val();
+            self.r0.d.next = self.r1.q.val();
+            self.r1.d.next = self.r2.q.val();
+            self.r2.d.next = self.r3.q.val();
+            self.r3.d.next = self.r4.q.val();
+        }
+        self.r_len.d.next = self.r_after.val();
+        if self.pushes.val() {
+            self.r_len.d.next = self.r_after.val() + self.k1_3.val();
+            if self.r_after.val() == self.k0_3.val() {
+                self.r0.d.next = self.r_new.val();
+            }
+            if self.r_after.val() == self.k1_3.val() {
+                self.r1.d.next = self.r_new.val();
+            }
+            if self.r_after.val() == self.k2_3.val() {
+                self.r2.d.next = self.r_new.val();
+            }
+            if self.r_after.val() == self.k3_3.val() {
+                self.r3.d.next = self.r_new.val();
+            }
+            if self.r_after.val() == self.k4_3.val() {
+                self.r4.d.next = self.r_new.val();
+            }
+        }
+        self.result.valid.next = self.r_len.q.val() != self.k0_3.val();
+        self.result.data.next = self.r0.q.val();
+        if self.r_len.q.val() == self.k0_3.val() {
+            self.result.data.next.index = self.k0_16.val();
+            self.result.data.next.eof = false;
+            self.result.data.next.culled = false;
+            self.result.data.next.zero_area = false;
+            self.result.data.next.visible = false;
+        }
+    }
+}
