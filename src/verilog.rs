@@ -80,7 +80,9 @@ pub fn parse_ports(verilog: &str, top: &str) -> Result<Vec<Port>, String> {
             continue;
         };
         // "wire  [189:0] cmd$data;" / "reg  z_re;"
-        let rest = dir.1.trim_start_matches("wire").trim_start_matches("reg").trim().trim_end_matches(';').trim();
+        // "wire signed [39:0] tdbv_rd_a;": a signed port's width reads the same way.
+        let rest = dir.1.trim_start_matches("wire").trim_start_matches("reg").trim();
+        let rest = rest.strip_prefix("signed").unwrap_or(rest).trim().trim_end_matches(';').trim();
         let (width, name) = if let Some(r) = rest.strip_prefix('[') {
             let (range, name) = r.split_once(']').ok_or_else(|| format!("{top}: cannot read the port declaration `{t}`"))?;
             let (hi, lo) = range.split_once(':').ok_or_else(|| format!("{top}: cannot read the range of `{t}`"))?;
@@ -223,6 +225,7 @@ fn known_struct(top: &str) -> Option<&'static str> {
         "proof_filter" => "FilterStage",
         "proof_filter2x2" => "Filter2x2Stage",
         "rc" => "Rc",
+        "rc3" => "Rc3",
         "colour_setup" => "ColourSetup",
         "cs" => "ColorShader",
         "chipset" => "Chipset",
@@ -289,6 +292,7 @@ pub fn verilog_facts(v: &str) -> VerilogFacts {
 fn memory_interface(top: &str) -> &'static str {
     match top {
         "rc" => "Z-buffer (W*H words x 24 bits, address `y*W + x`): read port `z_re`/`z_rd_addr` -> `z_rd_data`, write port `z_we`/`z_wr_addr`/`z_wr_data`. I-buffer (W*H x 16): write port `i_we`/`i_wr_addr`/`i_wr_data`, and `i_rd_data`, the index read with `z_re`/`z_rd_addr` (a background index makes the depth read with it count as far: no Z clear pass).",
+        "rc3" => "No Z-buffer. I-buffer (W*H x 16, address `y*W + x`): read port `i_re`/`i_rd_addr` -> `i_rd_data` one cycle later, write port `i_we`/`i_wr_addr`/`i_wr_data`. TdbV (2^16 records x 136 bits, address = triangle index, a depth plane: A 40 bits, B 40, C 56): read port `tdbv_re`/`tdbv_rd_addr` -> `tdbv_rd_a`/`_b`/`_c` one cycle later, write port `tdbv_we`/`tdbv_wr_addr`/`tdbv_wr_a`/`_b`/`_c`.",
         "cs" => "I-buffer (W*H x 16): read port `ibuf_read_enable`/`ibuf_read_address` -> `ibuf_read_data`, clear-behind write port `ibuf_write_*`. TdbS (2^16 x 424): read port `tdbs_read_enable`/`tdbs_read_address` -> `tdbs_read_data`. Z-buffer (W*H x 24): clear-behind write port `zbuf_write_*`.",
         "colour_setup" => "TdbS (2^16 words x 424 bits, address = triangle index): write port `tdbs_write_enable`/`tdbs_write_address`/`tdbs_write_data`.",
         "chipset" => "Z-buffer (W*H x 24, one bank, the RC's): `z_re`/`z_rd_addr` -> `z_rd_data`, `z_we`/`z_wr_addr`/`z_wr_data`. I-buffer (two banks of W*H x 16, address bit 20 = bank): draw side (the RC, bank `draw_bank`) `id_re`/`id_rd_addr` -> `id_rd_data` (read with the depth), `id_we`/`id_wr_addr`/`id_wr_data`; scan side (the CS, the other bank) `is_re`/`is_rd_addr` -> `is_rd_data`, `is_we`/`is_wr_addr`/`is_wr_data` (clear-behind). TdbS (two banks of 2^16 x 424, address bit 16 = bank): `t_we`/`t_wr_addr`/`t_wr_data` (colour setup, draw bank), `t_re`/`t_rd_addr` -> `t_rd_data` (the CS, scan bank). A scan start the CS takes swaps the banks.",

@@ -3,7 +3,8 @@
 //! Synthesizable RTL only; it does not depend on the golden model (Cargo enforces the separation,
 //! `tb/` joins the two). One block per file, a folder per unit:
 //! * [`common`]: the valid/ready stream interface, wide multipliers, block RAM, safe casts;
-//! * `rc/`: the Rasterizer Controller (seed 001 §3): setup, traversal, Z-test, I-buffer writes;
+//! * `rc/`: the Rasterizer Controller (seed 001 §3): setup, traversal, Z-test, I-buffer writes; and
+//!   its Type III form (seed 000), `rc3`, whose visibility test regenerates depth from TdbV;
 //! * `cs/`: colour setup and the Color Shader (seed 001 §2.3.2, §3.1);
 //! * `proof/`: PROOF's object processors, shading and filter stages (seed 002).
 //!
@@ -22,6 +23,7 @@ pub const TOPS: &[(&str, &str)] = &[
     ("proof_filter", "PROOF filter stage: 8x8 subpixel masks by the tree of multiples, 1x1 box, 1024-entry direction table, one entry per clock (seed 002 section 6)"),
     ("proof_filter2x2", "PROOF filter stage with the paper's 2x2-pixel filter area for a 320x200 screen: the same masks, quadrant sums, a streaming box with a 320-column line buffer, 1024-entry direction table, one entry per clock (seed 002 section 6)"),
     ("rc", "Rasterizer Controller for a 320x200 screen: setup, traversal, Z-test, Z/I-buffer ports"),
+    ("rc3", "Type III Rasterizer Controller for a 320x200 screen (seed 000): no Z-buffer, depth regenerated from TdbV; I-buffer and TdbV ports"),
     ("colour_setup", "Colour setup: 3 planes with one reciprocal per triangle, TdbS write port (seed 001 eqs. 6-7)"),
     ("chipset", "The raster chipset for 320x200: RC + colour setup + CS around Z/I-buffer and TdbS memory ports"),
     ("cs", "Color Shader: I-buffer + TdbS scan-out, 1 pixel/clock, AXI4-Stream video, clear-behind ports"),
@@ -35,6 +37,7 @@ pub fn verilog_top(block: &str) -> Result<String, String> {
         "proof_filter" => proof::verilog_filter("proof_filter", 10),
         "proof_filter2x2" => proof::verilog_filter2x2("proof_filter2x2", 10, 320, 200),
         "rc" => rc::verilog(320, 200),
+        "rc3" => rc::rc3::verilog(320, 200),
         "colour_setup" => cs::colour_setup_verilog(),
         "cs" => cs::color_shader_verilog(),
         "chipset" => chipset::verilog(320, 200),

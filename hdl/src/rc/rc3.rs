@@ -37,21 +37,27 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct Rc3 {
     pub clock: Signal<In, Clock>,
+    /// Commands (as `rc`'s).
     pub cmd: StreamIn<RcCommand>,
+    /// Per-triangle results and the end-of-frame marker (as `rc`'s).
     pub result: StreamOut<RcResult>,
-    // I-buffer
+    /// I-buffer read enable; `i_rd_data` holds the index at `i_rd_addr` in the next cycle.
     pub i_re: Signal<Out, Bit>,
     pub i_rd_addr: Signal<Out, Bits<20>>,
+    /// The index read in the previous cycle (0: the background, a free pixel).
     pub i_rd_data: Signal<In, Bits<16>>,
+    /// I-buffer write enable, address and triangle index, written at the rising edge.
     pub i_we: Signal<Out, Bit>,
     pub i_wr_addr: Signal<Out, Bits<20>>,
     pub i_wr_data: Signal<Out, Bits<16>>,
-    // TdbV
+    /// TdbV read enable and address (a triangle index); the record arrives in the next cycle.
     pub tdbv_re: Signal<Out, Bit>,
     pub tdbv_rd_addr: Signal<Out, Bits<16>>,
+    /// The TdbV record read in the previous cycle: the depth plane's A, B (40 bits) and C (56 bits).
     pub tdbv_rd_a: Signal<In, Signed<40>>,
     pub tdbv_rd_b: Signal<In, Signed<40>>,
     pub tdbv_rd_c: Signal<In, Signed<56>>,
+    /// TdbV write: a walked triangle's depth plane at its index, at the rising edge.
     pub tdbv_we: Signal<Out, Bit>,
     pub tdbv_wr_addr: Signal<Out, Bits<16>>,
     pub tdbv_wr_a: Signal<Out, Signed<40>>,

@@ -9,7 +9,7 @@
 
 use super::memory::Sram;
 use super::pack::command_word;
-use super::replay::VectorWriter;
+use super::replay::{RcVectors, VectorWriter};
 use crate::common::{vcd_path, vcd_wanted, Rng, Trace, Watchdog};
 use golden::cycle::rc::{CmdKind, RcCmd, RcInputs, RcModel, RcOutputs, RcResult};
 use golden::format::{Plane, Screen, DEPTH_MAX, INDEX_BACKGROUND};
@@ -304,7 +304,7 @@ fn run_inner(
     drive: Drive,
     vcd: Option<&PathBuf>,
     stop_after: Option<u64>,
-    mut vectors: Option<&mut VectorWriter>,
+    mut vectors: Option<&mut dyn RcVectors>,
     max_cycles: u64,
 ) -> Result<Run, Stop> {
     let mut rng = Rng::new(drive.seed);
@@ -418,11 +418,11 @@ fn regenerated_depths(screen: Screen, ibuf: &[u32], tdbv: &[Plane]) -> Vec<u32> 
 /// Run a command stream (which must end with an end-of-frame command) through the model alone,
 /// optionally recording the vectors for the Verilog replay.
 pub fn run_model(screen: Screen, cmds: &[RcCmd], drive: Drive, vectors: Option<&mut VectorWriter>) -> Result<Run, String> {
-    run_model_of(RcType::IV, screen, cmds, drive, vectors)
+    run_model_of(RcType::IV, screen, cmds, drive, vectors.map(|v| v as &mut dyn RcVectors))
 }
 
 /// [`run_model`] for the RC of type `ty`.
-pub fn run_model_of(ty: RcType, screen: Screen, cmds: &[RcCmd], drive: Drive, vectors: Option<&mut VectorWriter>) -> Result<Run, String> {
+pub fn run_model_of(ty: RcType, screen: Screen, cmds: &[RcCmd], drive: Drive, vectors: Option<&mut dyn RcVectors>) -> Result<Run, String> {
     check_stream(cmds)?;
     run_inner(Mode::ModelOnly, ty, screen, cmds, drive, None, None, vectors, cycle_budget(screen, cmds)).map_err(|s| match s {
         Stop::Error(e) => e,
@@ -433,11 +433,11 @@ pub fn run_model_of(ty: RcType, screen: Screen, cmds: &[RcCmd], drive: Drive, ve
 /// Run a command stream through the RTL and the model, comparing every port every cycle. `test` names
 /// the VCD (`target/vcd/rc/<test>.vcd`), written when `VCD=1` and always on a mismatch.
 pub fn run_rtl(test: &str, screen: Screen, cmds: &[RcCmd], drive: Drive, vectors: Option<&mut VectorWriter>) -> Result<Run, String> {
-    run_rtl_of(RcType::IV, test, screen, cmds, drive, vectors)
+    run_rtl_of(RcType::IV, test, screen, cmds, drive, vectors.map(|v| v as &mut dyn RcVectors))
 }
 
 /// [`run_rtl`] for the RC of type `ty` (`rc` or `rc3`).
-pub fn run_rtl_of(ty: RcType, test: &str, screen: Screen, cmds: &[RcCmd], drive: Drive, vectors: Option<&mut VectorWriter>) -> Result<Run, String> {
+pub fn run_rtl_of(ty: RcType, test: &str, screen: Screen, cmds: &[RcCmd], drive: Drive, vectors: Option<&mut dyn RcVectors>) -> Result<Run, String> {
     check_stream(cmds)?;
     let path = vcd_path("rc", test);
     let budget = cycle_budget(screen, cmds);

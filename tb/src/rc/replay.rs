@@ -167,3 +167,112 @@ pub fn replay_dumping(sim: Simulator, screen: Screen, vectors: &Path, vcd: Optio
         .ok_or_else(|| format!("{sim:?} replay of {}: no verdict in the output:\n{text}", vectors.display()))?;
     Ok(passed)
 }
+
+/// What a bench run records every cycle for a Verilog replay: [`VectorWriter`] (the `rc` top and its
+/// testbench with memory models) or [`Rc3Vectors`] (the `rc3` top, every port a column).
+pub trait RcVectors {
+    fn cycle(&mut self, ty: golden::raster::RcType, inp: &RcInputs, exp: &RcOutputs) -> Result<(), String>;
+}
+
+impl RcVectors for VectorWriter {
+    fn cycle(&mut self, ty: golden::raster::RcType, inp: &RcInputs, exp: &RcOutputs) -> Result<(), String> {
+        VectorWriter::cycle(self, ty, inp, exp)
+    }
+}
+
+/// The ports of the Type III top `rc3` in the order [`Rc3Vectors`] writes them. Its memories' read
+/// data are inputs like any other: the replay drives what the bench's memory models returned.
+pub fn rc3_ports() -> Vec<crate::proof::replay::Port> {
+    use crate::proof::replay::{inp, out};
+    vec![
+        inp("cmd$valid", 1),
+        inp("cmd$data", RcCommand::BITS),
+        inp("result$ready", 1),
+        inp("i_rd_data", 16),
+        inp("tdbv_rd_a", 40),
+        inp("tdbv_rd_b", 40),
+        inp("tdbv_rd_c", 56),
+        out("cmd$ready", 1, None),
+        out("result$valid", 1, None),
+        out("result$data", RcResult::BITS, None),
+        out("i_re", 1, None),
+        out("i_rd_addr", 20, None),
+        out("tdbv_re", 1, None),
+        out("tdbv_rd_addr", 16, None),
+        out("tdbv_we", 1, None),
+        out("tdbv_wr_addr", 16, None),
+        out("tdbv_wr_a", 40, None),
+        out("tdbv_wr_b", 40, None),
+        out("tdbv_wr_c", 56, None),
+        out("i_we", 1, None),
+        out("i_wr_addr", 20, None),
+        out("i_wr_data", 16, None),
+    ]
+}
+
+/// Records `rc3`'s ports every cycle (inputs, then the cycle model's outputs) for
+/// `crate::proof::replay::replay`, the replay generated from a port list.
+pub struct Rc3Vectors(pub crate::proof::replay::Recorder);
+
+impl Rc3Vectors {
+    pub fn create(path: PathBuf) -> Result<Rc3Vectors, String> {
+        Ok(Rc3Vectors(crate::proof::replay::Recorder::create(path, &rc3_ports())?))
+    }
+}
+
+impl RcVectors for Rc3Vectors {
+    fn cycle(&mut self, ty: golden::raster::RcType, inp: &RcInputs, exp: &RcOutputs) -> Result<(), String> {
+        if ty != golden::raster::RcType::III {
+            return Err("Rc3Vectors records the Type III top".into());
+        }
+        let hex = |v: i64, bits: usize| format!("{:0w$x}", (v as u64) & (u64::MAX >> (64 - bits)), w = bits.div_ceil(4));
+        let cmd: Bits<{ RcCommand::BITS }> = command_word(&inp.cmd).into();
+        let res = RcResult {
+            eof: exp.res.eof,
+            index: (exp.res.index as u64).into(),
+            culled: exp.res.culled,
+            zero_area: exp.res.zero_area,
+            visible: exp.res.visible,
+        };
+        let res: Bits<{ RcResult::BITS }> = res.into();
+        let t = inp.tdbv_rd_data;
+        let w = exp.tdbv_wr_data;
+        let row = vec![
+            hex(inp.cmd_valid as i64, 1),
+            hex_of(cmd),
+            hex(inp.res_ready as i64, 1),
+            hex(inp.i_rd_data as i64, 16),
+            hex(t.a, 40),
+            hex(t.b, 40),
+            hex(t.c, 56),
+            hex(exp.cmd_ready as i64, 1),
+            hex(exp.res_valid as i64, 1),
+            hex_of(res),
+            hex(exp.z_re as i64, 1),
+            hex(exp.z_rd_addr as i64, 20),
+            hex(exp.tdbv_re as i64, 1),
+            hex(exp.tdbv_rd_addr as i64, 16),
+            hex(exp.tdbv_we as i64, 1),
+            hex(exp.tdbv_wr_addr as i64, 16),
+            hex(w.a, 40),
+            hex(w.b, 40),
+            hex(w.c, 56),
+            hex(exp.i_we as i64, 1),
+            hex(exp.i_wr_addr as i64, 20),
+            hex(exp.i_wr_data as i64, 16),
+        ];
+        self.0.cycle(&row)
+    }
+}
+
+/// Replay `rc3`'s recorded vectors on its generated Verilog for `screen` under `sim`.
+pub fn replay_rc3(sim: Simulator, screen: Screen, vectors: &Path, cycles: u64) -> Result<String, String> {
+    let tag = format!("rc3_replay_{}x{}_{:?}", screen.width, screen.height, sim).to_lowercase();
+    let dir = scratch_dir(&tag);
+    let v = hdl::rc::rc3::verilog(screen.width, screen.height)?;
+    let sim = match sim {
+        Simulator::Icarus => "iverilog",
+        Simulator::Verilator => "verilator",
+    };
+    crate::proof::replay::replay(sim, &dir, "rc3", &rc3_ports(), &v, vectors, cycles)
+}
