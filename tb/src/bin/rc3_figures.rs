@@ -1,0 +1,71 @@
+//! Seed 000's Type III against Type IV at the RC, measured at the RTL's memory ports (RustHDL runs of
+//! `rc` and `rc3`, each checked against its cycle model in every cycle): words and bytes read and
+//! written per frame on every buffer, cycles, and the buffers' sizes, beside the analysis model's
+//! prediction for the same accesses (`golden::analysis::bandwidth`: F fragments, Zp passes, T
+//! triangles, Rv fragments on an owned pixel, from the untimed model). For docs/rc.md:
+//! `cargo run --release -p tb --bin rc3_figures`.
+//!
+//! Steady state: each frame is drawn without the RC's clear (the chipset clears the I-buffer behind
+//! the scan-out), so clears and scan-out reads are not in these counts.
+
+use golden::format::Screen;
+use golden::raster::RcType;
+use tb::rc::bench::{run_rtl_of, Drive};
+use tb::rc::stimulus::{frame, reference_of, scene_triangles};
+
+/// Bytes per entry: Z 24 bits, I 16 bits, a TdbV record (A 40 + B 40 + C 56 bits) 136 bits = 17 bytes.
+const Z_BYTES: u64 = 3;
+const I_BYTES: u64 = 2;
+const TDBV_BYTES: u64 = 17;
+
+fn main() {
+    if let Err(e) = run() {
+        eprintln!("error: {e}");
+        std::process::exit(1);
+    }
+}
+
+fn run() -> Result<(), String> {
+    let screen = Screen::new(320, 200)?;
+    let px = screen.pixels() as u64;
+    println!("| scene | type | cycles | Z read | Z write | I read | I write | TdbV read | TdbV write | bytes per frame | predicted (analysis) | buffers (bytes) |");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|");
+    for name in golden::scene::builtin::SCENES {
+        let tris = scene_triangles(name, golden::scene::builtin::TEAPOT_GRID, screen)?;
+        let cmds = frame(false, tris.clone());
+        for ty in [RcType::IV, RcType::III] {
+            let run = run_rtl_of(ty, &format!("rc3_figures_{name}_{}", ty.name()), screen, &cmds, Drive::ideal(), None)?;
+            let r = reference_of(ty, screen, &cmds);
+            if run.ibuf != r.ibuf {
+                return Err(format!("{name}: Type {} RTL frame differs from the algorithmic model", ty.name()));
+            }
+            let c = r.rast.counts;
+            // Words at the ports.
+            let (zr, zw) = match ty {
+                RcType::IV => (run.z_reads, run.z_passes),
+                RcType::III => (0, 0),
+            };
+            let (ir, iw, vr, vw) = (run.i_reads, run.i_writes, run.tdbv_reads, run.tdbv_writes);
+            let bytes = (zr + zw) * Z_BYTES + (ir + iw) * I_BYTES + (vr + vw) * TDBV_BYTES;
+            // The analysis model's rasterization accesses (bandwidth.rs, without clear and scan-out):
+            // IV: Z read F + write Zp, I write Zp (its entry beside Z, no read); III: I read F + write
+            // Zp, TdbV write T + read Rv.
+            let set_up = c.triangles - c.culled_facing - c.culled_zero_area;
+            let predicted = match ty {
+                RcType::IV => (c.fragments + c.z_passes) * Z_BYTES + c.z_passes * I_BYTES,
+                RcType::III => (c.fragments + c.z_passes) * I_BYTES + (set_up + c.traffic.tdbv_reads) * TDBV_BYTES,
+            };
+            let sizes = match ty {
+                RcType::IV => format!("Z {} + I {}", px * Z_BYTES, px * I_BYTES),
+                RcType::III => format!("I {} + TdbV {} ({} records)", px * I_BYTES, tris.len() as u64 * TDBV_BYTES, tris.len()),
+            };
+            println!(
+                "| {name} | {} | {} | {zr} | {zw} | {ir} | {iw} | {vr} (untimed {}) | {vw} | {bytes} | {predicted} | {sizes} |",
+                ty.name(),
+                run.cycles,
+                c.traffic.tdbv_reads
+            );
+        }
+    }
+    Ok(())
+}
