@@ -25,8 +25,10 @@
 //! Timing: see `docs/rc.md` and `golden::cycle::rc`, the cycle-accurate model it is checked against.
 //! Index width: 16 bits (rust-hdl 0.46's `LogicStruct` cannot be generic, so the width is fixed).
 
+pub mod front;
 pub mod rc3;
 pub mod reciprocal;
+pub mod result_queue;
 pub mod setup;
 pub mod tdbv_test;
 pub mod traversal;
@@ -34,8 +36,8 @@ pub mod z_test;
 
 use crate::common::{StreamIn, StreamOut};
 use rust_hdl::prelude::*;
-use setup::Setup;
-use traversal::{Traversal, TOK_FRAG};
+use front::RcFront;
+use traversal::TOK_FRAG;
 use z_test::ZTest;
 
 /// Command kinds (`RcCommand::kind`); 3 is reserved and acts as a frame start without clear.
@@ -116,8 +118,7 @@ pub struct Rc {
     /// depth): where it is the background index (0) the depth read with it counts as 2^24-1.
     pub i_rd_data: Signal<In, Bits<16>>,
 
-    setup: Setup,
-    traversal: Traversal,
+    front: RcFront,
     z_test: ZTest,
     tok_frag: Constant<Bits<2>>,
     k0_20: Constant<Bits<20>>,
@@ -143,8 +144,7 @@ impl Rc {
             i_wr_addr: Default::default(),
             i_wr_data: Default::default(),
             i_rd_data: Default::default(),
-            setup: Setup::new(width, height),
-            traversal: Traversal::new(width, height),
+            front: RcFront::new(width, height),
             z_test: ZTest::default(),
             tok_frag: Constant::new(TOK_FRAG.into()),
             k0_20: Constant::new(0.into()),
@@ -155,53 +155,18 @@ impl Rc {
 impl Logic for Rc {
     #[hdl_gen]
     fn update(&mut self) {
-        clock!(self, clock, setup, traversal, z_test);
-        StreamIn::<RcCommand>::link(&mut self.cmd, &mut self.setup.cmd);
+        clock!(self, clock, front, z_test);
+        StreamIn::<RcCommand>::link(&mut self.cmd, &mut self.front.cmd);
         StreamOut::<RcResult>::link(&mut self.result, &mut self.z_test.result);
 
-        // setup -> traversal
-        self.traversal.rec_valid.next = self.setup.rec_valid.val();
-        self.setup.rec_ready.next = self.traversal.rec_ready.val();
-        self.traversal.rec_kind.next = self.setup.rec_kind.val();
-        self.traversal.rec_clear.next = self.setup.rec_clear.val();
-        self.traversal.rec_index.next = self.setup.rec_index.val();
-        self.traversal.rec_culled.next = self.setup.rec_culled.val();
-        self.traversal.rec_zero_area.next = self.setup.rec_zero_area.val();
-        self.traversal.rec_bx0.next = self.setup.rec_bx0.val();
-        self.traversal.rec_bx1.next = self.setup.rec_bx1.val();
-        self.traversal.rec_by0.next = self.setup.rec_by0.val();
-        self.traversal.rec_by1.next = self.setup.rec_by1.val();
-        self.traversal.rec_addr.next = self.setup.rec_addr.val();
-        self.traversal.rec_e0.next = self.setup.rec_e0.val();
-        self.traversal.rec_e1.next = self.setup.rec_e1.val();
-        self.traversal.rec_e2.next = self.setup.rec_e2.val();
-        self.traversal.rec_sx0.next = self.setup.rec_sx0.val();
-        self.traversal.rec_sx1.next = self.setup.rec_sx1.val();
-        self.traversal.rec_sx2.next = self.setup.rec_sx2.val();
-        self.traversal.rec_sy0.next = self.setup.rec_sy0.val();
-        self.traversal.rec_sy1.next = self.setup.rec_sy1.val();
-        self.traversal.rec_sy2.next = self.setup.rec_sy2.val();
-        self.traversal.rec_raw.next = self.setup.rec_raw.val();
-        self.traversal.rec_a.next = self.setup.rec_a.val();
-        self.traversal.rec_b.next = self.setup.rec_b.val();
-
-        // traversal -> z_test
-        self.z_test.tok_kind.next = self.traversal.tok_kind.val();
-        self.z_test.tok_covered.next = self.traversal.tok_covered.val();
-        self.z_test.tok_last.next = self.traversal.tok_last.val();
-        self.z_test.tok_addr.next = self.traversal.tok_addr.val();
-        self.z_test.tok_z.next = self.traversal.tok_z.val();
-        self.z_test.tok_index.next = self.traversal.tok_index.val();
-        self.z_test.tok_eof.next = self.traversal.tok_eof.val();
-        self.z_test.tok_culled.next = self.traversal.tok_culled.val();
-        self.z_test.tok_zero_area.next = self.traversal.tok_zero_area.val();
-        self.traversal.result_free.next = self.z_test.result_free.val();
+        self.z_test.tok.next = self.front.tok.val();
+        self.front.result_free.next = self.z_test.result_free.val();
 
         // Memory ports.
-        self.z_re.next = (self.traversal.tok_kind.val() == self.tok_frag.val()) & self.traversal.tok_covered.val();
+        self.z_re.next = (self.front.tok.val().kind == self.tok_frag.val()) & self.front.tok.val().covered;
         self.z_rd_addr.next = self.k0_20.val();
         if self.z_re.val() {
-            self.z_rd_addr.next = self.traversal.tok_addr.val();
+            self.z_rd_addr.next = self.front.tok.val().addr;
         }
         self.z_test.z_rd_data.next = self.z_rd_data.val();
         self.z_test.i_rd_data.next = self.i_rd_data.val();
@@ -238,7 +203,7 @@ mod tests {
     fn generated_verilog_names_every_module_after_rc() {
         let v = verilog(64, 48).unwrap();
         assert!(v.contains("module rc(clock,"));
-        assert!(v.contains("module rc$setup$recip("));
+        assert!(v.contains("module rc$front$setup$recip("));
         assert!(!v.contains("top$") && !v.contains("module top"));
     }
 }

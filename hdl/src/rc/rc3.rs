@@ -1,5 +1,5 @@
 //! `rc3`: the Rasterizer Controller of seed 000's Type III (index rendering without a Z-buffer). The
-//! setup and the traversal are the Type IV RC's (`rc`); the Z-test is replaced by [`TdbvTest`], which
+//! setup and the traversal are the Type IV RC's (`rc`), the same [`RcFront`]; the Z-test is replaced by [`TdbvTest`], which
 //! regenerates the old depth of a pixel from TdbV, the depth plane of the triangle the I-buffer names.
 //! The Verilog top module is `rc3`.
 //!
@@ -27,9 +27,9 @@
 //!
 //! Timing: `golden::cycle::rc` with `RcType::III` (docs/rc.md, "Type III").
 
-use super::setup::{Setup, REC_WALK};
+use super::front::RcFront;
 use super::tdbv_test::TdbvTest;
-use super::traversal::{Traversal, TOK_FRAG};
+use super::traversal::TOK_FRAG;
 use super::{RcCommand, RcResult};
 use crate::common::{StreamIn, StreamOut};
 use rust_hdl::prelude::*;
@@ -64,15 +64,10 @@ pub struct Rc3 {
     pub tdbv_wr_b: Signal<Out, Signed<40>>,
     pub tdbv_wr_c: Signal<Out, Signed<56>>,
 
-    setup: Setup,
-    traversal: Traversal,
+    front: RcFront,
     vis: TdbvTest,
     tok_frag: Constant<Bits<2>>,
-    rec_walk: Constant<Bits<2>>,
     k0_20: Constant<Bits<20>>,
-    k0_16: Constant<Bits<16>>,
-    ks0_40: Constant<Signed<40>>,
-    ks0_56: Constant<Signed<56>>,
 }
 
 impl Rc3 {
@@ -101,15 +96,10 @@ impl Rc3 {
             tdbv_wr_a: Default::default(),
             tdbv_wr_b: Default::default(),
             tdbv_wr_c: Default::default(),
-            setup: Setup::new(width, height),
-            traversal: Traversal::new(width, height),
+            front: RcFront::new(width, height),
             vis: TdbvTest::default(),
             tok_frag: Constant::new(TOK_FRAG.into()),
-            rec_walk: Constant::new(REC_WALK.into()),
             k0_20: Constant::new(0.into()),
-            k0_16: Constant::new(0.into()),
-            ks0_40: Constant::new(0i64.into()),
-            ks0_56: Constant::new(0i64.into()),
         })
     }
 }
@@ -117,68 +107,23 @@ impl Rc3 {
 impl Logic for Rc3 {
     #[hdl_gen]
     fn update(&mut self) {
-        clock!(self, clock, setup, traversal, vis);
-        StreamIn::<RcCommand>::link(&mut self.cmd, &mut self.setup.cmd);
+        clock!(self, clock, front, vis);
+        StreamIn::<RcCommand>::link(&mut self.cmd, &mut self.front.cmd);
         StreamOut::<RcResult>::link(&mut self.result, &mut self.vis.result);
 
-        // setup -> traversal
-        self.traversal.rec_valid.next = self.setup.rec_valid.val();
-        self.setup.rec_ready.next = self.traversal.rec_ready.val();
-        self.traversal.rec_kind.next = self.setup.rec_kind.val();
-        self.traversal.rec_clear.next = self.setup.rec_clear.val();
-        self.traversal.rec_index.next = self.setup.rec_index.val();
-        self.traversal.rec_culled.next = self.setup.rec_culled.val();
-        self.traversal.rec_zero_area.next = self.setup.rec_zero_area.val();
-        self.traversal.rec_bx0.next = self.setup.rec_bx0.val();
-        self.traversal.rec_bx1.next = self.setup.rec_bx1.val();
-        self.traversal.rec_by0.next = self.setup.rec_by0.val();
-        self.traversal.rec_by1.next = self.setup.rec_by1.val();
-        self.traversal.rec_addr.next = self.setup.rec_addr.val();
-        self.traversal.rec_e0.next = self.setup.rec_e0.val();
-        self.traversal.rec_e1.next = self.setup.rec_e1.val();
-        self.traversal.rec_e2.next = self.setup.rec_e2.val();
-        self.traversal.rec_sx0.next = self.setup.rec_sx0.val();
-        self.traversal.rec_sx1.next = self.setup.rec_sx1.val();
-        self.traversal.rec_sx2.next = self.setup.rec_sx2.val();
-        self.traversal.rec_sy0.next = self.setup.rec_sy0.val();
-        self.traversal.rec_sy1.next = self.setup.rec_sy1.val();
-        self.traversal.rec_sy2.next = self.setup.rec_sy2.val();
-        self.traversal.rec_raw.next = self.setup.rec_raw.val();
-        self.traversal.rec_a.next = self.setup.rec_a.val();
-        self.traversal.rec_b.next = self.setup.rec_b.val();
-
-        // TdbV write: a triangle's depth plane in the cycle the traversal takes it to walk.
-        self.tdbv_we.next = self.setup.rec_valid.val() & self.traversal.rec_ready.val() & (self.setup.rec_kind.val() == self.rec_walk.val());
-        self.tdbv_wr_addr.next = self.k0_16.val();
-        self.tdbv_wr_a.next = self.ks0_40.val();
-        self.tdbv_wr_b.next = self.ks0_40.val();
-        self.tdbv_wr_c.next = self.ks0_56.val();
-        if self.tdbv_we.val() {
-            self.tdbv_wr_addr.next = self.setup.rec_index.val();
-            self.tdbv_wr_a.next = self.setup.rec_a.val();
-            self.tdbv_wr_b.next = self.setup.rec_b.val();
-            self.tdbv_wr_c.next = self.setup.rec_c.val();
-        }
-
-        // traversal -> tdbv_test
-        self.vis.tok_kind.next = self.traversal.tok_kind.val();
-        self.vis.tok_covered.next = self.traversal.tok_covered.val();
-        self.vis.tok_last.next = self.traversal.tok_last.val();
-        self.vis.tok_addr.next = self.traversal.tok_addr.val();
-        self.vis.tok_x.next = self.traversal.tok_x.val();
-        self.vis.tok_y.next = self.traversal.tok_y.val();
-        self.vis.tok_z.next = self.traversal.tok_z.val();
-        self.vis.tok_index.next = self.traversal.tok_index.val();
-        self.vis.tok_eof.next = self.traversal.tok_eof.val();
-        self.vis.tok_culled.next = self.traversal.tok_culled.val();
-        self.vis.tok_zero_area.next = self.traversal.tok_zero_area.val();
-        self.traversal.result_free.next = self.vis.result_free.val();
+        self.vis.tok.next = self.front.tok.val();
+        self.front.result_free.next = self.vis.result_free.val();
+        self.tdbv_we.next = self.front.tdbv_we.val();
+        self.tdbv_wr_addr.next = self.front.tdbv_wr_addr.val();
+        self.tdbv_wr_a.next = self.front.tdbv_wr_a.val();
+        self.tdbv_wr_b.next = self.front.tdbv_wr_b.val();
+        self.tdbv_wr_c.next = self.front.tdbv_wr_c.val();
 
         // Memory ports.
-        self.i_re.next = (self.traversal.tok_kind.val() == self.tok_frag.val()) & self.traversal.tok_covered.val();
+        self.i_re.next = (self.front.tok.val().kind == self.tok_frag.val()) & self.front.tok.val().covered;
         self.i_rd_addr.next = self.k0_20.val();
         if self.i_re.val() {
-            self.i_rd_addr.next = self.traversal.tok_addr.val();
+            self.i_rd_addr.next = self.front.tok.val().addr;
         }
         self.vis.i_rd_data.next = self.i_rd_data.val();
         self.tdbv_re.next = self.vis.tdbv_re.val();

@@ -28,8 +28,9 @@
 //! A clear token writes the background index (its depth counts as far). Every output is 0 when its
 //! enable or valid is low.
 
-use super::traversal::{TOK_CLEAR, TOK_FRAG, TOK_RESULT};
+use super::traversal::{RcToken, TOK_CLEAR, TOK_FRAG, TOK_RESULT};
 use super::RcResult;
+use super::result_queue::ResultQueue;
 use crate::common::{signed_bit_cast_safe, MulS, StreamOut};
 use rust_hdl::prelude::*;
 
@@ -40,17 +41,7 @@ pub const RESULT_QUEUE_III: u64 = 5;
 pub struct TdbvTest {
     pub clock: Signal<In, Clock>,
     // From the traversal
-    pub tok_kind: Signal<In, Bits<2>>,
-    pub tok_covered: Signal<In, Bit>,
-    pub tok_last: Signal<In, Bit>,
-    pub tok_addr: Signal<In, Bits<20>>,
-    pub tok_x: Signal<In, Bits<10>>,
-    pub tok_y: Signal<In, Bits<10>>,
-    pub tok_z: Signal<In, Bits<24>>,
-    pub tok_index: Signal<In, Bits<16>>,
-    pub tok_eof: Signal<In, Bit>,
-    pub tok_culled: Signal<In, Bit>,
-    pub tok_zero_area: Signal<In, Bit>,
+    pub tok: Signal<In, RcToken>,
     // To the traversal
     /// A result token issued this cycle will find room in the result queue.
     pub result_free: Signal<Out, Bit>,
@@ -116,13 +107,7 @@ pub struct TdbvTest {
     h3_addr: DFF<Bits<20>>,
     h3_z: DFF<Bits<24>>,
     visible: DFF<Bit>,
-    /// The result queue, head first, and its length.
-    r0: DFF<RcResult>,
-    r1: DFF<RcResult>,
-    r2: DFF<RcResult>,
-    r3: DFF<RcResult>,
-    r4: DFF<RcResult>,
-    r_len: DFF<Bits<3>>,
+    queue: ResultQueue,
 
     mul_ax: MulS<40, 11, 51>,
     mul_by: MulS<40, 11, 51>,
@@ -143,8 +128,6 @@ pub struct TdbvTest {
     push3: Signal<Local, Bits<3>>,
     pending: Signal<Local, Bits<3>>,
     pushes: Signal<Local, Bit>,
-    r_pop: Signal<Local, Bit>,
-    r_after: Signal<Local, Bits<3>>,
     r_new: Signal<Local, RcResult>,
 
     depth_max: Constant<Bits<24>>,
@@ -168,17 +151,7 @@ impl Default for TdbvTest {
     fn default() -> Self {
         Self {
             clock: Default::default(),
-            tok_kind: Default::default(),
-            tok_covered: Default::default(),
-            tok_last: Default::default(),
-            tok_addr: Default::default(),
-            tok_x: Default::default(),
-            tok_y: Default::default(),
-            tok_z: Default::default(),
-            tok_index: Default::default(),
-            tok_eof: Default::default(),
-            tok_culled: Default::default(),
-            tok_zero_area: Default::default(),
+            tok: Default::default(),
             result_free: Default::default(),
             i_rd_data: Default::default(),
             tdbv_re: Default::default(),
@@ -236,12 +209,7 @@ impl Default for TdbvTest {
             h3_addr: Default::default(),
             h3_z: Default::default(),
             visible: Default::default(),
-            r0: Default::default(),
-            r1: Default::default(),
-            r2: Default::default(),
-            r3: Default::default(),
-            r4: Default::default(),
-            r_len: Default::default(),
+            queue: ResultQueue::new(),
             mul_ax: Default::default(),
             mul_by: Default::default(),
             x11: Default::default(),
@@ -261,8 +229,6 @@ impl Default for TdbvTest {
             push3: Default::default(),
             pending: Default::default(),
             pushes: Default::default(),
-            r_pop: Default::default(),
-            r_after: Default::default(),
             r_new: Default::default(),
             depth_max: Constant::new(((1u64 << 24) - 1).into()),
             half: Constant::new((1i64 << 15).into()),
@@ -290,20 +256,20 @@ impl Logic for TdbvTest {
             self, clock, f1_kind, f1_covered, f1_last, f1_addr, f1_x, f1_y, f1_z, f1_index, f1_eof, f1_culled, f1_zero_area, f2_kind,
             f2_covered, f2_last, f2_addr, f2_x, f2_y, f2_z, f2_index, f2_eof, f2_culled, f2_zero_area, f2_owned, f3_kind, f3_covered,
             f3_last, f3_addr, f3_z, f3_index, f3_eof, f3_culled, f3_zero_area, f3_owned, f3_ax, f3_by, f3_c, h1_v, h1_addr, h1_z,
-            h2_v, h2_addr, h2_z, h3_v, h3_addr, h3_z, visible, r0, r1, r2, r3, r4, r_len
+            h2_v, h2_addr, h2_z, h3_v, h3_addr, h3_z, visible
         );
         // ---- F1 takes every token; it reads TdbV at the index the I-buffer returned ----
-        self.f1_kind.d.next = self.tok_kind.val();
-        self.f1_covered.d.next = self.tok_covered.val();
-        self.f1_last.d.next = self.tok_last.val();
-        self.f1_addr.d.next = self.tok_addr.val();
-        self.f1_x.d.next = self.tok_x.val();
-        self.f1_y.d.next = self.tok_y.val();
-        self.f1_z.d.next = self.tok_z.val();
-        self.f1_index.d.next = self.tok_index.val();
-        self.f1_eof.d.next = self.tok_eof.val();
-        self.f1_culled.d.next = self.tok_culled.val();
-        self.f1_zero_area.d.next = self.tok_zero_area.val();
+        self.f1_kind.d.next = self.tok.val().kind;
+        self.f1_covered.d.next = self.tok.val().covered;
+        self.f1_last.d.next = self.tok.val().last;
+        self.f1_addr.d.next = self.tok.val().addr;
+        self.f1_x.d.next = self.tok.val().x;
+        self.f1_y.d.next = self.tok.val().y;
+        self.f1_z.d.next = self.tok.val().z;
+        self.f1_index.d.next = self.tok.val().index;
+        self.f1_eof.d.next = self.tok.val().eof;
+        self.f1_culled.d.next = self.tok.val().culled;
+        self.f1_zero_area.d.next = self.tok.val().zero_area;
         self.tdbv_re.next = (self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_covered.q.val() & (self.i_rd_data.val() != self.k0_16.val());
         self.tdbv_rd_addr.next = self.k0_16.val();
         if self.tdbv_re.val() {
@@ -412,7 +378,7 @@ impl Logic for TdbvTest {
             self.push3.next = self.k1_3.val();
         }
         // Room for a result token issued now: the queue's length plus the results in flight below five.
-        self.pending.next = self.r_len.q.val() + self.push1.val() + self.push2.val() + self.push3.val();
+        self.pending.next = self.queue.len.val() + self.push1.val() + self.push2.val() + self.push3.val();
         self.result_free.next = self.pending.val() < self.k5_3.val();
         if self.f3_kind.q.val() == self.tok_frag.val() {
             self.visible.d.next = self.visible.q.val() | self.pass.val();
@@ -431,43 +397,10 @@ impl Logic for TdbvTest {
             self.r_new.next.zero_area = false;
             self.r_new.next.visible = self.visible.q.val() | self.pass.val();
         }
-        // The queue: pop the head, then push behind what stays.
-        self.r_pop.next = (self.r_len.q.val() != self.k0_3.val()) & self.result.ready.val();
-        self.r_after.next = self.r_len.q.val();
-        if self.r_pop.val() {
-            self.r_after.next = self.r_len.q.val() - self.k1_3.val();
-            self.r0.d.next = self.r1.q.val();
-            self.r1.d.next = self.r2.q.val();
-            self.r2.d.next = self.r3.q.val();
-            self.r3.d.next = self.r4.q.val();
-        }
-        self.r_len.d.next = self.r_after.val();
-        if self.pushes.val() {
-            self.r_len.d.next = self.r_after.val() + self.k1_3.val();
-            if self.r_after.val() == self.k0_3.val() {
-                self.r0.d.next = self.r_new.val();
-            }
-            if self.r_after.val() == self.k1_3.val() {
-                self.r1.d.next = self.r_new.val();
-            }
-            if self.r_after.val() == self.k2_3.val() {
-                self.r2.d.next = self.r_new.val();
-            }
-            if self.r_after.val() == self.k3_3.val() {
-                self.r3.d.next = self.r_new.val();
-            }
-            if self.r_after.val() == self.k4_3.val() {
-                self.r4.d.next = self.r_new.val();
-            }
-        }
-        self.result.valid.next = self.r_len.q.val() != self.k0_3.val();
-        self.result.data.next = self.r0.q.val();
-        if self.r_len.q.val() == self.k0_3.val() {
-            self.result.data.next.index = self.k0_16.val();
-            self.result.data.next.eof = false;
-            self.result.data.next.culled = false;
-            self.result.data.next.zero_area = false;
-            self.result.data.next.visible = false;
-        }
+        // The result queue.
+        clock!(self, clock, queue);
+        self.queue.push.next = self.pushes.val();
+        self.queue.push_data.next = self.r_new.val();
+        StreamOut::<RcResult>::link(&mut self.result, &mut self.queue.result);
     }
 }

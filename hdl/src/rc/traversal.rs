@@ -47,6 +47,28 @@ pub const TOK_CLEAR: u64 = 1;
 pub const TOK_FRAG: u64 = 2;
 pub const TOK_RESULT: u64 = 3;
 
+/// What the traversal hands the visibility test each cycle: a clear, a fragment (or a walk's
+/// uncovered end) or a result, with the pixel's address, position and depth and the triangle's index.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct RcToken {
+    /// TOK_NONE, TOK_CLEAR, TOK_FRAG or TOK_RESULT.
+    pub kind: Bits<2>,
+    /// A fragment: the pixel's centre is inside (else the walk's uncovered end token).
+    pub covered: Bit,
+    /// The triangle's last token.
+    pub last: Bit,
+    pub addr: Bits<20>,
+    /// The pixel (Type III regenerates the old depth there; Type IV does not read them).
+    pub x: Bits<10>,
+    pub y: Bits<10>,
+    pub z: Bits<24>,
+    pub index: Bits<16>,
+    /// A result token: end of frame, culled, zero area.
+    pub eof: Bit,
+    pub culled: Bit,
+    pub zero_area: Bit,
+}
+
 #[derive(Copy, Clone, Debug, PartialEq, LogicState)]
 pub enum TravState {
     Idle,
@@ -88,18 +110,8 @@ pub struct Traversal {
     /// A result token issued now will find room in the result queue.
     pub result_free: Signal<In, Bit>,
     // To the z-test stage (and the Z read port)
-    pub tok_kind: Signal<Out, Bits<2>>,
-    pub tok_covered: Signal<Out, Bit>,
-    pub tok_last: Signal<Out, Bit>,
-    pub tok_addr: Signal<Out, Bits<20>>,
-    pub tok_z: Signal<Out, Bits<24>>,
-    pub tok_index: Signal<Out, Bits<16>>,
-    /// The fragment's pixel (Type III regenerates the old depth there; Type IV leaves them unread).
-    pub tok_x: Signal<Out, Bits<10>>,
-    pub tok_y: Signal<Out, Bits<10>>,
-    pub tok_eof: Signal<Out, Bit>,
-    pub tok_culled: Signal<Out, Bit>,
-    pub tok_zero_area: Signal<Out, Bit>,
+    /// The token issued this cycle (`TOK_NONE` when nothing is issued).
+    pub tok: Signal<Out, RcToken>,
 
     // Registers: the walk's position and increments; sxJ_K is J times edge K's x step, gaJ J times A;
     // nonpos K: edge K's x step is <= 0 (it never grows to the right).
@@ -293,17 +305,7 @@ impl Traversal {
             rec_b: Default::default(),
             rec_ready: Default::default(),
             result_free: Default::default(),
-            tok_kind: Default::default(),
-            tok_covered: Default::default(),
-            tok_last: Default::default(),
-            tok_addr: Default::default(),
-            tok_z: Default::default(),
-            tok_index: Default::default(),
-            tok_x: Default::default(),
-            tok_y: Default::default(),
-            tok_eof: Default::default(),
-            tok_culled: Default::default(),
-            tok_zero_area: Default::default(),
+            tok: Default::default(),
             state: Default::default(),
             x: Default::default(),
             y: Default::default(),
@@ -631,38 +633,38 @@ impl Logic for Traversal {
         self.rec_ready.next = false;
         self.load_walk.next = false;
         self.load_clear.next = false;
-        self.tok_kind.next = self.tok_none.val();
-        self.tok_covered.next = false;
-        self.tok_last.next = false;
-        self.tok_addr.next = self.k0_20.val();
-        self.tok_z.next = self.k0_24.val();
-        self.tok_index.next = self.index.q.val();
+        self.tok.next.kind = self.tok_none.val();
+        self.tok.next.covered = false;
+        self.tok.next.last = false;
+        self.tok.next.addr = self.k0_20.val();
+        self.tok.next.z = self.k0_24.val();
+        self.tok.next.index = self.index.q.val();
         self.fsel10.next = bit_cast::<10, 2>(self.fsel.val());
-        self.tok_x.next = self.k0_10.val();
-        self.tok_y.next = self.k0_10.val();
-        self.tok_eof.next = false;
-        self.tok_culled.next = false;
-        self.tok_zero_area.next = false;
+        self.tok.next.x = self.k0_10.val();
+        self.tok.next.y = self.k0_10.val();
+        self.tok.next.eof = false;
+        self.tok.next.culled = false;
+        self.tok.next.zero_area = false;
         match self.state.q.val() {
             TravState::Idle => {
-                self.tok_index.next = self.rec_index.val();
+                self.tok.next.index = self.rec_index.val();
                 if self.rec_valid.val() {
                     if (self.rec_kind.val() == self.rec_frame.val()) | (self.rec_kind.val() == self.rec_walk.val()) {
                         self.rec_ready.next = true;
                     } else if self.result_free.val() {
                         self.rec_ready.next = true;
-                        self.tok_kind.next = self.tok_result.val();
-                        self.tok_eof.next = self.rec_kind.val() == self.rec_eof.val();
-                        self.tok_culled.next = self.rec_culled.val();
-                        self.tok_zero_area.next = self.rec_zero_area.val();
+                        self.tok.next.kind = self.tok_result.val();
+                        self.tok.next.eof = self.rec_kind.val() == self.rec_eof.val();
+                        self.tok.next.culled = self.rec_culled.val();
+                        self.tok.next.zero_area = self.rec_zero_area.val();
                     }
                     self.load_clear.next = (self.rec_kind.val() == self.rec_frame.val()) & self.rec_clear.val();
                     self.load_walk.next = self.rec_kind.val() == self.rec_walk.val();
                 }
             }
             TravState::Clear => {
-                self.tok_kind.next = self.tok_clear.val();
-                self.tok_addr.next = self.addr.q.val();
+                self.tok.next.kind = self.tok_clear.val();
+                self.tok.next.addr = self.addr.q.val();
                 self.addr.d.next = self.addr.q.val() + self.k1_20.val();
                 if self.addr.q.val() == self.last_addr.val() {
                     self.state.d.next = TravState::Idle;
@@ -671,15 +673,15 @@ impl Logic for Traversal {
             TravState::Walk => {
                 if !self.walk_end.val() | self.result_free.val() {
                     if self.has_frag.val() | self.walk_end.val() {
-                        self.tok_kind.next = self.tok_frag.val();
-                        self.tok_covered.next = self.has_frag.val();
-                        self.tok_last.next = self.walk_end.val();
-                        self.tok_addr.next = self.faddr.val();
-                        self.tok_x.next = self.x.q.val() + self.fsel10.val();
-                        self.tok_y.next = self.y.q.val();
+                        self.tok.next.kind = self.tok_frag.val();
+                        self.tok.next.covered = self.has_frag.val();
+                        self.tok.next.last = self.walk_end.val();
+                        self.tok.next.addr = self.faddr.val();
+                        self.tok.next.x = self.x.q.val() + self.fsel10.val();
+                        self.tok.next.y = self.y.q.val();
                     }
                     if self.has_frag.val() {
-                        self.tok_z.next = self.depth.val();
+                        self.tok.next.z = self.depth.val();
                     }
                     if self.walk_end.val() {
                         self.state.d.next = TravState::Idle;

@@ -23,7 +23,8 @@
 //! token writes 2^24-1 and 0. Every output is 0 when its enable or valid is low.
 
 use super::RcResult;
-use super::traversal::{TOK_CLEAR, TOK_FRAG, TOK_RESULT};
+use super::traversal::{RcToken, TOK_CLEAR, TOK_FRAG, TOK_RESULT};
+use super::result_queue::ResultQueue;
 use crate::common::StreamOut;
 use rust_hdl::prelude::*;
 
@@ -31,15 +32,7 @@ use rust_hdl::prelude::*;
 pub struct ZTest {
     pub clock: Signal<In, Clock>,
     // From the traversal
-    pub tok_kind: Signal<In, Bits<2>>,
-    pub tok_covered: Signal<In, Bit>,
-    pub tok_last: Signal<In, Bit>,
-    pub tok_addr: Signal<In, Bits<20>>,
-    pub tok_z: Signal<In, Bits<24>>,
-    pub tok_index: Signal<In, Bits<16>>,
-    pub tok_eof: Signal<In, Bit>,
-    pub tok_culled: Signal<In, Bit>,
-    pub tok_zero_area: Signal<In, Bit>,
+    pub tok: Signal<In, RcToken>,
     // To the traversal
     /// A result token issued this cycle will find room in the result queue.
     pub result_free: Signal<Out, Bit>,
@@ -71,13 +64,7 @@ pub struct ZTest {
     fwd_addr: DFF<Bits<20>>,
     fwd_z: DFF<Bits<24>>,
     visible: DFF<Bit>,
-    /// The result queue, head first, and its length.
-    r0: DFF<RcResult>,
-    r1: DFF<RcResult>,
-    r2: DFF<RcResult>,
-    r_len: DFF<Bits<2>>,
-    r_pop: Signal<Local, Bit>,
-    r_after: Signal<Local, Bits<2>>,
+    queue: ResultQueue,
     r_new: Signal<Local, RcResult>,
 
     old_z: Signal<Local, Bits<24>>,
@@ -91,24 +78,14 @@ pub struct ZTest {
     tok_clear: Constant<Bits<2>>,
     tok_frag: Constant<Bits<2>>,
     tok_result: Constant<Bits<2>>,
-    k0_2: Constant<Bits<2>>,
-    k1_2: Constant<Bits<2>>,
-    k2_2: Constant<Bits<2>>,
+    k2_3: Constant<Bits<3>>,
 }
 
 impl Default for ZTest {
     fn default() -> Self {
         Self {
             clock: Default::default(),
-            tok_kind: Default::default(),
-            tok_covered: Default::default(),
-            tok_last: Default::default(),
-            tok_addr: Default::default(),
-            tok_z: Default::default(),
-            tok_index: Default::default(),
-            tok_eof: Default::default(),
-            tok_culled: Default::default(),
-            tok_zero_area: Default::default(),
+            tok: Default::default(),
             result_free: Default::default(),
             z_rd_data: Default::default(),
             i_rd_data: Default::default(),
@@ -132,16 +109,9 @@ impl Default for ZTest {
             fwd_addr: Default::default(),
             fwd_z: Default::default(),
             visible: Default::default(),
-            r0: Default::default(),
-            r1: Default::default(),
-            r2: Default::default(),
-            r_len: Default::default(),
-            r_pop: Default::default(),
-            r_after: Default::default(),
+            queue: ResultQueue::new(),
             r_new: Default::default(),
-            k0_2: Constant::new(0.into()),
-            k1_2: Constant::new(1.into()),
-            k2_2: Constant::new(2.into()),
+            k2_3: Constant::new(2.into()),
             old_z: Default::default(),
             pass: Default::default(),
             pushes: Default::default(),
@@ -161,18 +131,18 @@ impl Logic for ZTest {
     fn update(&mut self) {
         dff_setup!(
             self, clock, f1_kind, f1_covered, f1_last, f1_addr, f1_z, f1_index, f1_eof, f1_culled, f1_zero_area, fwd_valid,
-            fwd_addr, fwd_z, visible, r0, r1, r2, r_len
+            fwd_addr, fwd_z, visible
         );
         // F1 takes every token.
-        self.f1_kind.d.next = self.tok_kind.val();
-        self.f1_covered.d.next = self.tok_covered.val();
-        self.f1_last.d.next = self.tok_last.val();
-        self.f1_addr.d.next = self.tok_addr.val();
-        self.f1_z.d.next = self.tok_z.val();
-        self.f1_index.d.next = self.tok_index.val();
-        self.f1_eof.d.next = self.tok_eof.val();
-        self.f1_culled.d.next = self.tok_culled.val();
-        self.f1_zero_area.d.next = self.tok_zero_area.val();
+        self.f1_kind.d.next = self.tok.val().kind;
+        self.f1_covered.d.next = self.tok.val().covered;
+        self.f1_last.d.next = self.tok.val().last;
+        self.f1_addr.d.next = self.tok.val().addr;
+        self.f1_z.d.next = self.tok.val().z;
+        self.f1_index.d.next = self.tok.val().index;
+        self.f1_eof.d.next = self.tok.val().eof;
+        self.f1_culled.d.next = self.tok.val().culled;
+        self.f1_zero_area.d.next = self.tok.val().zero_area;
 
         // The Z-test with forwarding of last cycle's write. A pixel whose I-buffer word is the
         // background index has no depth of this frame: its Z word is stale and counts as far.
@@ -209,7 +179,7 @@ impl Logic for ZTest {
         self.pushes.next = (self.f1_kind.q.val() == self.tok_result.val())
             | ((self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_last.q.val());
         // Room for a result token issued now: the queue's length plus the result in F1 below three.
-        self.result_free.next = (self.r_len.q.val() < self.k2_2.val()) | ((self.r_len.q.val() == self.k2_2.val()) & !self.pushes.val());
+        self.result_free.next = (self.queue.len.val() < self.k2_3.val()) | ((self.queue.len.val() == self.k2_3.val()) & !self.pushes.val());
         if self.f1_kind.q.val() == self.tok_frag.val() {
             self.visible.d.next = self.visible.q.val() | self.pass.val();
             if self.f1_last.q.val() {
@@ -227,35 +197,10 @@ impl Logic for ZTest {
             self.r_new.next.zero_area = false;
             self.r_new.next.visible = self.visible.q.val() | self.pass.val();
         }
-        // The queue: pop the head, then push behind what stays.
-        self.r_pop.next = (self.r_len.q.val() != self.k0_2.val()) & self.result.ready.val();
-        self.r_after.next = self.r_len.q.val();
-        if self.r_pop.val() {
-            self.r_after.next = self.r_len.q.val() - self.k1_2.val();
-            self.r0.d.next = self.r1.q.val();
-            self.r1.d.next = self.r2.q.val();
-        }
-        self.r_len.d.next = self.r_after.val();
-        if self.pushes.val() {
-            self.r_len.d.next = self.r_after.val() + self.k1_2.val();
-            if self.r_after.val() == self.k0_2.val() {
-                self.r0.d.next = self.r_new.val();
-            }
-            if self.r_after.val() == self.k1_2.val() {
-                self.r1.d.next = self.r_new.val();
-            }
-            if self.r_after.val() == self.k2_2.val() {
-                self.r2.d.next = self.r_new.val();
-            }
-        }
-        self.result.valid.next = self.r_len.q.val() != self.k0_2.val();
-        self.result.data.next = self.r0.q.val();
-        if self.r_len.q.val() == self.k0_2.val() {
-            self.result.data.next.index = self.k0_16.val();
-            self.result.data.next.eof = false;
-            self.result.data.next.culled = false;
-            self.result.data.next.zero_area = false;
-            self.result.data.next.visible = false;
-        }
+        // The result queue.
+        clock!(self, clock, queue);
+        self.queue.push.next = self.pushes.val();
+        self.queue.push_data.next = self.r_new.val();
+        StreamOut::<RcResult>::link(&mut self.result, &mut self.queue.result);
     }
 }
