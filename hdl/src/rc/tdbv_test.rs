@@ -60,38 +60,11 @@ pub struct TdbvTest {
     // To the result port
     pub result: StreamOut<RcResult>,
 
-    f1_kind: DFF<Bits<2>>,
-    f1_covered: DFF<Bit>,
-    f1_last: DFF<Bit>,
-    f1_addr: DFF<Bits<20>>,
-    f1_x: DFF<Bits<10>>,
-    f1_y: DFF<Bits<10>>,
-    f1_z: DFF<Bits<24>>,
-    f1_index: DFF<Bits<16>>,
-    f1_eof: DFF<Bit>,
-    f1_culled: DFF<Bit>,
-    f1_zero_area: DFF<Bit>,
-    f2_kind: DFF<Bits<2>>,
-    f2_covered: DFF<Bit>,
-    f2_last: DFF<Bit>,
-    f2_addr: DFF<Bits<20>>,
-    f2_x: DFF<Bits<10>>,
-    f2_y: DFF<Bits<10>>,
-    f2_z: DFF<Bits<24>>,
-    f2_index: DFF<Bits<16>>,
-    f2_eof: DFF<Bit>,
-    f2_culled: DFF<Bit>,
-    f2_zero_area: DFF<Bit>,
+    /// The tokens in F1, F2, F3.
+    f1: DFF<RcToken>,
+    f2: DFF<RcToken>,
+    f3: DFF<RcToken>,
     f2_owned: DFF<Bit>,
-    f3_kind: DFF<Bits<2>>,
-    f3_covered: DFF<Bit>,
-    f3_last: DFF<Bit>,
-    f3_addr: DFF<Bits<20>>,
-    f3_z: DFF<Bits<24>>,
-    f3_index: DFF<Bits<16>>,
-    f3_eof: DFF<Bit>,
-    f3_culled: DFF<Bit>,
-    f3_zero_area: DFF<Bit>,
     f3_owned: DFF<Bit>,
     f3_ax: DFF<Signed<51>>,
     f3_by: DFF<Signed<51>>,
@@ -106,7 +79,6 @@ pub struct TdbvTest {
     h3_v: DFF<Bit>,
     h3_addr: DFF<Bits<20>>,
     h3_z: DFF<Bits<24>>,
-    visible: DFF<Bit>,
     queue: ResultQueue,
 
     mul_ax: MulS<40, 11, 51>,
@@ -127,8 +99,6 @@ pub struct TdbvTest {
     push2: Signal<Local, Bits<3>>,
     push3: Signal<Local, Bits<3>>,
     pending: Signal<Local, Bits<3>>,
-    pushes: Signal<Local, Bit>,
-    r_new: Signal<Local, RcResult>,
 
     depth_max: Constant<Bits<24>>,
     half: Constant<Signed<56>>,
@@ -141,9 +111,6 @@ pub struct TdbvTest {
     tok_result: Constant<Bits<2>>,
     k0_3: Constant<Bits<3>>,
     k1_3: Constant<Bits<3>>,
-    k2_3: Constant<Bits<3>>,
-    k3_3: Constant<Bits<3>>,
-    k4_3: Constant<Bits<3>>,
     k5_3: Constant<Bits<3>>,
 }
 
@@ -163,38 +130,10 @@ impl Default for TdbvTest {
             i_wr_addr: Default::default(),
             i_wr_data: Default::default(),
             result: Default::default(),
-            f1_kind: Default::default(),
-            f1_covered: Default::default(),
-            f1_last: Default::default(),
-            f1_addr: Default::default(),
-            f1_x: Default::default(),
-            f1_y: Default::default(),
-            f1_z: Default::default(),
-            f1_index: Default::default(),
-            f1_eof: Default::default(),
-            f1_culled: Default::default(),
-            f1_zero_area: Default::default(),
-            f2_kind: Default::default(),
-            f2_covered: Default::default(),
-            f2_last: Default::default(),
-            f2_addr: Default::default(),
-            f2_x: Default::default(),
-            f2_y: Default::default(),
-            f2_z: Default::default(),
-            f2_index: Default::default(),
-            f2_eof: Default::default(),
-            f2_culled: Default::default(),
-            f2_zero_area: Default::default(),
+            f1: Default::default(),
+            f2: Default::default(),
+            f3: Default::default(),
             f2_owned: Default::default(),
-            f3_kind: Default::default(),
-            f3_covered: Default::default(),
-            f3_last: Default::default(),
-            f3_addr: Default::default(),
-            f3_z: Default::default(),
-            f3_index: Default::default(),
-            f3_eof: Default::default(),
-            f3_culled: Default::default(),
-            f3_zero_area: Default::default(),
             f3_owned: Default::default(),
             f3_ax: Default::default(),
             f3_by: Default::default(),
@@ -208,7 +147,6 @@ impl Default for TdbvTest {
             h3_v: Default::default(),
             h3_addr: Default::default(),
             h3_z: Default::default(),
-            visible: Default::default(),
             queue: ResultQueue::new(),
             mul_ax: Default::default(),
             mul_by: Default::default(),
@@ -228,8 +166,6 @@ impl Default for TdbvTest {
             push2: Default::default(),
             push3: Default::default(),
             pending: Default::default(),
-            pushes: Default::default(),
-            r_new: Default::default(),
             depth_max: Constant::new(((1u64 << 24) - 1).into()),
             half: Constant::new((1i64 << 15).into()),
             k0_24: Constant::new(0.into()),
@@ -241,9 +177,6 @@ impl Default for TdbvTest {
             tok_result: Constant::new(TOK_RESULT.into()),
             k0_3: Constant::new(0.into()),
             k1_3: Constant::new(1.into()),
-            k2_3: Constant::new(2.into()),
-            k3_3: Constant::new(3.into()),
-            k4_3: Constant::new(4.into()),
             k5_3: Constant::new(RESULT_QUEUE_III.into()),
         }
     }
@@ -253,58 +186,29 @@ impl Logic for TdbvTest {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, f1_kind, f1_covered, f1_last, f1_addr, f1_x, f1_y, f1_z, f1_index, f1_eof, f1_culled, f1_zero_area, f2_kind,
-            f2_covered, f2_last, f2_addr, f2_x, f2_y, f2_z, f2_index, f2_eof, f2_culled, f2_zero_area, f2_owned, f3_kind, f3_covered,
-            f3_last, f3_addr, f3_z, f3_index, f3_eof, f3_culled, f3_zero_area, f3_owned, f3_ax, f3_by, f3_c, h1_v, h1_addr, h1_z,
-            h2_v, h2_addr, h2_z, h3_v, h3_addr, h3_z, visible
+            self, clock, f1, f2, f3, f2_owned,
+            f3_owned, f3_ax, f3_by, f3_c, h1_v, h1_addr, h1_z,
+            h2_v, h2_addr, h2_z, h3_v, h3_addr, h3_z
         );
         // ---- F1 takes every token; it reads TdbV at the index the I-buffer returned ----
-        self.f1_kind.d.next = self.tok.val().kind;
-        self.f1_covered.d.next = self.tok.val().covered;
-        self.f1_last.d.next = self.tok.val().last;
-        self.f1_addr.d.next = self.tok.val().addr;
-        self.f1_x.d.next = self.tok.val().x;
-        self.f1_y.d.next = self.tok.val().y;
-        self.f1_z.d.next = self.tok.val().z;
-        self.f1_index.d.next = self.tok.val().index;
-        self.f1_eof.d.next = self.tok.val().eof;
-        self.f1_culled.d.next = self.tok.val().culled;
-        self.f1_zero_area.d.next = self.tok.val().zero_area;
-        self.tdbv_re.next = (self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_covered.q.val() & (self.i_rd_data.val() != self.k0_16.val());
+        self.f1.d.next = self.tok.val();
+        self.tdbv_re.next = (self.f1.q.val().kind == self.tok_frag.val()) & self.f1.q.val().covered & (self.i_rd_data.val() != self.k0_16.val());
         self.tdbv_rd_addr.next = self.k0_16.val();
         if self.tdbv_re.val() {
             self.tdbv_rd_addr.next = self.i_rd_data.val();
         }
 
         // ---- F2: the record arrives; the products A*X and B*Y ----
-        self.f2_kind.d.next = self.f1_kind.q.val();
-        self.f2_covered.d.next = self.f1_covered.q.val();
-        self.f2_last.d.next = self.f1_last.q.val();
-        self.f2_addr.d.next = self.f1_addr.q.val();
-        self.f2_x.d.next = self.f1_x.q.val();
-        self.f2_y.d.next = self.f1_y.q.val();
-        self.f2_z.d.next = self.f1_z.q.val();
-        self.f2_index.d.next = self.f1_index.q.val();
-        self.f2_eof.d.next = self.f1_eof.q.val();
-        self.f2_culled.d.next = self.f1_culled.q.val();
-        self.f2_zero_area.d.next = self.f1_zero_area.q.val();
+        self.f2.d.next = self.f1.q.val();
         self.f2_owned.d.next = self.tdbv_re.val();
-        self.x11.next = bit_cast::<11, 10>(self.f2_x.q.val());
-        self.y11.next = bit_cast::<11, 10>(self.f2_y.q.val());
+        self.x11.next = bit_cast::<11, 10>(self.f2.q.val().x);
+        self.y11.next = bit_cast::<11, 10>(self.f2.q.val().y);
         self.mul_ax.a.next = self.tdbv_rd_a.val();
         self.mul_ax.b.next = signed_cast(self.x11.val());
         self.mul_by.a.next = self.tdbv_rd_b.val();
         self.mul_by.b.next = signed_cast(self.y11.val());
 
-        self.f3_kind.d.next = self.f2_kind.q.val();
-        self.f3_covered.d.next = self.f2_covered.q.val();
-        self.f3_last.d.next = self.f2_last.q.val();
-        self.f3_addr.d.next = self.f2_addr.q.val();
-        self.f3_z.d.next = self.f2_z.q.val();
-        self.f3_index.d.next = self.f2_index.q.val();
-        self.f3_eof.d.next = self.f2_eof.q.val();
-        self.f3_culled.d.next = self.f2_culled.q.val();
-        self.f3_zero_area.d.next = self.f2_zero_area.q.val();
+        self.f3.d.next = self.f2.q.val();
         self.f3_owned.d.next = self.f2_owned.q.val();
         self.f3_ax.d.next = self.mul_ax.p.val();
         self.f3_by.d.next = self.mul_by.p.val();
@@ -329,29 +233,29 @@ impl Logic for TdbvTest {
             self.old_z.next = self.plane_z.val();
         }
         // Newest last: the write of three cycles ago, two, one.
-        if self.h3_v.q.val() & (self.h3_addr.q.val() == self.f3_addr.q.val()) {
+        if self.h3_v.q.val() & (self.h3_addr.q.val() == self.f3.q.val().addr) {
             self.old_z.next = self.h3_z.q.val();
         }
-        if self.h2_v.q.val() & (self.h2_addr.q.val() == self.f3_addr.q.val()) {
+        if self.h2_v.q.val() & (self.h2_addr.q.val() == self.f3.q.val().addr) {
             self.old_z.next = self.h2_z.q.val();
         }
-        if self.h1_v.q.val() & (self.h1_addr.q.val() == self.f3_addr.q.val()) {
+        if self.h1_v.q.val() & (self.h1_addr.q.val() == self.f3.q.val().addr) {
             self.old_z.next = self.h1_z.q.val();
         }
-        self.pass.next = (self.f3_kind.q.val() == self.tok_frag.val()) & self.f3_covered.q.val() & (self.f3_z.q.val() < self.old_z.val());
+        self.pass.next = (self.f3.q.val().kind == self.tok_frag.val()) & self.f3.q.val().covered & (self.f3.q.val().z < self.old_z.val());
         self.i_we.next = false;
         self.i_wr_addr.next = self.k0_20.val();
         self.i_wr_data.next = self.k0_16.val();
         self.write_z.next = self.depth_max.val();
         if self.pass.val() {
             self.i_we.next = true;
-            self.i_wr_addr.next = self.f3_addr.q.val();
-            self.i_wr_data.next = self.f3_index.q.val();
-            self.write_z.next = self.f3_z.q.val();
+            self.i_wr_addr.next = self.f3.q.val().addr;
+            self.i_wr_data.next = self.f3.q.val().index;
+            self.write_z.next = self.f3.q.val().z;
         }
-        if self.f3_kind.q.val() == self.tok_clear.val() {
+        if self.f3.q.val().kind == self.tok_clear.val() {
             self.i_we.next = true;
-            self.i_wr_addr.next = self.f3_addr.q.val();
+            self.i_wr_addr.next = self.f3.q.val().addr;
         }
         self.h1_v.d.next = self.i_we.val();
         self.h1_addr.d.next = self.i_wr_addr.val();
@@ -365,42 +269,24 @@ impl Logic for TdbvTest {
 
         // ---- Results: a triangle's last fragment or a result token, from F3 ----
         self.push1.next = self.k0_3.val();
-        if (self.f1_kind.q.val() == self.tok_result.val()) | ((self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_last.q.val()) {
+        if (self.f1.q.val().kind == self.tok_result.val()) | ((self.f1.q.val().kind == self.tok_frag.val()) & self.f1.q.val().last) {
             self.push1.next = self.k1_3.val();
         }
         self.push2.next = self.k0_3.val();
-        if (self.f2_kind.q.val() == self.tok_result.val()) | ((self.f2_kind.q.val() == self.tok_frag.val()) & self.f2_last.q.val()) {
+        if (self.f2.q.val().kind == self.tok_result.val()) | ((self.f2.q.val().kind == self.tok_frag.val()) & self.f2.q.val().last) {
             self.push2.next = self.k1_3.val();
         }
         self.push3.next = self.k0_3.val();
-        self.pushes.next = (self.f3_kind.q.val() == self.tok_result.val()) | ((self.f3_kind.q.val() == self.tok_frag.val()) & self.f3_last.q.val());
-        if self.pushes.val() {
+        if self.queue.pushes.val() {
             self.push3.next = self.k1_3.val();
         }
         // Room for a result token issued now: the queue's length plus the results in flight below five.
         self.pending.next = self.queue.len.val() + self.push1.val() + self.push2.val() + self.push3.val();
         self.result_free.next = self.pending.val() < self.k5_3.val();
-        if self.f3_kind.q.val() == self.tok_frag.val() {
-            self.visible.d.next = self.visible.q.val() | self.pass.val();
-            if self.f3_last.q.val() {
-                self.visible.d.next = false;
-            }
-        }
-        self.r_new.next.index = self.f3_index.q.val();
-        self.r_new.next.eof = self.f3_eof.q.val();
-        self.r_new.next.culled = self.f3_culled.q.val();
-        self.r_new.next.zero_area = self.f3_zero_area.q.val();
-        self.r_new.next.visible = false;
-        if self.f3_kind.q.val() == self.tok_frag.val() {
-            self.r_new.next.eof = false;
-            self.r_new.next.culled = false;
-            self.r_new.next.zero_area = false;
-            self.r_new.next.visible = self.visible.q.val() | self.pass.val();
-        }
         // The result queue.
         clock!(self, clock, queue);
-        self.queue.push.next = self.pushes.val();
-        self.queue.push_data.next = self.r_new.val();
+        self.queue.tok.next = self.f3.q.val();
+        self.queue.pass.next = self.pass.val();
         StreamOut::<RcResult>::link(&mut self.result, &mut self.queue.result);
     }
 }

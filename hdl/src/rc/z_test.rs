@@ -23,7 +23,7 @@
 //! token writes 2^24-1 and 0. Every output is 0 when its enable or valid is low.
 
 use super::RcResult;
-use super::traversal::{RcToken, TOK_CLEAR, TOK_FRAG, TOK_RESULT};
+use super::traversal::{RcToken, TOK_CLEAR, TOK_FRAG};
 use super::result_queue::ResultQueue;
 use crate::common::StreamOut;
 use rust_hdl::prelude::*;
@@ -51,25 +51,15 @@ pub struct ZTest {
     // To the result port
     pub result: StreamOut<RcResult>,
 
-    f1_kind: DFF<Bits<2>>,
-    f1_covered: DFF<Bit>,
-    f1_last: DFF<Bit>,
-    f1_addr: DFF<Bits<20>>,
-    f1_z: DFF<Bits<24>>,
-    f1_index: DFF<Bits<16>>,
-    f1_eof: DFF<Bit>,
-    f1_culled: DFF<Bit>,
-    f1_zero_area: DFF<Bit>,
+    /// The token of the previous cycle (F1).
+    f1: DFF<RcToken>,
     fwd_valid: DFF<Bit>,
     fwd_addr: DFF<Bits<20>>,
     fwd_z: DFF<Bits<24>>,
-    visible: DFF<Bit>,
     queue: ResultQueue,
-    r_new: Signal<Local, RcResult>,
 
     old_z: Signal<Local, Bits<24>>,
     pass: Signal<Local, Bit>,
-    pushes: Signal<Local, Bit>,
 
     depth_max: Constant<Bits<24>>,
     k0_24: Constant<Bits<24>>,
@@ -77,7 +67,6 @@ pub struct ZTest {
     k0_16: Constant<Bits<16>>,
     tok_clear: Constant<Bits<2>>,
     tok_frag: Constant<Bits<2>>,
-    tok_result: Constant<Bits<2>>,
     k2_3: Constant<Bits<3>>,
 }
 
@@ -96,32 +85,20 @@ impl Default for ZTest {
             i_wr_addr: Default::default(),
             i_wr_data: Default::default(),
             result: Default::default(),
-            f1_kind: Default::default(),
-            f1_covered: Default::default(),
-            f1_last: Default::default(),
-            f1_addr: Default::default(),
-            f1_z: Default::default(),
-            f1_index: Default::default(),
-            f1_eof: Default::default(),
-            f1_culled: Default::default(),
-            f1_zero_area: Default::default(),
+            f1: Default::default(),
             fwd_valid: Default::default(),
             fwd_addr: Default::default(),
             fwd_z: Default::default(),
-            visible: Default::default(),
             queue: ResultQueue::new(),
-            r_new: Default::default(),
             k2_3: Constant::new(2.into()),
             old_z: Default::default(),
             pass: Default::default(),
-            pushes: Default::default(),
             depth_max: Constant::new(((1u64 << 24) - 1).into()),
             k0_24: Constant::new(0.into()),
             k0_20: Constant::new(0.into()),
             k0_16: Constant::new(0.into()),
             tok_clear: Constant::new(TOK_CLEAR.into()),
             tok_frag: Constant::new(TOK_FRAG.into()),
-            tok_result: Constant::new(TOK_RESULT.into()),
         }
     }
 }
@@ -130,19 +107,11 @@ impl Logic for ZTest {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, f1_kind, f1_covered, f1_last, f1_addr, f1_z, f1_index, f1_eof, f1_culled, f1_zero_area, fwd_valid,
-            fwd_addr, fwd_z, visible
+            self, clock, f1, fwd_valid,
+            fwd_addr, fwd_z
         );
         // F1 takes every token.
-        self.f1_kind.d.next = self.tok.val().kind;
-        self.f1_covered.d.next = self.tok.val().covered;
-        self.f1_last.d.next = self.tok.val().last;
-        self.f1_addr.d.next = self.tok.val().addr;
-        self.f1_z.d.next = self.tok.val().z;
-        self.f1_index.d.next = self.tok.val().index;
-        self.f1_eof.d.next = self.tok.val().eof;
-        self.f1_culled.d.next = self.tok.val().culled;
-        self.f1_zero_area.d.next = self.tok.val().zero_area;
+        self.f1.d.next = self.tok.val();
 
         // The Z-test with forwarding of last cycle's write. A pixel whose I-buffer word is the
         // background index has no depth of this frame: its Z word is stale and counts as far.
@@ -150,23 +119,23 @@ impl Logic for ZTest {
         if self.i_rd_data.val() == self.k0_16.val() {
             self.old_z.next = self.depth_max.val();
         }
-        if self.fwd_valid.q.val() & (self.fwd_addr.q.val() == self.f1_addr.q.val()) {
+        if self.fwd_valid.q.val() & (self.fwd_addr.q.val() == self.f1.q.val().addr) {
             self.old_z.next = self.fwd_z.q.val();
         }
-        self.pass.next = (self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_covered.q.val() & (self.f1_z.q.val() < self.old_z.val());
+        self.pass.next = (self.f1.q.val().kind == self.tok_frag.val()) & self.f1.q.val().covered & (self.f1.q.val().z < self.old_z.val());
         self.z_we.next = false;
         self.z_wr_addr.next = self.k0_20.val();
         self.z_wr_data.next = self.k0_24.val();
         self.i_wr_data.next = self.k0_16.val();
         if self.pass.val() {
             self.z_we.next = true;
-            self.z_wr_addr.next = self.f1_addr.q.val();
-            self.z_wr_data.next = self.f1_z.q.val();
-            self.i_wr_data.next = self.f1_index.q.val();
+            self.z_wr_addr.next = self.f1.q.val().addr;
+            self.z_wr_data.next = self.f1.q.val().z;
+            self.i_wr_data.next = self.f1.q.val().index;
         }
-        if self.f1_kind.q.val() == self.tok_clear.val() {
+        if self.f1.q.val().kind == self.tok_clear.val() {
             self.z_we.next = true;
-            self.z_wr_addr.next = self.f1_addr.q.val();
+            self.z_wr_addr.next = self.f1.q.val().addr;
             self.z_wr_data.next = self.depth_max.val();
         }
         self.i_we.next = self.z_we.val();
@@ -176,31 +145,12 @@ impl Logic for ZTest {
         self.fwd_z.d.next = self.z_wr_data.val();
 
         // Results: the last fragment of a triangle, or a result token.
-        self.pushes.next = (self.f1_kind.q.val() == self.tok_result.val())
-            | ((self.f1_kind.q.val() == self.tok_frag.val()) & self.f1_last.q.val());
         // Room for a result token issued now: the queue's length plus the result in F1 below three.
-        self.result_free.next = (self.queue.len.val() < self.k2_3.val()) | ((self.queue.len.val() == self.k2_3.val()) & !self.pushes.val());
-        if self.f1_kind.q.val() == self.tok_frag.val() {
-            self.visible.d.next = self.visible.q.val() | self.pass.val();
-            if self.f1_last.q.val() {
-                self.visible.d.next = false;
-            }
-        }
-        self.r_new.next.index = self.f1_index.q.val();
-        self.r_new.next.eof = self.f1_eof.q.val();
-        self.r_new.next.culled = self.f1_culled.q.val();
-        self.r_new.next.zero_area = self.f1_zero_area.q.val();
-        self.r_new.next.visible = false;
-        if self.f1_kind.q.val() == self.tok_frag.val() {
-            self.r_new.next.eof = false;
-            self.r_new.next.culled = false;
-            self.r_new.next.zero_area = false;
-            self.r_new.next.visible = self.visible.q.val() | self.pass.val();
-        }
+        self.result_free.next = (self.queue.len.val() < self.k2_3.val()) | ((self.queue.len.val() == self.k2_3.val()) & !self.queue.pushes.val());
         // The result queue.
         clock!(self, clock, queue);
-        self.queue.push.next = self.pushes.val();
-        self.queue.push_data.next = self.r_new.val();
+        self.queue.tok.next = self.f1.q.val();
+        self.queue.pass.next = self.pass.val();
         StreamOut::<RcResult>::link(&mut self.result, &mut self.queue.result);
     }
 }
