@@ -131,21 +131,7 @@ fn fragments_one_two_and_three_cycles_behind_a_write_to_their_pixel_see_its_dept
 /// command order.
 #[test]
 fn type_iii_full_record_and_result_queues_keep_every_result_in_order() {
-    use golden::format::WinVertex;
-    use golden::raster::{CullMode, FrontFace};
-    let screen = Screen::new(40, 24).unwrap();
-    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16, y: y * 16, z };
-    let mut tris = vec![RcCmd::triangle(1, [v(-20, -20, 900), v(80, -20, 900), v(-20, 60, 900)], CullMode::None, FrontFace::Ccw).unwrap()];
-    for i in 0..40u32 {
-        let (x, y) = (2 + (i as i32 * 3) % 34, 2 + (i as i32 * 5) % 20);
-        let t = if i % 3 == 2 {
-            RcCmd::triangle(i + 2, [v(x, y, 100), v(x, y + 2, 100), v(x + 2, y, 100)], CullMode::Back, FrontFace::Cw).unwrap()
-        } else {
-            RcCmd::triangle(i + 2, [v(x, y, 100 + i), v(x + 2, y, 100 + i), v(x, y + 2, 100 + i)], CullMode::None, FrontFace::Ccw).unwrap()
-        };
-        tris.push(t);
-    }
-    let cmds = frame(false, tris);
+    let (screen, cmds) = tb::rc::stimulus::queue_filling_triangles();
     let drive = Drive { gap_percent: 0, stall_percent: 75, seed: 0x351ab, garbage: false, stale_depth: false };
     let run = run_rtl_of(III, "rc3_full_queues", screen, &cmds, drive, None).unwrap_or_else(|e| panic!("{e}"));
     check_against_reference("full_queues", screen, &cmds, &run);

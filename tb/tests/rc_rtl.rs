@@ -102,23 +102,7 @@ fn back_to_back_fragments_of_two_triangles_on_one_pixel_see_the_first_ones_depth
 /// those paths was taken.
 #[test]
 fn full_record_and_result_queues_and_a_waiting_reciprocal_keep_every_result_in_order() {
-    use golden::cycle::rc::RcCmd;
-    use golden::format::WinVertex;
-    use golden::raster::{CullMode, FrontFace};
-    let screen = Screen::new(40, 24).unwrap();
-    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16, y: y * 16, z };
-    let mut tris = vec![RcCmd::triangle(1, [v(-20, -20, 900), v(80, -20, 900), v(-20, 60, 900)], CullMode::None, FrontFace::Ccw).unwrap()];
-    for i in 0..40u32 {
-        let (x, y) = (2 + (i as i32 * 3) % 34, 2 + (i as i32 * 5) % 20);
-        let t = if i % 3 == 2 {
-            // back-facing under Back culling: a result without traversal
-            RcCmd::triangle(i + 2, [v(x, y, 100), v(x, y + 2, 100), v(x + 2, y, 100)], CullMode::Back, FrontFace::Cw).unwrap()
-        } else {
-            RcCmd::triangle(i + 2, [v(x, y, 100 + i), v(x + 2, y, 100 + i), v(x, y + 2, 100 + i)], CullMode::None, FrontFace::Ccw).unwrap()
-        };
-        tris.push(t);
-    }
-    let cmds = frame(false, tris);
+    let (screen, cmds) = tb::rc::stimulus::queue_filling_triangles();
     let drive = Drive { gap_percent: 0, stall_percent: 75, seed: 0x51ab, garbage: false, stale_depth: false };
     let run = run_rtl("full_queues", screen, &cmds, drive, None).unwrap_or_else(|e| panic!("{e}"));
     check_against_reference("full_queues", screen, &cmds, &run);

@@ -215,16 +215,24 @@ impl RcOutputs {
     /// compare and print. Type III's I-buffer read is `z_re`/`z_rd_addr` here, named `i_re`/`i_rd_addr`.
     pub fn ports(&self, ty: RcType) -> Vec<(&'static str, u64)> {
         let bits = |v: i64, n: u32| (v as u64) & ((1u64 << n) - 1);
+        let mut p = vec![
+            ("cmd_ready", self.cmd_ready as u64),
+            ("res_valid", self.res_valid as u64),
+            ("res.eof", self.res.eof as u64),
+            ("res.index", self.res.index as u64),
+            ("res.culled", self.res.culled as u64),
+            ("res.zero_area", self.res.zero_area as u64),
+            ("res.visible", self.res.visible as u64),
+        ];
         match ty {
-            RcType::IV => self.ports_iv().to_vec(),
-            RcType::III => vec![
-                ("cmd_ready", self.cmd_ready as u64),
-                ("res_valid", self.res_valid as u64),
-                ("res.eof", self.res.eof as u64),
-                ("res.index", self.res.index as u64),
-                ("res.culled", self.res.culled as u64),
-                ("res.zero_area", self.res.zero_area as u64),
-                ("res.visible", self.res.visible as u64),
+            RcType::IV => p.extend([
+                ("z_re", self.z_re as u64),
+                ("z_rd_addr", self.z_rd_addr as u64),
+                ("z_we", self.z_we as u64),
+                ("z_wr_addr", self.z_wr_addr as u64),
+                ("z_wr_data", self.z_wr_data as u64),
+            ]),
+            RcType::III => p.extend([
                 ("i_re", self.z_re as u64),
                 ("i_rd_addr", self.z_rd_addr as u64),
                 ("tdbv_re", self.tdbv_re as u64),
@@ -234,31 +242,10 @@ impl RcOutputs {
                 ("tdbv_wr_a", bits(self.tdbv_wr_data.a, 40)),
                 ("tdbv_wr_b", bits(self.tdbv_wr_data.b, 40)),
                 ("tdbv_wr_c", bits(self.tdbv_wr_data.c, 56)),
-                ("i_we", self.i_we as u64),
-                ("i_wr_addr", self.i_wr_addr as u64),
-                ("i_wr_data", self.i_wr_data as u64),
-            ],
+            ]),
         }
-    }
-
-    fn ports_iv(&self) -> [(&'static str, u64); 15] {
-        [
-            ("cmd_ready", self.cmd_ready as u64),
-            ("res_valid", self.res_valid as u64),
-            ("res.eof", self.res.eof as u64),
-            ("res.index", self.res.index as u64),
-            ("res.culled", self.res.culled as u64),
-            ("res.zero_area", self.res.zero_area as u64),
-            ("res.visible", self.res.visible as u64),
-            ("z_re", self.z_re as u64),
-            ("z_rd_addr", self.z_rd_addr as u64),
-            ("z_we", self.z_we as u64),
-            ("z_wr_addr", self.z_wr_addr as u64),
-            ("z_wr_data", self.z_wr_data as u64),
-            ("i_we", self.i_we as u64),
-            ("i_wr_addr", self.i_wr_addr as u64),
-            ("i_wr_data", self.i_wr_data as u64),
-        ]
+        p.extend([("i_we", self.i_we as u64), ("i_wr_addr", self.i_wr_addr as u64), ("i_wr_data", self.i_wr_data as u64)]);
+        p
     }
 }
 

@@ -14,6 +14,18 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+/// The result port's word the model expects.
+fn result_word(exp: &RcOutputs) -> Bits<{ RcResult::BITS }> {
+    RcResult {
+        eof: exp.res.eof,
+        index: (exp.res.index as u64).into(),
+        culled: exp.res.culled,
+        zero_area: exp.res.zero_area,
+        visible: exp.res.visible,
+    }
+    .into()
+}
+
 /// Writes one line per cycle: the inputs, then the expected outputs, all in hex.
 pub struct VectorWriter {
     out: BufWriter<File>,
@@ -43,14 +55,7 @@ impl VectorWriter {
             return Err("the rc replay records the Type IV top's ports; rc3 records through super::replay3".into());
         }
         let cmd: Bits<{ RcCommand::BITS }> = command_word(&inp.cmd).into();
-        let res = RcResult {
-            eof: exp.res.eof,
-            index: (exp.res.index as u64).into(),
-            culled: exp.res.culled,
-            zero_area: exp.res.zero_area,
-            visible: exp.res.visible,
-        };
-        let res: Bits<{ RcResult::BITS }> = res.into();
+        let res = result_word(exp);
         writeln!(
             self.out,
             "{} {} {} {} {} {} {} {:05x} {} {:05x} {:06x} {} {:05x} {:04x}",
@@ -227,14 +232,7 @@ impl RcVectors for Rc3Vectors {
         }
         let hex = |v: i64, bits: usize| format!("{:0w$x}", (v as u64) & (u64::MAX >> (64 - bits)), w = bits.div_ceil(4));
         let cmd: Bits<{ RcCommand::BITS }> = command_word(&inp.cmd).into();
-        let res = RcResult {
-            eof: exp.res.eof,
-            index: (exp.res.index as u64).into(),
-            culled: exp.res.culled,
-            zero_area: exp.res.zero_area,
-            visible: exp.res.visible,
-        };
-        let res: Bits<{ RcResult::BITS }> = res.into();
+        let res = result_word(exp);
         let t = inp.tdbv_rd_data;
         let w = exp.tdbv_wr_data;
         let row = vec![

@@ -163,6 +163,25 @@ pub fn random_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
     v
 }
 
+/// The stream that fills the RC's queues (on a 40x24 screen): a screen-size triangle keeps the
+/// traversal busy while 40 small drawn and back-facing triangles pile up behind it.
+pub fn queue_filling_triangles() -> (Screen, Vec<RcCmd>) {
+    let screen = Screen::new(40, 24).expect("a valid size");
+    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16, y: y * 16, z };
+    let mut tris = vec![RcCmd::triangle(1, [v(-20, -20, 900), v(80, -20, 900), v(-20, 60, 900)], CullMode::None, FrontFace::Ccw).expect("fits")];
+    for i in 0..40u32 {
+        let (x, y) = (2 + (i as i32 * 3) % 34, 2 + (i as i32 * 5) % 20);
+        let t = if i % 3 == 2 {
+            // back-facing under Back culling: a result without traversal
+            RcCmd::triangle(i + 2, [v(x, y, 100), v(x, y + 2, 100), v(x + 2, y, 100)], CullMode::Back, FrontFace::Cw)
+        } else {
+            RcCmd::triangle(i + 2, [v(x, y, 100 + i), v(x + 2, y, 100 + i), v(x, y + 2, 100 + i)], CullMode::None, FrontFace::Ccw)
+        };
+        tris.push(t.expect("fits"));
+    }
+    (screen, frame(false, tris))
+}
+
 /// What the algorithmic model makes of a command stream, starting from cleared buffers.
 pub struct Reference {
     pub zbuf: Vec<u32>,
