@@ -85,21 +85,21 @@ fn type_iii_rtl_draws_the_teapot_frame_like_the_algorithmic_model() {
     println!("teapot: {} commands, {} cycles, {:.0} RTL cycles/s", cmds.len(), run.cycles, run.rtl_cycles_per_second);
 }
 
-/// The pixel hazard: a fragment's I-buffer read cannot see the writes of the three fragments ahead of
-/// it, so F3 forwards the newest of those to the same pixel. The stimulus: pairs of a larger triangle
+/// The pixel hazard: a fragment's I-buffer read cannot see the writes of the four fragments ahead of
+/// it, so F4 forwards the newest of those to the same pixel. The stimulus: pairs of a larger triangle
 /// and a farther small one drawn right after it (its record waits in the queue during the larger
 /// one's walk, so its first fragments follow with no gap), kept when the small one's fragments read a
-/// pixel the larger one wrote 1, 2 or 3 cycles before (found by the cycle model, counted at the port).
+/// pixel the larger one wrote 1, 2, 3 or 4 cycles before (found by the cycle model, counted at the port).
 /// Without the forwarding the farther triangle would see the background's far depth there and win.
-/// Each of the three forwarding registers is needed: with any one of them ignored, this test fails.
+/// Each of the four forwarding registers is needed: with any one of them ignored, this test fails.
 #[test]
-fn fragments_one_two_and_three_cycles_behind_a_write_to_their_pixel_see_its_depth() {
+fn fragments_one_to_four_cycles_behind_a_write_to_their_pixel_see_its_depth() {
     use golden::format::WinVertex;
     use golden::raster::{CullMode, FrontFace};
     let screen = Screen::new(16, 12).unwrap();
     let mut rng = Rng::new(0x3f0d);
     let mut kept: Vec<(Vec<RcCmd>, usize)> = Vec::new();
-    let mut found = [0usize; 3];
+    let mut found = [0usize; 4];
     let mut tries = 0;
     while found.iter().any(|&f| f < 3) {
         tries += 1;
@@ -112,7 +112,7 @@ fn fragments_one_two_and_three_cycles_behind_a_write_to_their_pixel_see_its_dept
         let Ok(b) = RcCmd::triangle(2, small, CullMode::None, FrontFace::Ccw) else { continue };
         let cmds = frame(true, vec![a, b]);
         let run = run_model_of(III, screen, &cmds, Drive::ideal(), None).unwrap();
-        if let Some(k) = (0..3).find(|&k| run.same_address_reads_within[k] > 0 && found[k] < 3) {
+        if let Some(k) = (0..4).find(|&k| run.same_address_reads_within[k] > 0 && found[k] < 3) {
             found[k] += 1;
             kept.push((cmds, k + 1));
         }
@@ -123,11 +123,11 @@ fn fragments_one_two_and_three_cycles_behind_a_write_to_their_pixel_see_its_dept
         assert!(run.same_address_reads_within[distance - 1] > 0, "{test}: the hazard did not happen in the RTL run");
         check_against_reference(&test, screen, cmds, &run);
     }
-    println!("{} pairs, hazards at distances 1, 2, 3: {found:?} ({tries} tried)", kept.len());
+    println!("{} pairs, hazards at distances 1, 2, 3, 4: {found:?} ({tries} tried)", kept.len());
 }
 
 /// Queues: a long walk while drawn and culled triangles pile up behind it with the result port ready
-/// one cycle in four: the record queue and the five-deep result queue fill, and results leave in
+/// one cycle in four: the record queue and the six-deep result queue fill, and results leave in
 /// command order.
 #[test]
 fn type_iii_full_record_and_result_queues_keep_every_result_in_order() {

@@ -65,7 +65,7 @@ fn a_fault_in_the_rc3_verilog_fails_the_replay() {
     }
     let (path, cycles) = hand_made_vectors("hand_made_fault");
     let v = hdl::rc::rc3::verilog(hand_made_screen().width, hand_made_screen().height).unwrap();
-    let good = "if (h1_v$q & (h1_addr$q == f3$q[(64'h4)+:(20)])) begin";
+    let good = "if (h1_v$q & (h1_addr$q == f4$q[(64'h4)+:(20)])) begin";
     assert_eq!(v.matches(good).count(), 1, "the forwarding test is not in the Verilog as expected");
     let bad = v.replace(good, "if (1'b0) begin");
     let dir = scratch_dir("rc3_fault");

@@ -83,10 +83,11 @@ pub const RECIP_LATENCY: usize = 10;
 pub const RECORD_QUEUE: usize = 4;
 /// Results the result queue holds (three: results leave at one per clock with `res_ready` high).
 pub const RESULT_QUEUE: usize = 3;
-/// Type III: the stages of the visibility test (F1 I-buffer word, F2 TdbV record, F3 compare and
-/// write), and its result queue, deep enough for a result per clock with three in flight.
-pub const TDBV_STAGES: usize = 3;
-pub const RESULT_QUEUE_III: usize = 5;
+/// Type III: the stages of the visibility test (F1 I-buffer word, F2 TdbV record, F3 regenerated
+/// depth, F4 compare and write), and its result queue, deep enough for a result per clock with four
+/// in flight.
+pub const TDBV_STAGES: usize = 4;
+pub const RESULT_QUEUE_III: usize = 6;
 /// Cycles from accepting a command to its record being offered to the traversal when nothing waits:
 /// a drawn triangle (the reciprocal, requested in S1's cycle, arrives in S5 RECIP_LATENCY cycles later;
 /// then S5's four cycles and S6's four), and any other command (one cycle in each stage).
@@ -293,7 +294,7 @@ struct SetupMoves {
     cmd_ready: bool,
 }
 
-/// A token entering the z-test stage (Type III: the first of its three stages).
+/// A token entering the z-test stage (Type III: the first of its four stages).
 #[derive(Copy, Clone, Debug, PartialEq)]
 enum Token {
     None,
@@ -372,14 +373,15 @@ pub struct RcModel {
     tstate: TravState,
     walking: Option<(u32, Setup)>,
     ty: RcType,
-    // z-test stage: Type IV F1 only; Type III F1, F2, F3
+    // z-test stage: Type IV F1 only; Type III F1 to F4
     vis_pipe: [Token; TDBV_STAGES],
-    /// Type III: F2's token found its pixel owned (the I-buffer word was not the background), and F3's
-    /// old depth regenerated from the TdbV record in F2.
+    /// Type III: F2's token found its pixel owned (the I-buffer word was not the background), and the
+    /// old depth regenerated from the TdbV record that F2 received, in F3 and then in F4.
     f2_owned: bool,
     f3_old: u32,
+    f4_old: u32,
     /// The writes of the last cycles, newest first (address, depth): Type IV forwards the first, Type III
-    /// all three (the writes its I-buffer read cannot have seen).
+    /// all four (the writes its I-buffer read cannot have seen).
     hist: [Option<(u32, u32)>; TDBV_STAGES],
     vis: bool,
     // result queue, head first
@@ -414,6 +416,7 @@ impl RcModel {
             vis_pipe: [Token::None; TDBV_STAGES],
             f2_owned: false,
             f3_old: DEPTH_MAX,
+            f4_old: DEPTH_MAX,
             hist: [None; TDBV_STAGES],
             vis: false,
             res: std::collections::VecDeque::new(),
@@ -529,7 +532,7 @@ impl RcModel {
         }
     }
 
-    /// The visibility test's stages holding tokens: Type IV's one, Type III's three.
+    /// The visibility test's stages holding tokens: Type IV's one, Type III's four.
     fn in_flight(&self) -> &[Token] {
         match self.ty {
             RcType::IV => &self.vis_pipe[..1],
@@ -544,14 +547,14 @@ impl RcModel {
         }
     }
 
-    /// The stage that decides and writes: Type IV's F1, Type III's F3.
+    /// The stage that decides and writes: Type IV's F1, Type III's F4.
     fn deciding(&self) -> Token {
         *self.in_flight().last().expect("at least one stage")
     }
 
     /// The decision this cycle: (write, pass). The old depth is, newest first, that of a write the
     /// token's read cannot have seen (forwarding), else the memory's: Type IV the Z word (far where
-    /// the I-buffer word read with it is the background), Type III the depth regenerated in F2.
+    /// the I-buffer word read with it is the background), Type III the depth regenerated in F3.
     fn z_test(&self, z_rd_data: u32, i_rd_data: u32) -> (Option<(u32, u32, u32)>, bool) {
         let missed = &self.hist[..self.in_flight().len()];
         match self.deciding() {
@@ -559,7 +562,7 @@ impl RcModel {
             Token::Frag { inside: true, addr, z, index, .. } => {
                 let old = match (missed.iter().flatten().find(|(a, _)| *a == addr), self.ty) {
                     (Some(&(_, d)), _) => d,
-                    (None, RcType::III) => self.f3_old,
+                    (None, RcType::III) => self.f4_old,
                     (None, RcType::IV) if i_rd_data == INDEX_BACKGROUND => DEPTH_MAX,
                     (None, RcType::IV) => z_rd_data,
                 };
@@ -631,7 +634,9 @@ impl RcModel {
         self.hist.rotate_right(1);
         self.hist[0] = write.map(|(a, z, _)| (a, z));
         if self.ty == RcType::III {
-            // F2 -> F3: the old depth from the TdbV record that arrived now (F2's pixel was owned).
+            // F2 -> F3: the old depth from the TdbV record that arrived now (F2's pixel was owned);
+            // F3 -> F4: carried on.
+            self.f4_old = self.f3_old;
             self.f3_old = match self.vis_pipe[1] {
                 Token::Frag { inside: true, x, y, .. } if self.f2_owned => inp.tdbv_rd_data.eval_clamped(x as u32, y as u32, DEPTH_MAX as i64) as u32,
                 _ => DEPTH_MAX,

@@ -1,7 +1,7 @@
 //! `result_queue`: the RC's per-triangle results, shared by the Z-test (Type IV, three deep) and the
-//! TdbV test (Type III, five deep). It takes the token its owner decides on in this cycle and whether
+//! TdbV test (Type III, six deep). It takes the token its owner decides on in this cycle and whether
 //! it passed: a triangle's visible flag is the OR of its fragments' passes, and its result is pushed
-//! with its last token (or a result token: culled, empty box, end of frame). Up to five registers, head
+//! with its last token (or a result token: culled, empty box, end of frame). Up to six registers, head
 //! first; each cycle the head leaves if the port takes it, then a pushed result goes behind what
 //! stays. The owner keeps the length within its depth: it issues a result token only when the length
 //! plus the results in flight is below the depth (`len` is the length at the start of the cycle).
@@ -33,6 +33,7 @@ pub struct ResultQueue {
     r2: DFF<RcResult>,
     r3: DFF<RcResult>,
     r4: DFF<RcResult>,
+    r5: DFF<RcResult>,
     r_len: DFF<Bits<3>>,
     r_pop: Signal<Local, Bit>,
     r_after: Signal<Local, Bits<3>>,
@@ -41,6 +42,7 @@ pub struct ResultQueue {
     k2_3: Constant<Bits<3>>,
     k3_3: Constant<Bits<3>>,
     k4_3: Constant<Bits<3>>,
+    k5_3: Constant<Bits<3>>,
     k0_16: Constant<Bits<16>>,
 }
 
@@ -68,6 +70,7 @@ impl ResultQueue {
             r2: Default::default(),
             r3: Default::default(),
             r4: Default::default(),
+            r5: Default::default(),
             r_len: Default::default(),
             r_pop: Default::default(),
             r_after: Default::default(),
@@ -76,6 +79,7 @@ impl ResultQueue {
             k2_3: Constant::new(2.into()),
             k3_3: Constant::new(3.into()),
             k4_3: Constant::new(4.into()),
+            k5_3: Constant::new(5.into()),
             k0_16: Constant::new(0.into()),
         }
     }
@@ -84,7 +88,7 @@ impl ResultQueue {
 impl Logic for ResultQueue {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, visible, r0, r1, r2, r3, r4, r_len);
+        dff_setup!(self, clock, visible, r0, r1, r2, r3, r4, r5, r_len);
         self.len.next = self.r_len.q.val();
         // The result of a triangle's last token, or of a result token.
         self.pushes.next = (self.tok.val().kind == self.tok_result.val()) | ((self.tok.val().kind == self.tok_frag.val()) & self.tok.val().last);
@@ -114,6 +118,7 @@ impl Logic for ResultQueue {
             self.r1.d.next = self.r2.q.val();
             self.r2.d.next = self.r3.q.val();
             self.r3.d.next = self.r4.q.val();
+            self.r4.d.next = self.r5.q.val();
         }
         self.r_len.d.next = self.r_after.val();
         if self.pushes.val() {
@@ -132,6 +137,9 @@ impl Logic for ResultQueue {
             }
             if self.r_after.val() == self.k4_3.val() {
                 self.r4.d.next = self.r_new.val();
+            }
+            if self.r_after.val() == self.k5_3.val() {
+                self.r5.d.next = self.r_new.val();
             }
         }
         self.result.valid.next = self.r_len.q.val() != self.k0_3.val();

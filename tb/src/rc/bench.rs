@@ -62,9 +62,9 @@ pub struct Run {
     /// Cycles whose Z read is of the address read in the cycle before: the read-after-write hazard
     /// that only the z-test's forwarding resolves (it cannot see the previous fragment's write).
     pub same_address_reads_back_to_back: u64,
-    /// Reads of the address read 1, 2 and 3 cycles before: the distances at which Type III's
+    /// Reads of the address read 1, 2, 3 and 4 cycles before: the distances at which Type III's
     /// visibility test must forward a write its I-buffer read cannot have seen.
-    pub same_address_reads_within: [u64; 3],
+    pub same_address_reads_within: [u64; 4],
     /// Clocks the traversal walked triangles, and those that delivered a fragment (cycle model).
     pub walk_clocks: u64,
     pub walk_fragment_clocks: u64,
@@ -325,7 +325,7 @@ fn run_inner(
     };
     let (mut results, mut z_reads, mut z_passes) = (Vec::new(), 0u64, 0u64);
     let (mut back_to_back, mut last_read) = (0u64, None::<u32>);
-    let (mut within, mut recent) = ([0u64; 3], [None::<u32>; 3]);
+    let (mut within, mut recent) = ([0u64; 4], [None::<u32>; 4]);
     let start = std::time::Instant::now();
     let mut watchdog = Watchdog::new(screen.pixels() as u64 + 1024);
     let eofs = cmds.iter().filter(|c| c.kind == CmdKind::EndOfFrame).count();
@@ -350,7 +350,7 @@ fn run_inner(
         let read = out.z_re.then_some(out.z_rd_addr);
         back_to_back += (read.is_some() && read == last_read) as u64;
         last_read = read;
-        for k in 0..3 {
+        for k in 0..4 {
             within[k] += (read.is_some() && read == recent[k]) as u64;
         }
         recent.rotate_right(1);
