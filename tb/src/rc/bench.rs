@@ -91,8 +91,10 @@ struct Tdbv {
 }
 
 impl Tdbv {
-    fn new(garbage: Option<&mut Rng>) -> Tdbv {
-        let n = 1usize << golden::cycle::rc::INDEX_BITS;
+    /// TdbV for an RC of type `ty` (Type IV has none: an empty memory that is never addressed), of
+    /// random records when the drive asks for garbage.
+    fn new(ty: RcType, garbage: Option<&mut Rng>) -> Tdbv {
+        let n = if ty == RcType::III { 1usize << golden::cycle::rc::INDEX_BITS } else { 0 };
         let words = match garbage {
             Some(rng) => (0..n).map(|_| Plane { a: rng.next_u64() as i64 >> 24, b: rng.next_u64() as i64 >> 24, c: rng.next_u64() as i64 >> 8 }).collect(),
             None => vec![Plane::default(); n],
@@ -315,7 +317,7 @@ fn run_inner(
     } else {
         (Sram::new(screen.pixels(), 24, DEPTH_MAX), Sram::new(screen.pixels(), 16, INDEX_BACKGROUND))
     };
-    let mut tdbv = Tdbv::new(drive.garbage.then_some(&mut rng));
+    let mut tdbv = Tdbv::new(ty, drive.garbage.then_some(&mut rng));
     let (mut i_reads, mut i_writes, mut tdbv_reads, mut tdbv_writes) = (0u64, 0u64, 0u64, 0u64);
     let mut driver = Driver { rng, drive, next: 0, presenting: false };
     let mut model = RcModel::of_type(screen, ty);
