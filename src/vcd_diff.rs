@@ -332,7 +332,9 @@ pub fn compare(args: &VcdDiffArgs) -> Result<Outcome, String> {
                 }
             }
         }
-        let mut covered: HashSet<IdCode> = HashSet::new();
+        // The variables already compared, per trace: the two traces' identifier codes are separate
+        // name spaces (both start at `!`), so one set for both would confuse their variables.
+        let (mut covered_a, mut covered_b): (HashSet<IdCode>, HashSet<IdCode>) = (HashSet::new(), HashSet::new());
         let (mut only_a, mut only_b) = (Vec::<(String, Sig)>::new(), Vec::<(String, Sig)>::new());
         let mut textual: Vec<String> = Vec::new();
         for n in &names {
@@ -345,13 +347,13 @@ pub fn compare(args: &VcdDiffArgs) -> Result<Outcome, String> {
                 (a, b) => match (a.or_else(|| resolve(&la, n, true)), b.or_else(|| resolve(&lb, n, true))) {
                     (Some(a), Some(b)) => (a, b),
                     (Some(a), None) => {
-                        if !a.parts.iter().all(|l| covered.contains(&l.code)) {
+                        if !a.parts.iter().all(|l| covered_a.contains(&l.code)) {
                             only_a.push((n.clone(), a));
                         }
                         continue;
                     }
                     (None, Some(b)) => {
-                        if !b.parts.iter().all(|l| covered.contains(&l.code)) {
+                        if !b.parts.iter().all(|l| covered_b.contains(&l.code)) {
                             only_b.push((n.clone(), b));
                         }
                         continue;
@@ -363,14 +365,15 @@ pub fn compare(args: &VcdDiffArgs) -> Result<Outcome, String> {
             // struct in one trace against a vector in the other, or a variable against a variable.
             let single = sa.parts.len() == 1 && sb.parts.len() == 1;
             let composite = sa.parts.len() > 1 || sb.parts.len() > 1;
-            if !(single || composite) || sa.parts.iter().chain(sb.parts.iter()).all(|l| covered.contains(&l.code)) {
+            if !(single || composite) || (sa.parts.iter().all(|l| covered_a.contains(&l.code)) && sb.parts.iter().all(|l| covered_b.contains(&l.code))) {
                 continue;
             }
             if composite && sa.parts.len() > 1 && sb.parts.len() > 1 {
                 // Both sides are split the same way: their fields are compared one by one.
                 continue;
             }
-            covered.extend(sa.parts.iter().chain(sb.parts.iter()).map(|l| l.code));
+            covered_a.extend(sa.parts.iter().map(|l| l.code));
+            covered_b.extend(sb.parts.iter().map(|l| l.code));
             if sa.parts.iter().chain(sb.parts.iter()).any(|l| l.width == 0) {
                 // RustHDL declares enum-valued signals 0 bits wide and writes their state names.
                 textual.push(n.clone());

@@ -225,3 +225,28 @@ fn a_changing_port_missing_from_a_flat_trace_is_a_difference() {
     assert_eq!(code, 1, "{out}");
     assert!(out.contains("ports of A missing from B: cmd$valid") && out.contains("only in A (nets or constants, not known to be ports): k0"), "{out}");
 }
+
+/// The two traces' identifier codes are separate name spaces: here A's `b` and B's `a` share a code,
+/// and so do A's `a` and B's `b`. Both signals are compared, and a difference in `b` is found (one set
+/// of compared codes for both traces once skipped `b` as compared already).
+#[test]
+fn signals_whose_codes_cross_between_the_traces_are_each_compared() {
+    let d = dir();
+    let vcd = |codes: [&str; 2], b_value: &str| {
+        format!(
+            "$timescale 1ns $end\n$scope module top $end\n$var wire 1 ! clock $end\n$var wire 4 {} a $end\n$var wire 4 {} b $end\n$upscope $end\n$enddefinitions $end\n\
+             #0\n0!\nb0011 {}\nb{b_value} {}\n#5\n1!\n#10\n0!\n#15\n1!\n",
+            codes[0], codes[1], codes[0], codes[1]
+        )
+    };
+    let (a, b) = (d.join("cross_a.vcd"), d.join("cross_b.vcd"));
+    std::fs::write(&a, vcd(["\"", "#"], "0101")).unwrap();
+    std::fs::write(&b, vcd(["#", "\""], "0101")).unwrap();
+    let (code, out) = vcd_diff(&a, &b, &[]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("compared: a, b"), "{out}");
+    std::fs::write(&b, vcd(["#", "\""], "0110")).unwrap();
+    let (code, out) = vcd_diff(&a, &b, &[]);
+    assert_ne!(code, 0, "a difference in b was missed:\n{out}");
+    assert!(out.contains(" b"), "{out}");
+}
