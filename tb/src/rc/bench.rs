@@ -137,17 +137,10 @@ fn rtl3_outputs(u: &Rc3) -> RcOutputs {
 
 /// The RTL's outputs in the model's terms.
 fn rtl_outputs(u: &Rc) -> RcOutputs {
-    let r = u.result.data.val();
     RcOutputs {
         cmd_ready: u.cmd.ready.val(),
         res_valid: u.result.valid.val(),
-        res: RcResult {
-            eof: r.eof,
-            index: r.index.to_u64() as u32,
-            culled: r.culled,
-            zero_area: r.zero_area,
-            visible: r.visible,
-        },
+        res: result_of(u.result.data.val()),
         z_re: u.z_re.val(),
         z_rd_addr: u.z_rd_addr.val().to_u64() as u32,
         z_we: u.z_we.val(),
