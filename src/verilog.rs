@@ -229,6 +229,7 @@ fn known_struct(top: &str) -> Option<&'static str> {
         "colour_setup" => "ColourSetup",
         "cs" => "ColorShader",
         "chipset" => "Chipset",
+        "chipset3" => "Chipset3",
         _ => return None,
     })
 }
@@ -296,6 +297,7 @@ fn memory_interface(top: &str) -> &'static str {
         "cs" => "I-buffer (W*H x 16): read port `ibuf_read_enable`/`ibuf_read_address` -> `ibuf_read_data`, clear-behind write port `ibuf_write_*`. TdbS (2^16 x 424): read port `tdbs_read_enable`/`tdbs_read_address` -> `tdbs_read_data`. Z-buffer (W*H x 24): clear-behind write port `zbuf_write_*`.",
         "colour_setup" => "TdbS (2^16 words x 424 bits, address = triangle index): write port `tdbs_write_enable`/`tdbs_write_address`/`tdbs_write_data`.",
         "chipset" => "Z-buffer (W*H x 24, one bank, the RC's): `z_re`/`z_rd_addr` -> `z_rd_data`, `z_we`/`z_wr_addr`/`z_wr_data`. I-buffer (two banks of W*H x 16, address bit 20 = bank): draw side (the RC, bank `draw_bank`) `id_re`/`id_rd_addr` -> `id_rd_data` (read with the depth), `id_we`/`id_wr_addr`/`id_wr_data`; scan side (the CS, the other bank) `is_re`/`is_rd_addr` -> `is_rd_data`, `is_we`/`is_wr_addr`/`is_wr_data` (clear-behind). TdbS (two banks of 2^16 x 424, address bit 16 = bank): `t_we`/`t_wr_addr`/`t_wr_data` (colour setup, draw bank), `t_re`/`t_rd_addr` -> `t_rd_data` (the CS, scan bank). A scan start the CS takes swaps the banks.",
+        "chipset3" => "No Z-buffer. TdbV (2^16 records x 136 bits, one bank, the RC's; address = triangle index, a depth plane: A 40 bits, B 40, C 56): `tdbv_re`/`tdbv_rd_addr` -> `tdbv_rd_a`/`_b`/`_c`, `tdbv_we`/`tdbv_wr_addr`/`tdbv_wr_a`/`_b`/`_c`. I-buffer (two banks of W*H x 16, address bit 20 = bank): draw side (the RC, bank `draw_bank`) `id_re`/`id_rd_addr` -> `id_rd_data` (the index whose plane gives the old depth), `id_we`/`id_wr_addr`/`id_wr_data`; scan side as `chipset`'s. TdbS as `chipset`'s. A scan start the CS takes swaps the banks of the I-buffer and TdbS; TdbV has one bank.",
         "opp" => "No external memory: the object parameters are loaded through `load`/`load_op`/`load_params`; the FIFOs are inside.",
         "proof_shade" => "No external memory: the object table and the light parameters are inside (written through `cfg_*`).",
         "proof_filter" => "No external memory: the direction table and the filter's parameters are inside (written through `cfg_*`).",

@@ -36,10 +36,12 @@
 //! have latency 1 and a read of an address being written returns the old word. The two I-buffer write
 //! ports never write the same bank in one cycle.
 
+pub mod back;
+pub mod chipset3;
+
 use crate::common::{StreamIn, StreamOut};
-use crate::cs::color_shader::ColorShader;
-use crate::cs::colour_setup::ColourSetup;
 use crate::cs::{LightVectors, MaterialWord, SetupCommand, TdbsRecord, CS_MATERIAL_BITS};
+use back::Back;
 use crate::rc::{Rc, RcCommand, RcResult};
 use rust_hdl::prelude::*;
 
@@ -125,22 +127,7 @@ pub struct Chipset {
     pub draw_bank: Signal<Out, Bit>,
 
     rc: Rc,
-    colour_setup: ColourSetup,
-    cs: ColorShader,
-    /// Bank of the frame being drawn, and of the frame being scanned out: swapped when a scan starts.
-    draw_bank_r: DFF<Bit>,
-    scan_bank_r: DFF<Bit>,
-    scan_taken: Signal<Local, Bit>,
-    ia_draw_rd: Signal<Local, Bits<21>>,
-    ia_draw_wr: Signal<Local, Bits<21>>,
-    ia_scan_rd: Signal<Local, Bits<21>>,
-    ia_scan_wr: Signal<Local, Bits<21>>,
-    ta_rd: Signal<Local, Bits<17>>,
-    ta_wr: Signal<Local, Bits<17>>,
-    bank_i: Constant<Bits<21>>,
-    bank_t: Constant<Bits<17>>,
-    width: Constant<Bits<11>>,
-    height: Constant<Bits<11>>,
+    back: Back,
 }
 
 impl Chipset {
@@ -195,21 +182,7 @@ impl Chipset {
             t_wr_data: Default::default(),
             draw_bank: Default::default(),
             rc: Rc::new(width, height)?,
-            colour_setup: ColourSetup::default(),
-            cs: ColorShader::default(),
-            draw_bank_r: Default::default(),
-            scan_bank_r: Default::default(),
-            scan_taken: Default::default(),
-            ia_draw_rd: Default::default(),
-            ia_draw_wr: Default::default(),
-            ia_scan_rd: Default::default(),
-            ia_scan_wr: Default::default(),
-            ta_rd: Default::default(),
-            ta_wr: Default::default(),
-            bank_i: Constant::new((1u64 << 20).into()),
-            bank_t: Constant::new((1u64 << 16).into()),
-            width: Constant::new((width as u64).into()),
-            height: Constant::new((height as u64).into()),
+            back: Back::new(width, height),
         })
     }
 }
@@ -218,19 +191,10 @@ impl Logic for Chipset {
     #[hdl_gen]
     fn update(&mut self) {
         self.rc.clock.next = self.clock.val();
-        self.colour_setup.clock.next = self.clock.val();
-        self.cs.clock.next = self.clock.val();
-        dff_setup!(self, clock, draw_bank_r, scan_bank_r);
+        self.back.clock.next = self.clock.val();
 
-        // Banks: a scan start the CS takes scans the bank just drawn, and drawing goes on in the other.
-        self.scan_taken.next = self.scan_start.val() & !self.cs.busy.val();
-        if self.scan_taken.val() {
-            self.scan_bank_r.d.next = self.draw_bank_r.q.val();
-            self.draw_bank_r.d.next = !self.draw_bank_r.q.val();
-        }
-        self.draw_bank.next = self.draw_bank_r.q.val();
-
-        // Geometry: the RC, on the Z-buffer and the draw bank of the I-buffer.
+        // Geometry: the RC, on the Z-buffer and (through `back`) the draw bank of the I-buffer, whose
+        // word it reads with each depth.
         StreamIn::<RcCommand>::link(&mut self.rc_cmd, &mut self.rc.cmd);
         StreamOut::<RcResult>::link(&mut self.rc_result, &mut self.rc.result);
         self.z_re.next = self.rc.z_re.val();
@@ -239,74 +203,52 @@ impl Logic for Chipset {
         self.z_we.next = self.rc.z_we.val();
         self.z_wr_addr.next = self.rc.z_wr_addr.val();
         self.z_wr_data.next = self.rc.z_wr_data.val();
-        self.ia_draw_rd.next = bit_cast::<21, 20>(self.rc.z_rd_addr.val());
-        self.id_re.next = self.rc.z_re.val();
-        self.id_rd_addr.next = self.ia_draw_rd.val();
-        if self.rc.z_re.val() & self.draw_bank_r.q.val() {
-            self.id_rd_addr.next = self.ia_draw_rd.val() | self.bank_i.val();
-        }
-        self.rc.i_rd_data.next = self.id_rd_data.val();
-        self.ia_draw_wr.next = bit_cast::<21, 20>(self.rc.i_wr_addr.val());
-        self.id_we.next = self.rc.i_we.val();
-        self.id_wr_addr.next = self.ia_draw_wr.val();
-        if self.rc.i_we.val() & self.draw_bank_r.q.val() {
-            self.id_wr_addr.next = self.ia_draw_wr.val() | self.bank_i.val();
-        }
-        self.id_wr_data.next = self.rc.i_wr_data.val();
+        self.back.draw_re.next = self.rc.z_re.val();
+        self.back.draw_rd_addr.next = self.rc.z_rd_addr.val();
+        self.rc.i_rd_data.next = self.back.draw_rd_data.val();
+        self.back.draw_we.next = self.rc.i_we.val();
+        self.back.draw_wr_addr.next = self.rc.i_wr_addr.val();
+        self.back.draw_wr_data.next = self.rc.i_wr_data.val();
 
-        // Shading: colour setup writes the draw bank of TdbS.
-        StreamIn::<SetupCommand>::link(&mut self.setup_cmd, &mut self.colour_setup.cmd);
-        self.setup_busy.next = self.colour_setup.busy.val();
-        self.ta_wr.next = bit_cast::<17, 16>(self.colour_setup.tdbs_write_address.val());
-        self.t_we.next = self.colour_setup.tdbs_write_enable.val();
-        self.t_wr_addr.next = self.ta_wr.val();
-        if self.colour_setup.tdbs_write_enable.val() & self.draw_bank_r.q.val() {
-            self.t_wr_addr.next = self.ta_wr.val() | self.bank_t.val();
-        }
-        self.t_wr_data.next = self.colour_setup.tdbs_write_data.val();
-
-        // Scan-out: the CS reads the scan bank of the I-buffer and TdbS and clears the I-buffer behind
-        // (its Z-buffer clear-behind is not connected: the RC owns the Z-buffer, and needs no clear).
-        self.cs.start.next = self.scan_start.val();
-        self.cs.width.next = self.width.val();
-        self.cs.height.next = self.height.val();
-        self.cs.background.next = self.scan_background.val();
-        self.cs.clear_behind.next = self.scan_clear_behind.val();
-        self.cs.shading_phong.next = self.scan_phong.val();
-        self.cs.light_write_enable.next = self.light_write_enable.val();
-        self.cs.light_write_address.next = self.light_write_address.val();
-        self.cs.light_write_data.next = self.light_write_data.val();
-        self.cs.material_write_enable.next = self.material_write_enable.val();
-        self.cs.material_write_address.next = self.material_write_address.val();
-        self.cs.material_write_slot.next = self.material_write_slot.val();
-        self.cs.material_write_data.next = self.material_write_data.val();
-        self.scan_busy.next = self.cs.busy.val();
-        self.ia_scan_rd.next = bit_cast::<21, 20>(self.cs.ibuf_read_address.val());
-        self.is_re.next = self.cs.ibuf_read_enable.val();
-        self.is_rd_addr.next = self.ia_scan_rd.val();
-        if self.cs.ibuf_read_enable.val() & self.scan_bank_r.q.val() {
-            self.is_rd_addr.next = self.ia_scan_rd.val() | self.bank_i.val();
-        }
-        self.cs.ibuf_read_data.next = self.is_rd_data.val();
-        self.ia_scan_wr.next = bit_cast::<21, 20>(self.cs.ibuf_write_address.val());
-        self.is_we.next = self.cs.ibuf_write_enable.val();
-        self.is_wr_addr.next = self.ia_scan_wr.val();
-        if self.cs.ibuf_write_enable.val() & self.scan_bank_r.q.val() {
-            self.is_wr_addr.next = self.ia_scan_wr.val() | self.bank_i.val();
-        }
-        self.is_wr_data.next = self.cs.ibuf_write_data.val();
-        self.ta_rd.next = bit_cast::<17, 16>(self.cs.tdbs_read_address.val());
-        self.t_re.next = self.cs.tdbs_read_enable.val();
-        self.t_rd_addr.next = self.ta_rd.val();
-        if self.cs.tdbs_read_enable.val() & self.scan_bank_r.q.val() {
-            self.t_rd_addr.next = self.ta_rd.val() | self.bank_t.val();
-        }
-        self.cs.tdbs_read_data.next = self.t_rd_data.val();
-        self.video_tdata.next = self.cs.video_tdata.val();
-        self.video_tvalid.next = self.cs.video_tvalid.val();
-        self.cs.video_tready.next = self.video_tready.val();
-        self.video_tuser.next = self.cs.video_tuser.val();
-        self.video_tlast.next = self.cs.video_tlast.val();
+        // Shading and scan-out (`back`).
+        StreamIn::<SetupCommand>::link(&mut self.setup_cmd, &mut self.back.setup_cmd);
+        self.setup_busy.next = self.back.setup_busy.val();
+        self.back.scan_start.next = self.scan_start.val();
+        self.back.scan_background.next = self.scan_background.val();
+        self.back.scan_clear_behind.next = self.scan_clear_behind.val();
+        self.back.scan_phong.next = self.scan_phong.val();
+        self.back.light_write_enable.next = self.light_write_enable.val();
+        self.back.light_write_address.next = self.light_write_address.val();
+        self.back.light_write_data.next = self.light_write_data.val();
+        self.back.material_write_enable.next = self.material_write_enable.val();
+        self.back.material_write_address.next = self.material_write_address.val();
+        self.back.material_write_slot.next = self.material_write_slot.val();
+        self.back.material_write_data.next = self.material_write_data.val();
+        self.scan_busy.next = self.back.scan_busy.val();
+        self.video_tdata.next = self.back.video_tdata.val();
+        self.video_tvalid.next = self.back.video_tvalid.val();
+        self.back.video_tready.next = self.video_tready.val();
+        self.video_tuser.next = self.back.video_tuser.val();
+        self.video_tlast.next = self.back.video_tlast.val();
+        self.id_re.next = self.back.id_re.val();
+        self.id_rd_addr.next = self.back.id_rd_addr.val();
+        self.back.id_rd_data.next = self.id_rd_data.val();
+        self.id_we.next = self.back.id_we.val();
+        self.id_wr_addr.next = self.back.id_wr_addr.val();
+        self.id_wr_data.next = self.back.id_wr_data.val();
+        self.is_re.next = self.back.is_re.val();
+        self.is_rd_addr.next = self.back.is_rd_addr.val();
+        self.back.is_rd_data.next = self.is_rd_data.val();
+        self.is_we.next = self.back.is_we.val();
+        self.is_wr_addr.next = self.back.is_wr_addr.val();
+        self.is_wr_data.next = self.back.is_wr_data.val();
+        self.t_re.next = self.back.t_re.val();
+        self.t_rd_addr.next = self.back.t_rd_addr.val();
+        self.back.t_rd_data.next = self.t_rd_data.val();
+        self.t_we.next = self.back.t_we.val();
+        self.t_wr_addr.next = self.back.t_wr_addr.val();
+        self.t_wr_data.next = self.back.t_wr_data.val();
+        self.draw_bank.next = self.back.draw_bank.val();
     }
 }
 

@@ -26,6 +26,7 @@ pub const TOPS: &[(&str, &str)] = &[
     ("rc3", "Type III Rasterizer Controller for a 320x200 screen (seed 000): no Z-buffer, depth regenerated from TdbV; I-buffer and TdbV ports"),
     ("colour_setup", "Colour setup: 3 planes with one reciprocal per triangle, TdbS write port (seed 001 eqs. 6-7)"),
     ("chipset", "The raster chipset for 320x200: RC + colour setup + CS around Z/I-buffer and TdbS memory ports"),
+    ("chipset3", "The Type III raster chipset for 320x200 (seed 000): rc3 + colour setup + CS around I-buffer, TdbV and TdbS memory ports, no Z-buffer"),
     ("cs", "Color Shader: I-buffer + TdbS scan-out, 1 pixel/clock, AXI4-Stream video, clear-behind ports"),
 ];
 
@@ -41,6 +42,7 @@ pub fn verilog_top(block: &str) -> Result<String, String> {
         "colour_setup" => cs::colour_setup_verilog(),
         "cs" => cs::color_shader_verilog(),
         "chipset" => chipset::verilog(320, 200),
+        "chipset3" => chipset::chipset3::verilog(320, 200),
         _ => Err(format!(
             "unknown block '{block}': known blocks are {}",
             TOPS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")
