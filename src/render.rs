@@ -5,8 +5,8 @@
 //! `chipset` top (`tb::chipset::RtlChipset`: RC + colour setup + CS with modelled Z/I/TdbS memories)
 //! under the same host program, then compares its frame with the golden model's (image, I-buffer,
 //! Z-buffer, per-triangle results) and fails, after writing its outputs, if they differ. It also
-//! writes `cycles.json` (cycles per phase), `chipset.v` (the Verilog of the simulated top, for this
-//! screen size) and, with `--vcd`, `frame.vcd` (the top's ports; `--vcd-full`: every signal).
+//! writes `cycles.json` (cycles per phase, words on each memory port), `chipset.v` (the Verilog of the
+//! simulated top, for this screen size; `chipset3.v` for `--type III`, the top without a Z-buffer) and, with `--vcd`, `frame.vcd` (the top's ports; `--vcd-full`: every signal).
 
 use crate::args::{BackendArg, RenderArgs};
 use golden::render::{render, render_frames_with, Frame, RenderOptions};
@@ -23,9 +23,6 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         return Err("--vcd needs --backend rtl or --backend verilator".into());
     }
     if args.backend != BackendArg::Golden {
-        if opts.rc_type == golden::raster::RcType::III {
-            return Err("--type III runs through --backend golden only: the chipset RTL builds Type IV (Z-buffer)".into());
-        }
         if opts.index_bits > RTL_INDEX_BITS {
             return Err(format!(
                 "--index-bits {}: the RTL's triangle index is {RTL_INDEX_BITS} bits; use --backend golden for wider indices",
@@ -110,13 +107,21 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "simulation_seconds": secs,
         "simulated_cycles_per_second": run_cycles as f64 / secs.max(1e-9),
         "equal_to_golden": diff.is_none(),
+        "type": opts.rc_type.name(),
+        // Words on each memory port of the top in the (last) frame, counted at the ports.
+        "memory_words": tb::chipset::PortTraffic::FIELDS.iter().zip(phases.traffic.to_vec()).map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect::<serde_json::Map<String, serde_json::Value>>(),
+        "rasterization_bytes_read": phases.traffic.rasterization_bytes().0,
+        "rasterization_bytes_written": phases.traffic.rasterization_bytes().1,
     });
     stats["cycles"] = cycles.clone();
     // stats.json again, now with the cycle counts.
     crate::output::write_atomic(od.dir(), "stats.json", serde_json::to_string_pretty(&stats).unwrap().as_bytes())?;
     files.push(crate::output::write_atomic(od.dir(), "cycles.json", serde_json::to_string_pretty(&cycles).unwrap().as_bytes())?);
-    let v = hdl::chipset::verilog(opts.screen.width, opts.screen.height)?;
-    files.push(crate::output::write_atomic(od.dir(), "chipset.v", v.as_bytes())?);
+    let (v, vname) = match opts.rc_type {
+        golden::raster::RcType::IV => (hdl::chipset::verilog(opts.screen.width, opts.screen.height)?, "chipset.v"),
+        golden::raster::RcType::III => (hdl::chipset::chipset3::verilog(opts.screen.width, opts.screen.height)?, "chipset3.v"),
+    };
+    files.push(crate::output::write_atomic(od.dir(), vname, v.as_bytes())?);
     if let Some(p) = vcd {
         files.push(p);
     }
@@ -182,8 +187,11 @@ fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions, dir: &std::path
     // --backend verilator: the same host program and memories around the generated Verilog (built
     // once per screen size into target/verilator/, see tb::verilator).
     let mut chip: Box<dyn tb::backend::CycleChipset> = match args.backend {
-        BackendArg::Verilator => Box::new(tb::verilator::VerilatorChipset::with_vcd_scope(opts.screen, vcd_file, scope)?.with_progress(progress)),
-        _ => Box::new(tb::chipset::RtlChipset::with_vcd_scope(opts.screen, vcd_file, scope)?.with_progress(progress)),
+        BackendArg::Verilator => Box::new(tb::verilator::VerilatorChipset::of_type(opts.rc_type, opts.screen, vcd_file, scope)?.with_progress(progress)),
+        _ => match opts.rc_type {
+            golden::raster::RcType::IV => Box::new(tb::chipset::RtlChipset::with_vcd_scope(opts.screen, vcd_file, scope)?.with_progress(progress)),
+            golden::raster::RcType::III => Box::new(tb::chipset::RtlChipset3::with_vcd_scope(opts.screen, vcd_file, scope)?.with_progress(progress)),
+        },
     };
     // Simulation time, not the Verilator build (or the cache lookup) in the constructor.
     let t0 = std::time::Instant::now();

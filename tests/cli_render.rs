@@ -277,5 +277,4 @@ fn type_iii_writes_the_same_frame_and_index_buffer_as_type_iv_and_says_which_it_
     assert!(t["tdbv_reads"].as_u64().unwrap() > 0 && t["tdbv_writes"].as_u64().unwrap() > 0, "{t}");
     assert_clean_error(&["render", "--scene", "castle", "--type", "V"], "--type");
     assert_clean_error(&["render", "--arch", "proof", "--scene", "castle", "--type", "III"], "--type applies to --arch index only");
-    assert_clean_error(&["render", "--scene", "castle", "--type", "III", "--backend", "rtl"], "--type III runs through --backend golden only");
 }

@@ -184,3 +184,42 @@ fn verilator_backend_writes_the_golden_files_byte_for_byte_at_640x480() {
     assert_eq!(cycles["clear"], 640 * 480, "the first frame after reset clears every pixel once: {cycles}");
     assert_eq!(cycles["equal_to_golden"], true);
 }
+
+/// `--type III` through both RTL backends: the files equal Type IV's golden files byte for byte (Type
+/// III is exact), the top written is `chipset3` (no Z-buffer port), and `cycles.json` counts the words
+/// on its ports: TdbV read and written, the Z-buffer never.
+#[test]
+fn type_iii_through_both_rtl_backends_writes_the_type_iv_golden_files_and_counts_tdbv_words() {
+    if !tb::common::require_tools("type_iii_through_both_rtl_backends_writes_the_type_iv_golden_files_and_counts_tdbv_words", &["verilator"]) {
+        return;
+    }
+    let d = temp_dir("type-iii");
+    let common = ["render", "--scene", "castle", "--size", "48x32"];
+    let g = d.join("golden-iv");
+    let (ok, _, err) = run(&[&common[..], &["--out", g.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    let mut words = Vec::new();
+    for backend in ["rtl", "verilator"] {
+        let r = d.join(backend);
+        let (ok, out, err) = run(&[&common[..], &["--type", "III", "--backend", backend, "--vcd", "--out", r.to_str().unwrap()]].concat());
+        assert!(ok, "--backend {backend}: {err}");
+        assert!(out.contains("RTL frame equals the golden model's"), "{out}");
+        for f in ["frame.png", "index.bin", "index.png"] {
+            assert!(read(&g, f) == read(&r, f), "{f} differs between Type IV golden and Type III --backend {backend}");
+        }
+        let v = String::from_utf8(read(&r, "chipset3.v")).unwrap();
+        assert!(v.contains("module chipset3(") && !v.contains("z_rd_addr"), "chipset3.v: no chipset3 top, or a Z-buffer port");
+        let vcd = String::from_utf8(read(&r, "frame.vcd")).unwrap();
+        assert!(vcd.contains(" tdbv_rd_addr ") && !vcd.contains(" z_rd_addr "), "--backend {backend}: frame.vcd's ports are not chipset3's");
+        let cycles: serde_json::Value = serde_json::from_slice(&read(&r, "cycles.json")).unwrap();
+        assert_eq!(cycles["type"], "III");
+        let m = &cycles["memory_words"];
+        assert_eq!((m["z_reads"].as_u64(), m["z_writes"].as_u64()), (Some(0), Some(0)), "{m}");
+        assert!(m["tdbv_reads"].as_u64().unwrap() > 0 && m["tdbv_writes"].as_u64().unwrap() > 0, "{m}");
+        words.push(m.clone());
+    }
+    assert_eq!(words[0], words[1], "port words: RustHDL vs Verilator");
+    // TdbV holds one record per index (2^16): a frame with more triangles is refused before simulation.
+    assert_clean_error(&["render", "--scene", "teapot", "--grid", "60", "--size", "48x32", "--type", "III", "--backend", "rtl", "--out", d.join("big").to_str().unwrap()], "16-bit triangle index allows only 65535");
+    assert!(!d.join("big").exists(), "a refused run wrote its output folder");
+}

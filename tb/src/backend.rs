@@ -4,7 +4,7 @@
 //! one code path. [`render_timed`] runs one timed frame through either and keeps what the chipset
 //! returned, for the figures (`chipset_figures`, `idxrender bench`).
 
-use crate::chipset::{PhaseCycles, RtlChipset};
+use crate::chipset::{ChipsetTop, PhaseCycles, RtlChipsetOf};
 use crate::verilator::VerilatorChipset;
 use golden::raster::TriResult;
 use golden::render::{render_frames_with, Chipset, Frame, FrameJob, FrameOut, LowerPipeline, RenderOptions, ScanOut};
@@ -22,7 +22,7 @@ pub trait CycleChipset: Chipset {
     fn finish_vcd(&mut self);
 }
 
-impl CycleChipset for RtlChipset {
+impl<T: ChipsetTop> CycleChipset for RtlChipsetOf<T> {
     fn phases(&self) -> PhaseCycles {
         self.phases.clone()
     }
@@ -33,7 +33,7 @@ impl CycleChipset for RtlChipset {
         self.frame_phases.clone()
     }
     fn finish_vcd(&mut self) {
-        RtlChipset::finish_vcd(self)
+        RtlChipsetOf::finish_vcd(self)
     }
 }
 

@@ -1,8 +1,10 @@
-//! The RTL backend: the `hdl::chipset::Chipset` top simulated in RustHDL (direct drive, GUIDE §5)
+//! The RTL backend: the `hdl::chipset::Chipset` top ([`RtlChipset`]), or its Type III twin
+//! `hdl::chipset::chipset3::Chipset3` ([`RtlChipset3`]), simulated in RustHDL (direct drive, GUIDE §5)
 //! behind `golden::render::Chipset`, so that the host program of the golden model drives the RTL
 //! through seed 001's two pipelines in parallel, frames back to back. The memories behind the top's
-//! ports (Z-buffer, two I-buffer banks, two TdbS banks) are modelled here: synchronous, latency 1,
-//! read-before-write.
+//! ports (Z-buffer or TdbV, two I-buffer banks, two TdbS banks) are modelled here: synchronous,
+//! latency 1, read-before-write. The two tops share every port but the RC's own memory
+//! ([`ChipsetTop`]), and every port's words are counted per frame ([`PortTraffic`]).
 //!
 //! # The host loop (the Verilator harness `tb/verilator/chipset/harness.cpp` runs the same one)
 //!
@@ -38,7 +40,12 @@ use golden::raster::{Culled, TriResult};
 use golden::render::{Chipset, FrameJob, FrameOut, LowerPipeline, ScanOut};
 use golden::cycle::color_shader::{phong_config, CsConfigWrite};
 use golden::shade::{Shading, TdbsEntry};
+use hdl::chipset::chipset3::Chipset3 as Chipset3Rtl;
 use hdl::chipset::Chipset as ChipsetRtl;
+use crate::cs::color_shader_bench::ConfigPorts;
+use golden::format::Plane;
+use golden::raster::RcType;
+use hdl::common::{StreamIn, StreamOut};
 use hdl::cs::TdbsRecord;
 use hdl::rc::RcCommand;
 use std::collections::VecDeque;
@@ -59,14 +66,74 @@ pub struct PhaseCycles {
     pub total: u64,
     /// From the previous frame's scan start to this one's (none for a run's first frame).
     pub frame_interval: Option<u64>,
-    /// Cycles in rasterization with a Z-buffer read: the fragments the RC Z-tested.
+    /// Cycles in rasterization with a draw-side I-buffer read (Type IV: with a Z-buffer read): the
+    /// fragments the RC tested for visibility.
     pub z_reads: u64,
+    /// Words on each memory port for this frame, counted at the top's ports.
+    pub traffic: PortTraffic,
+}
+
+/// Words read and written on each memory port of a chipset top for one frame: the draw side (the RC
+/// and colour setup) while the frame is drawn, the scan side (the CS) while it is scanned out. Type
+/// IV's top has no TdbV port, Type III's no Z-buffer port.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct PortTraffic {
+    pub z_reads: u64,
+    pub z_writes: u64,
+    /// Draw side of the I-buffer (the RC: reads with each fragment, writes of passes and clears).
+    pub i_reads: u64,
+    pub i_writes: u64,
+    pub tdbv_reads: u64,
+    pub tdbv_writes: u64,
+    /// TdbS written by colour setup.
+    pub tdbs_writes: u64,
+    /// Scan side of the I-buffer (the CS's scan-out reads and clear-behind writes).
+    pub scan_i_reads: u64,
+    pub scan_i_writes: u64,
+    /// TdbS read by the CS.
+    pub tdbs_reads: u64,
+}
+
+/// Bytes per word of each memory (its width rounded up to whole bytes): Z 24 bits, I 16, TdbV 136
+/// (A 40, B 40, C 56), TdbS 424.
+pub const Z_BYTES: u64 = 3;
+pub const I_BYTES: u64 = 2;
+pub const TDBV_BYTES: u64 = 17;
+pub const TDBS_BYTES: u64 = 53;
+
+impl PortTraffic {
+    /// The counts in the order of `FIELDS` (the Verilator harness's `F` line has the same order).
+    pub fn to_vec(&self) -> Vec<u64> {
+        vec![self.z_reads, self.z_writes, self.i_reads, self.i_writes, self.tdbv_reads, self.tdbv_writes, self.tdbs_writes, self.scan_i_reads, self.scan_i_writes, self.tdbs_reads]
+    }
+    pub const FIELDS: [&'static str; 10] = ["z_reads", "z_writes", "i_reads", "i_writes", "tdbv_reads", "tdbv_writes", "tdbs_writes", "scan_i_reads", "scan_i_writes", "tdbs_reads"];
+    pub fn from_slice(v: &[u64]) -> PortTraffic {
+        PortTraffic { z_reads: v[0], z_writes: v[1], i_reads: v[2], i_writes: v[3], tdbv_reads: v[4], tdbv_writes: v[5], tdbs_writes: v[6], scan_i_reads: v[7], scan_i_writes: v[8], tdbs_reads: v[9] }
+    }
+    /// Add the RC's counts (Z, draw-side I, TdbV) of `t`.
+    pub fn add_rc(&mut self, t: &PortTraffic) {
+        (self.z_reads, self.z_writes, self.i_reads, self.i_writes) = (self.z_reads + t.z_reads, self.z_writes + t.z_writes, self.i_reads + t.i_reads, self.i_writes + t.i_writes);
+        (self.tdbv_reads, self.tdbv_writes) = (self.tdbv_reads + t.tdbv_reads, self.tdbv_writes + t.tdbv_writes);
+    }
+    /// Add the scan side's counts of `t`.
+    pub fn add_scan(&mut self, t: &PortTraffic) {
+        (self.scan_i_reads, self.scan_i_writes, self.tdbs_reads) = (self.scan_i_reads + t.scan_i_reads, self.scan_i_writes + t.scan_i_writes, self.tdbs_reads + t.tdbs_reads);
+    }
+    /// Bytes the RC moves (Z, draw-side I, TdbV): read, written.
+    pub fn rasterization_bytes(&self) -> (u64, u64) {
+        (self.z_reads * Z_BYTES + self.i_reads * I_BYTES + self.tdbv_reads * TDBV_BYTES, self.z_writes * Z_BYTES + self.i_writes * I_BYTES + self.tdbv_writes * TDBV_BYTES)
+    }
+    pub fn to_json(&self) -> String {
+        let f: Vec<String> = Self::FIELDS.iter().zip(self.to_vec()).map(|(k, v)| format!("\"{k}\": {v}")).collect();
+        let (r, w) = self.rasterization_bytes();
+        format!("{{ {}, \"rasterization_bytes_read\": {r}, \"rasterization_bytes_written\": {w} }}", f.join(", "))
+    }
 }
 
 impl PhaseCycles {
     pub fn to_json(&self) -> String {
         format!(
-            "{{\n  \"clear\": {},\n  \"geometry_transfer\": {},\n  \"rasterization\": {},\n  \"colour_setup\": {},\n  \"scan_out\": {},\n  \"total\": {},\n  \"frame_interval\": {},\n  \"z_reads\": {}\n}}\n",
+            "{{\n  \"clear\": {},\n  \"geometry_transfer\": {},\n  \"rasterization\": {},\n  \"colour_setup\": {},\n  \"scan_out\": {},\n  \"total\": {},\n  \"frame_interval\": {},\n  \"z_reads\": {},\n  \"traffic\": {}\n}}\n",
             self.clear,
             self.geometry_transfer,
             self.rasterization,
@@ -74,7 +141,8 @@ impl PhaseCycles {
             self.scan_out,
             self.total,
             self.frame_interval.map_or("null".to_string(), |v| v.to_string()),
-            self.z_reads
+            self.z_reads,
+            self.traffic.to_json()
         )
     }
 }
@@ -119,19 +187,251 @@ pub fn mixed_frames(screen: Screen) -> Vec<(golden::scene::Mesh, golden::render:
 /// A progress report: phase name, done, total.
 pub type Progress = Box<dyn FnMut(&str, u64, u64)>;
 
-/// The RustHDL simulation of the chipset with its memories.
-pub struct RtlChipset {
+/// What the host loop needs of a chipset top: the ports both tops share (`host`), and the memory of
+/// its RC (`chipset`: the Z-buffer; `chipset3`: TdbV), modelled by [`RcMemory`].
+pub trait ChipsetTop: Block + ConfigPorts + Sized {
+    /// The RC type the top builds.
+    const TYPE: RcType;
+    fn build(width: u32, height: u32) -> Result<Self, String>;
+    /// The shared ports.
+    fn host(&mut self) -> HostPorts<'_>;
+    /// The shared ports, for the ports-only VCD.
+    fn accept_host(&self, probe: &mut dyn Probe);
+    /// The RC's own memory ports, for the ports-only VCD.
+    fn accept_rc_memory(&self, probe: &mut dyn Probe);
+    /// Drive the RC memory's read data (read at the last edge).
+    fn drive_rc_memory(&mut self, m: &RcMemory);
+    /// The RC memory's reads and writes at this edge (reads see the contents before the writes), counted.
+    fn rc_memory_edge(&self, m: &mut RcMemory, t: &mut PortTraffic, cycle: u64) -> Result<(), String>;
+    /// Any access on the RC memory's ports in this cycle.
+    fn rc_memory_active(&self) -> bool;
+}
+
+/// The ports that `chipset` and `chipset3` share, borrowed from either.
+pub struct HostPorts<'a> {
+    pub clock: &'a mut Signal<In, Clock>,
+    pub rc_cmd: &'a mut StreamIn<RcCommand>,
+    pub rc_result: &'a mut StreamOut<hdl::rc::RcResult>,
+    pub setup_cmd: &'a mut StreamIn<hdl::cs::SetupCommand>,
+    pub setup_busy: &'a mut Signal<Out, Bit>,
+    pub scan_start: &'a mut Signal<In, Bit>,
+    pub scan_background: &'a mut Signal<In, Bits<24>>,
+    pub scan_clear_behind: &'a mut Signal<In, Bit>,
+    pub scan_phong: &'a mut Signal<In, Bit>,
+    pub scan_busy: &'a mut Signal<Out, Bit>,
+    pub video_tdata: &'a mut Signal<Out, Bits<24>>,
+    pub video_tvalid: &'a mut Signal<Out, Bit>,
+    pub video_tready: &'a mut Signal<In, Bit>,
+    pub video_tuser: &'a mut Signal<Out, Bit>,
+    pub video_tlast: &'a mut Signal<Out, Bit>,
+    pub id_re: &'a mut Signal<Out, Bit>,
+    pub id_rd_addr: &'a mut Signal<Out, Bits<21>>,
+    pub id_rd_data: &'a mut Signal<In, Bits<16>>,
+    pub id_we: &'a mut Signal<Out, Bit>,
+    pub id_wr_addr: &'a mut Signal<Out, Bits<21>>,
+    pub id_wr_data: &'a mut Signal<Out, Bits<16>>,
+    pub is_re: &'a mut Signal<Out, Bit>,
+    pub is_rd_addr: &'a mut Signal<Out, Bits<21>>,
+    pub is_rd_data: &'a mut Signal<In, Bits<16>>,
+    pub is_we: &'a mut Signal<Out, Bit>,
+    pub is_wr_addr: &'a mut Signal<Out, Bits<21>>,
+    pub is_wr_data: &'a mut Signal<Out, Bits<16>>,
+    pub t_re: &'a mut Signal<Out, Bit>,
+    pub t_rd_addr: &'a mut Signal<Out, Bits<17>>,
+    pub t_rd_data: &'a mut Signal<In, TdbsRecord>,
+    pub t_we: &'a mut Signal<Out, Bit>,
+    pub t_wr_addr: &'a mut Signal<Out, Bits<17>>,
+    pub t_wr_data: &'a mut Signal<Out, TdbsRecord>,
+    pub draw_bank: &'a mut Signal<Out, Bit>,
+}
+
+/// `host` and `accept_host` of a chipset top (the two tops have the same names for these ports).
+macro_rules! shared_ports {
+    () => {
+        fn host(&mut self) -> HostPorts<'_> {
+            HostPorts {
+                clock: &mut self.clock,
+                rc_cmd: &mut self.rc_cmd,
+                rc_result: &mut self.rc_result,
+                setup_cmd: &mut self.setup_cmd,
+                setup_busy: &mut self.setup_busy,
+                scan_start: &mut self.scan_start,
+                scan_background: &mut self.scan_background,
+                scan_clear_behind: &mut self.scan_clear_behind,
+                scan_phong: &mut self.scan_phong,
+                scan_busy: &mut self.scan_busy,
+                video_tdata: &mut self.video_tdata,
+                video_tvalid: &mut self.video_tvalid,
+                video_tready: &mut self.video_tready,
+                video_tuser: &mut self.video_tuser,
+                video_tlast: &mut self.video_tlast,
+                id_re: &mut self.id_re,
+                id_rd_addr: &mut self.id_rd_addr,
+                id_rd_data: &mut self.id_rd_data,
+                id_we: &mut self.id_we,
+                id_wr_addr: &mut self.id_wr_addr,
+                id_wr_data: &mut self.id_wr_data,
+                is_re: &mut self.is_re,
+                is_rd_addr: &mut self.is_rd_addr,
+                is_rd_data: &mut self.is_rd_data,
+                is_we: &mut self.is_we,
+                is_wr_addr: &mut self.is_wr_addr,
+                is_wr_data: &mut self.is_wr_data,
+                t_re: &mut self.t_re,
+                t_rd_addr: &mut self.t_rd_addr,
+                t_rd_data: &mut self.t_rd_data,
+                t_we: &mut self.t_we,
+                t_wr_addr: &mut self.t_wr_addr,
+                t_wr_data: &mut self.t_wr_data,
+                draw_bank: &mut self.draw_bank,
+            }
+        }
+        fn accept_host(&self, probe: &mut dyn Probe) {
+            self.clock.accept("clock", probe);
+            self.rc_cmd.accept("rc_cmd", probe);
+            self.rc_result.accept("rc_result", probe);
+            self.setup_cmd.accept("setup_cmd", probe);
+            self.setup_busy.accept("setup_busy", probe);
+            self.scan_start.accept("scan_start", probe);
+            self.scan_background.accept("scan_background", probe);
+            self.scan_clear_behind.accept("scan_clear_behind", probe);
+            self.scan_phong.accept("scan_phong", probe);
+            self.light_write_enable.accept("light_write_enable", probe);
+            self.light_write_address.accept("light_write_address", probe);
+            self.light_write_data.accept("light_write_data", probe);
+            self.material_write_enable.accept("material_write_enable", probe);
+            self.material_write_address.accept("material_write_address", probe);
+            self.material_write_slot.accept("material_write_slot", probe);
+            self.material_write_data.accept("material_write_data", probe);
+            self.scan_busy.accept("scan_busy", probe);
+            self.video_tdata.accept("video_tdata", probe);
+            self.video_tvalid.accept("video_tvalid", probe);
+            self.video_tready.accept("video_tready", probe);
+            self.video_tuser.accept("video_tuser", probe);
+            self.video_tlast.accept("video_tlast", probe);
+            self.id_re.accept("id_re", probe);
+            self.id_rd_addr.accept("id_rd_addr", probe);
+            self.id_rd_data.accept("id_rd_data", probe);
+            self.id_we.accept("id_we", probe);
+            self.id_wr_addr.accept("id_wr_addr", probe);
+            self.id_wr_data.accept("id_wr_data", probe);
+            self.is_re.accept("is_re", probe);
+            self.is_rd_addr.accept("is_rd_addr", probe);
+            self.is_rd_data.accept("is_rd_data", probe);
+            self.is_we.accept("is_we", probe);
+            self.is_wr_addr.accept("is_wr_addr", probe);
+            self.is_wr_data.accept("is_wr_data", probe);
+            self.t_re.accept("t_re", probe);
+            self.t_rd_addr.accept("t_rd_addr", probe);
+            self.t_rd_data.accept("t_rd_data", probe);
+            self.t_we.accept("t_we", probe);
+            self.t_wr_addr.accept("t_wr_addr", probe);
+            self.t_wr_data.accept("t_wr_data", probe);
+            self.draw_bank.accept("draw_bank", probe);
+        }
+    };
+}
+
+/// The memory behind the RC's own ports: the Z-buffer (Type IV) or TdbV (Type III).
+pub struct RcMemory {
+    pub zbuf: Vec<u32>,
+    z_rd: u32,
+    pub tdbv: Vec<Plane>,
+    tdbv_rd: Plane,
+}
+
+impl ChipsetTop for ChipsetRtl {
+    const TYPE: RcType = RcType::IV;
+    fn build(width: u32, height: u32) -> Result<Self, String> {
+        ChipsetRtl::new(width, height)
+    }
+    shared_ports!();
+    fn accept_rc_memory(&self, probe: &mut dyn Probe) {
+        self.z_re.accept("z_re", probe);
+        self.z_rd_addr.accept("z_rd_addr", probe);
+        self.z_rd_data.accept("z_rd_data", probe);
+        self.z_we.accept("z_we", probe);
+        self.z_wr_addr.accept("z_wr_addr", probe);
+        self.z_wr_data.accept("z_wr_data", probe);
+    }
+    fn drive_rc_memory(&mut self, m: &RcMemory) {
+        self.z_rd_data.next = (m.z_rd as u64).into();
+    }
+    fn rc_memory_edge(&self, m: &mut RcMemory, t: &mut PortTraffic, cycle: u64) -> Result<(), String> {
+        let n = m.zbuf.len();
+        let bad = |what: &str, a: usize| format!("chipset: {what} address {a:#x} outside the buffer (W*H = {n} words) in cycle {cycle}");
+        if self.z_re.val() {
+            let a = self.z_rd_addr.val().index();
+            m.z_rd = *m.zbuf.get(a).ok_or_else(|| bad("Z read", a))?;
+            t.z_reads += 1;
+        }
+        if self.z_we.val() {
+            let a = self.z_wr_addr.val().index();
+            *m.zbuf.get_mut(a).ok_or_else(|| bad("Z write", a))? = self.z_wr_data.val().to_u64() as u32;
+            t.z_writes += 1;
+        }
+        Ok(())
+    }
+    fn rc_memory_active(&self) -> bool {
+        self.z_re.val() || self.z_we.val()
+    }
+}
+
+impl ChipsetTop for Chipset3Rtl {
+    const TYPE: RcType = RcType::III;
+    fn build(width: u32, height: u32) -> Result<Self, String> {
+        Chipset3Rtl::new(width, height)
+    }
+    shared_ports!();
+    fn accept_rc_memory(&self, probe: &mut dyn Probe) {
+        self.tdbv_re.accept("tdbv_re", probe);
+        self.tdbv_rd_addr.accept("tdbv_rd_addr", probe);
+        self.tdbv_rd_a.accept("tdbv_rd_a", probe);
+        self.tdbv_rd_b.accept("tdbv_rd_b", probe);
+        self.tdbv_rd_c.accept("tdbv_rd_c", probe);
+        self.tdbv_we.accept("tdbv_we", probe);
+        self.tdbv_wr_addr.accept("tdbv_wr_addr", probe);
+        self.tdbv_wr_a.accept("tdbv_wr_a", probe);
+        self.tdbv_wr_b.accept("tdbv_wr_b", probe);
+        self.tdbv_wr_c.accept("tdbv_wr_c", probe);
+    }
+    fn drive_rc_memory(&mut self, m: &RcMemory) {
+        self.tdbv_rd_a.next = hdl::common::from_i64::<40>(m.tdbv_rd.a);
+        self.tdbv_rd_b.next = hdl::common::from_i64::<40>(m.tdbv_rd.b);
+        self.tdbv_rd_c.next = hdl::common::from_i64::<56>(m.tdbv_rd.c);
+    }
+    fn rc_memory_edge(&self, m: &mut RcMemory, t: &mut PortTraffic, _cycle: u64) -> Result<(), String> {
+        // 16 address bits: every address is inside TdbV's 2^16 records.
+        if self.tdbv_re.val() {
+            m.tdbv_rd = m.tdbv[self.tdbv_rd_addr.val().index()];
+            t.tdbv_reads += 1;
+        }
+        if self.tdbv_we.val() {
+            use hdl::common::to_i64;
+            m.tdbv[self.tdbv_wr_addr.val().index()] = Plane { a: to_i64(self.tdbv_wr_a.val()), b: to_i64(self.tdbv_wr_b.val()), c: to_i64(self.tdbv_wr_c.val()) };
+            t.tdbv_writes += 1;
+        }
+        Ok(())
+    }
+    fn rc_memory_active(&self) -> bool {
+        self.tdbv_re.val() || self.tdbv_we.val()
+    }
+}
+
+/// The RustHDL simulation of a chipset top (`chipset`, or `chipset3` for Type III) with its memories.
+pub struct RtlChipsetOf<T: ChipsetTop> {
     pub screen: Screen,
-    uut: Box<ChipsetRtl>,
-    zbuf: Vec<u32>,
+    uut: Box<T>,
+    rc_mem: RcMemory,
     /// Two banks of W*H words: bank b at b*W*H.
     ibuf: Vec<u32>,
     /// Two banks of 2^16 records: bank b at b*2^16.
     tdbs: Vec<TdbsRecord>,
-    z_rd: u32,
     id_rd: u32,
     is_rd: u32,
     t_rd: TdbsRecord,
+    /// Words on each port since the last `take_traffic`, by the frame they belong to (see `run`).
+    draw_traffic: PortTraffic,
     pub cycle: u64,
     /// Cycles per phase of the last frame.
     pub phases: PhaseCycles,
@@ -147,6 +447,11 @@ pub struct RtlChipset {
     /// Where the waveform goes, for the watchdog's message.
     vcd_path: Option<PathBuf>,
 }
+
+/// The Type IV chipset (`chipset`: Z-buffer and I-buffer).
+pub type RtlChipset = RtlChipsetOf<ChipsetRtl>;
+/// The Type III chipset (`chipset3`: I-buffer and TdbV, no Z-buffer).
+pub type RtlChipset3 = RtlChipsetOf<Chipset3Rtl>;
 
 /// Cycles without any activity at the ports (a command or result taken, a memory read or write, a
 /// pixel, a Phong constant written) after which a run is stopped as hung: more than any one triangle can
@@ -164,83 +469,38 @@ pub enum VcdScope {
     Full,
 }
 
-/// The `chipset` top seen through its ports only: a block that rust-hdl's VCD writer walks instead of
-/// the whole hierarchy (same scope `uut` and names as a full dump).
-struct Ports<'a>(&'a ChipsetRtl);
 
-impl Logic for Ports<'_> {
+/// A chipset top seen through its ports only: a block that rust-hdl's VCD writer walks instead of
+/// the whole hierarchy (same scope `uut` and names as a full dump).
+struct Ports<'a, T: ChipsetTop>(&'a T);
+
+impl<T: ChipsetTop> Logic for Ports<'_, T> {
     fn update(&mut self) {}
 }
 
-impl Block for Ports<'_> {
+impl<T: ChipsetTop> Block for Ports<'_, T> {
     fn connect_all(&mut self) {}
     fn update_all(&mut self) {}
     fn has_changed(&self) -> bool {
         false
     }
     fn accept(&self, name: &str, probe: &mut dyn Probe) {
-        let u = self.0;
         probe.visit_start_scope(name, self);
-        u.clock.accept("clock", probe);
-        u.rc_cmd.accept("rc_cmd", probe);
-        u.rc_result.accept("rc_result", probe);
-        u.setup_cmd.accept("setup_cmd", probe);
-        u.setup_busy.accept("setup_busy", probe);
-        u.scan_start.accept("scan_start", probe);
-        u.scan_background.accept("scan_background", probe);
-        u.scan_clear_behind.accept("scan_clear_behind", probe);
-        u.scan_phong.accept("scan_phong", probe);
-        u.light_write_enable.accept("light_write_enable", probe);
-        u.light_write_address.accept("light_write_address", probe);
-        u.light_write_data.accept("light_write_data", probe);
-        u.material_write_enable.accept("material_write_enable", probe);
-        u.material_write_address.accept("material_write_address", probe);
-        u.material_write_slot.accept("material_write_slot", probe);
-        u.material_write_data.accept("material_write_data", probe);
-        u.scan_busy.accept("scan_busy", probe);
-        u.video_tdata.accept("video_tdata", probe);
-        u.video_tvalid.accept("video_tvalid", probe);
-        u.video_tready.accept("video_tready", probe);
-        u.video_tuser.accept("video_tuser", probe);
-        u.video_tlast.accept("video_tlast", probe);
-        u.z_re.accept("z_re", probe);
-        u.z_rd_addr.accept("z_rd_addr", probe);
-        u.z_rd_data.accept("z_rd_data", probe);
-        u.z_we.accept("z_we", probe);
-        u.z_wr_addr.accept("z_wr_addr", probe);
-        u.z_wr_data.accept("z_wr_data", probe);
-        u.id_re.accept("id_re", probe);
-        u.id_rd_addr.accept("id_rd_addr", probe);
-        u.id_rd_data.accept("id_rd_data", probe);
-        u.id_we.accept("id_we", probe);
-        u.id_wr_addr.accept("id_wr_addr", probe);
-        u.id_wr_data.accept("id_wr_data", probe);
-        u.is_re.accept("is_re", probe);
-        u.is_rd_addr.accept("is_rd_addr", probe);
-        u.is_rd_data.accept("is_rd_data", probe);
-        u.is_we.accept("is_we", probe);
-        u.is_wr_addr.accept("is_wr_addr", probe);
-        u.is_wr_data.accept("is_wr_data", probe);
-        u.t_re.accept("t_re", probe);
-        u.t_rd_addr.accept("t_rd_addr", probe);
-        u.t_rd_data.accept("t_rd_data", probe);
-        u.t_we.accept("t_we", probe);
-        u.t_wr_addr.accept("t_wr_addr", probe);
-        u.t_wr_data.accept("t_wr_data", probe);
-        u.draw_bank.accept("draw_bank", probe);
+        self.0.accept_host(probe);
+        self.0.accept_rc_memory(probe);
         probe.visit_end_scope(name, self);
     }
 }
 
-impl RtlChipset {
+impl<T: ChipsetTop> RtlChipsetOf<T> {
     /// A chipset for `screen`; with `vcd`, the top-level ports at every settle are written there.
-    pub fn new(screen: Screen, vcd: Option<PathBuf>) -> Result<RtlChipset, String> {
+    pub fn new(screen: Screen, vcd: Option<PathBuf>) -> Result<RtlChipsetOf<T>, String> {
         Self::with_vcd_scope(screen, vcd, VcdScope::Ports)
     }
 
     /// As [`RtlChipset::new`], choosing what the VCD holds.
-    pub fn with_vcd_scope(screen: Screen, vcd: Option<PathBuf>, scope: VcdScope) -> Result<RtlChipset, String> {
-        let mut uut = Box::new(ChipsetRtl::new(screen.width, screen.height)?);
+    pub fn with_vcd_scope(screen: Screen, vcd: Option<PathBuf>, scope: VcdScope) -> Result<RtlChipsetOf<T>, String> {
+        let mut uut = Box::new(T::build(screen.width, screen.height)?);
         uut.connect_all();
         check_all(uut.as_ref()).map_err(|e| format!("chipset: rust-hdl check failed: {e:?}"))?;
         let vcd_path = vcd.clone();
@@ -248,7 +508,7 @@ impl RtlChipset {
             Some(p) => {
                 let f = File::create(&p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
                 let v = match scope {
-                    VcdScope::Ports => write_vcd_dump(write_vcd_header(BufWriter::new(f), &Ports(&uut)), &Ports(&uut)),
+                    VcdScope::Ports => write_vcd_dump(write_vcd_header(BufWriter::new(f), &Ports(uut.as_ref())), &Ports(uut.as_ref())),
                     VcdScope::Full => write_vcd_dump(write_vcd_header(BufWriter::new(f), uut.as_ref()), uut.as_ref()),
                 };
                 Some(v)
@@ -257,16 +517,18 @@ impl RtlChipset {
         };
         // After reset the memories hold garbage; the first frame's clear puts them in order.
         let n = screen.pixels();
-        Ok(RtlChipset {
+        // TdbV's garbage: a plane whose depth would win over most fragments, were it ever read.
+        let tdbv = if T::TYPE == RcType::III { vec![Plane { a: 0, b: 0, c: -1 << 40 }; 1 << 16] } else { Vec::new() };
+        Ok(RtlChipsetOf {
             screen,
             uut,
-            zbuf: (0..n).map(|i| (i as u32).wrapping_mul(2654435761) & DEPTH_MAX).collect(),
+            rc_mem: RcMemory { zbuf: (0..n).map(|i| (i as u32).wrapping_mul(2654435761) & DEPTH_MAX).collect(), z_rd: 0, tdbv, tdbv_rd: Plane::default() },
             ibuf: (0..2 * n).map(|i| (i as u32).wrapping_mul(40503) & 0xffff).collect(),
             tdbs: vec![TdbsRecord::default(); 2 << 16],
-            z_rd: 0,
             id_rd: 0,
             is_rd: 0,
             t_rd: TdbsRecord::default(),
+            draw_traffic: PortTraffic::default(),
             cycle: 0,
             phases: PhaseCycles::default(),
             frame_phases: Vec::new(),
@@ -285,13 +547,13 @@ impl RtlChipset {
     }
 
     /// Drive the streams with random gaps and back-pressure.
-    pub fn with_drive(mut self, d: HostDrive) -> RtlChipset {
+    pub fn with_drive(mut self, d: HostDrive) -> RtlChipsetOf<T> {
         self.drive = d;
         self
     }
 
     /// Report progress through `f(phase, done, total)`.
-    pub fn with_progress(mut self, f: Progress) -> RtlChipset {
+    pub fn with_progress(mut self, f: Progress) -> RtlChipsetOf<T> {
         self.progress = Some(f);
         self
     }
@@ -308,9 +570,9 @@ impl RtlChipset {
         }
         if let Some(v) = self.vcd.take() {
             let mut v = v;
-            v.timestamp(self.cycle * 10 + if self.uut.clock.val().clk { 5 } else { 0 }).map_err(|e| format!("VCD: {e}"))?;
+            v.timestamp(self.cycle * 10 + if self.uut.host().clock.val().clk { 5 } else { 0 }).map_err(|e| format!("VCD: {e}"))?;
             self.vcd = Some(match self.vcd_scope {
-                VcdScope::Ports => write_vcd_change(v, &Ports(&self.uut)),
+                VcdScope::Ports => write_vcd_change(v, &Ports(self.uut.as_ref())),
                 VcdScope::Full => write_vcd_change(v, self.uut.as_ref()),
             });
         }
@@ -321,8 +583,8 @@ impl RtlChipset {
     /// their reads and writes at the edge; then the rising edge. Returns nothing: the caller samples
     /// the handshakes between [`RtlChipset::low`] and [`RtlChipset::high`].
     fn low(&mut self) -> Result<(), String> {
-        let u = &mut self.uut;
-        u.z_rd_data.next = (self.z_rd as u64).into();
+        self.uut.drive_rc_memory(&self.rc_mem);
+        let u = self.uut.host();
         u.id_rd_data.next = (self.id_rd as u64).into();
         u.is_rd_data.next = (self.is_rd as u64).into();
         u.t_rd_data.next = self.t_rd;
@@ -330,30 +592,28 @@ impl RtlChipset {
         self.settle()
     }
 
-    fn high(&mut self) -> Result<(), String> {
-        let n = self.zbuf.len();
+    /// The edge; the words on each port are counted in `t` (draw side) and `scan` (scan side).
+    fn high(&mut self, scan: &mut PortTraffic) -> Result<(), String> {
+        let n = self.screen.pixels();
         let cycle = self.cycle;
         let bad = |what: &str, a: usize| format!("chipset: {what} address {a:#x} outside the buffer (W*H = {n} words per bank) in cycle {cycle}");
         // I-buffer address: bit 20 the bank, bits 19:0 the pixel.
         let ia = |what: &str, a: usize| if a & 0xfffff < n { Ok((a >> 20) * n + (a & 0xfffff)) } else { Err(bad(what, a)) };
-        let u = &self.uut;
+        let t = &mut self.draw_traffic;
+        self.uut.rc_memory_edge(&mut self.rc_mem, t, cycle)?;
+        let u = self.uut.host();
         // Reads see the contents before this edge's writes.
-        if u.z_re.val() {
-            let a = u.z_rd_addr.val().index();
-            self.z_rd = *self.zbuf.get(a).ok_or_else(|| bad("Z read", a))?;
-        }
         if u.id_re.val() {
             self.id_rd = self.ibuf[ia("I read (draw side)", u.id_rd_addr.val().index())?];
+            t.i_reads += 1;
         }
         if u.is_re.val() {
             self.is_rd = self.ibuf[ia("I read (scan side)", u.is_rd_addr.val().index())?];
+            scan.scan_i_reads += 1;
         }
         if u.t_re.val() {
             self.t_rd = self.tdbs[u.t_rd_addr.val().index()];
-        }
-        if u.z_we.val() {
-            let a = u.z_wr_addr.val().index();
-            *self.zbuf.get_mut(a).ok_or_else(|| bad("Z write", a))? = u.z_wr_data.val().to_u64() as u32;
+            scan.tdbs_reads += 1;
         }
         let (dw, sw) = (u.id_we.val(), u.is_we.val());
         let (da, sa) = (u.id_wr_addr.val().index(), u.is_wr_addr.val().index());
@@ -362,29 +622,32 @@ impl RtlChipset {
         }
         if dw {
             self.ibuf[ia("I write (draw side)", da)?] = u.id_wr_data.val().to_u64() as u32;
+            t.i_writes += 1;
         }
         if sw {
             self.ibuf[ia("I write (scan side)", sa)?] = u.is_wr_data.val().to_u64() as u32;
+            scan.scan_i_writes += 1;
         }
         if u.t_we.val() {
             let a = u.t_wr_addr.val().index();
             self.tdbs[a] = u.t_wr_data.val();
+            t.tdbs_writes += 1;
         }
-        self.uut.clock.next = true.into();
+        u.clock.next = true.into();
         self.settle()?;
         self.cycle += 1;
         Ok(())
     }
 
     fn idle_inputs(&mut self) {
-        let u = &mut self.uut;
+        let u = self.uut.host();
         u.rc_cmd.valid.next = false;
         u.rc_result.ready.next = true;
         u.setup_cmd.valid.next = false;
         u.scan_start.next = false;
         u.video_tready.next = true;
         // Phong-constant writes: none, and payloads 0.
-        crate::cs::color_shader_bench::drive_config(&mut **u, None);
+        crate::cs::color_shader_bench::drive_config(&mut *self.uut, None);
     }
 
     /// A cycle budget that no correct frame reaches: a hang is an error, not an endless loop.
@@ -392,12 +655,15 @@ impl RtlChipset {
         1_000_000 + 64 * work
     }
 
-    /// I-buffer bank `b` and the Z-buffer as the RC sees it (a stale depth under the background index
-    /// counts as 2^24-1).
+    /// I-buffer bank `b` and the depths as the RC sees them: Type IV's Z-buffer (a stale depth under
+    /// the background index counts as 2^24-1), Type III's planes regenerated from TdbV.
     fn snapshot(&self, b: usize) -> (Vec<u32>, Vec<u32>) {
-        let n = self.zbuf.len();
+        let n = self.screen.pixels();
         let ib = self.ibuf[b * n..(b + 1) * n].to_vec();
-        let zb = depths_as_seen(&ib, &self.zbuf);
+        let zb = match T::TYPE {
+            RcType::IV => depths_as_seen(&ib, &self.rc_mem.zbuf),
+            RcType::III => crate::rc::bench::regenerated_depths(self.screen, &ib, &self.rc_mem.tdbv),
+        };
         (ib, zb)
     }
 }
@@ -422,6 +688,8 @@ pub(crate) struct FrameRun {
     pub eof: Option<u64>,
     pub clear_writes: u64,
     pub z_reads: u64,
+    /// Words on each memory port for this frame.
+    pub traffic: PortTraffic,
     pub setup_first: Option<u64>,
     pub drawn: Option<u64>,
     pub scan_begin: Option<u64>,
@@ -447,6 +715,7 @@ impl FrameRun {
             eof: None,
             clear_writes: 0,
             z_reads: 0,
+            traffic: PortTraffic::default(),
             setup_first: None,
             drawn: None,
             scan_begin: None,
@@ -480,6 +749,7 @@ impl FrameRun {
             total: done - start,
             frame_interval: prev_scan_taken.zip(self.scan_taken).map(|(a, b)| b - a),
             z_reads: self.z_reads,
+            traffic: self.traffic.clone(),
         }
     }
 }
@@ -509,7 +779,7 @@ pub(crate) enum ScanState {
     Running,
 }
 
-impl Chipset for RtlChipset {
+impl<T: ChipsetTop> Chipset for RtlChipsetOf<T> {
     fn run(&mut self, jobs: &[FrameJob], host: &mut dyn LowerPipeline) -> Result<Vec<FrameOut>, String> {
         let mut frames = Vec::with_capacity(jobs.len());
         for job in jobs {
@@ -542,20 +812,22 @@ impl Chipset for RtlChipset {
             }
             let res_ready = !(d.stall_percent > 0 && rng.chance(d.stall_percent));
             let video_ready = !(d.stall_percent > 0 && rng.chance(d.stall_percent));
-            self.uut.rc_result.ready.next = res_ready;
-            self.uut.video_tready.next = video_ready;
+            self.uut.host().rc_result.ready.next = res_ready;
+            self.uut.host().video_tready.next = video_ready;
             // Upper pipeline: frame rc_f's commands, once the previous frame's scan-out has started.
             let rc_offer = rc_can && rc_presenting;
             if rc_offer {
-                self.uut.rc_cmd.valid.next = true;
-                self.uut.rc_cmd.data.next = frames[rc_f].words[rc_next];
+                let u = self.uut.host();
+                u.rc_cmd.valid.next = true;
+                u.rc_cmd.data.next = frames[rc_f].words[rc_next];
                 frames[rc_f].start.get_or_insert(self.cycle);
             }
             // Lower pipeline: the queued colour-setup commands.
             let setup_offer = !queue.is_empty() && setup_presenting;
             if let (true, Some((f, c))) = (setup_offer, queue.front()) {
-                self.uut.setup_cmd.valid.next = true;
-                self.uut.setup_cmd.data.next = *c;
+                let u = self.uut.host();
+                u.setup_cmd.valid.next = true;
+                u.setup_cmd.data.next = *c;
                 frames[*f].setup_first.get_or_insert(self.cycle);
             }
             // Scan-out of frame scan_f.
@@ -564,23 +836,25 @@ impl Chipset for RtlChipset {
                 scan = if frames[scan_f].config.is_empty() { ScanState::Start } else { ScanState::Config(0) };
             }
             let sf = &frames[scan_f];
-            self.uut.scan_background.next = (sf.background as u64).into();
-            self.uut.scan_clear_behind.next = true;
-            self.uut.scan_phong.next = sf.phong;
+            let u = self.uut.host();
+            u.scan_background.next = (sf.background as u64).into();
+            u.scan_clear_behind.next = true;
+            u.scan_phong.next = sf.phong;
             match scan {
                 ScanState::Config(k) => crate::cs::color_shader_bench::drive_config(&mut *self.uut, Some(sf.config[k])),
-                ScanState::Start => self.uut.scan_start.next = true,
+                ScanState::Start => self.uut.host().scan_start.next = true,
                 _ => {}
             }
             self.low()?;
-            let u = &self.uut;
+            let rc_mem_active = self.uut.rc_memory_active();
+            let u = self.uut.host();
             let rc_taken = rc_offer && u.rc_cmd.ready.val();
             let setup_taken = setup_offer && u.setup_cmd.ready.val();
             let setup_busy = u.setup_busy.val() || u.t_we.val();
             let start_taken = scan == ScanState::Start && !u.scan_busy.val();
             let scan_busy = u.scan_busy.val();
             if res_f < nf {
-                frames[res_f].z_reads += u.z_re.val() as u64;
+                frames[res_f].z_reads += u.id_re.val() as u64;
                 frames[res_f].clear_writes += (u.id_we.val() && u.id_wr_data.val().to_u64() == 0) as u64;
             }
             let result = (u.rc_result.valid.val() && res_ready).then(|| u.rc_result.data.val());
@@ -602,8 +876,8 @@ impl Chipset for RtlChipset {
                 || start_taken
                 || (u.rc_result.valid.val() && res_ready)
                 || (u.video_tvalid.val() && video_ready)
-                || u.z_re.val()
-                || u.z_we.val()
+                || rc_mem_active
+                || u.id_re.val()
                 || u.id_we.val()
                 || u.is_we.val()
                 || u.t_we.val()
@@ -622,7 +896,20 @@ impl Chipset for RtlChipset {
                     queue.push_back((res_f, command_of(&SetupCmd::from_command(&c)?)));
                 }
             }
-            self.high()?;
+            let mut scan_t = PortTraffic::default();
+            self.high(&mut scan_t)?;
+            // The draw side's words go to the frame being drawn: the RC's to frame res_f (its end of
+            // frame result ends them), colour setup's to frame draw_f; the scan side's to frame scan_f.
+            let dt = std::mem::take(&mut self.draw_traffic);
+            if let Some(fr) = frames.get_mut(res_f) {
+                fr.traffic.add_rc(&dt);
+            }
+            if let Some(fr) = frames.get_mut(draw_f) {
+                fr.traffic.tdbs_writes += dt.tdbs_writes;
+            }
+            if let Some(fr) = frames.get_mut(scan_f) {
+                fr.traffic.add_scan(&scan_t);
+            }
             let now = self.cycle;
             if rc_taken {
                 rc_presenting = false;
@@ -714,7 +1001,7 @@ impl Chipset for RtlChipset {
 }
 
 /// TdbS bank `bank` as the RTL left it, in the golden model's terms (for checks).
-pub fn tdbs_entries(c: &RtlChipset, bank: usize, indices: &[u32]) -> Vec<TdbsEntry> {
+pub fn tdbs_entries<T: ChipsetTop>(c: &RtlChipsetOf<T>, bank: usize, indices: &[u32]) -> Vec<TdbsEntry> {
     indices.iter().map(|&i| crate::cs::pack::entry_of(&c.tdbs[(bank << 16) + i as usize])).collect()
 }
 

@@ -8,9 +8,14 @@ use golden::format::Screen;
 use golden::render::{render, render_frames_with, render_with, Frame, RenderOptions};
 use golden::scene::builtin;
 use golden::shade::Shading;
-use tb::chipset::{mixed_frames, HostDrive, RtlChipset};
+use golden::raster::RcType;
+use tb::chipset::{mixed_frames, ChipsetTop, HostDrive, RtlChipset, RtlChipsetOf};
+use tb::chipset::PhaseCycles;
 use tb::common::{require_tools, vcd_path};
 use tb::verilator::VerilatorChipset;
+use hdl::chipset::chipset3::Chipset3;
+use hdl::chipset::Chipset;
+use tb::chipset::VcdScope;
 
 fn verilator_missing(test: &str) -> bool {
     !require_tools(test, &["verilator"])
@@ -90,9 +95,9 @@ fn every_builtin_scene_at_320x200_and_640x480_through_the_verilated_chipset_equa
                 let golden = render(&mesh, &opts).unwrap();
                 match render_with(&mesh, &opts, &mut chip) {
                     Err(e) => failures.push(format!("{name} {w}x{h} {shading:?}: Verilator run failed: {e}")),
-                    Ok(vl) => match first_difference(&golden, &vl) {
-                        Some(d) => failures.push(format!("{name} {w}x{h} {shading:?} (golden vs Verilator): {d}")),
-                        None => eprintln!("{name} {w}x{h} {shading:?}: equal to golden; {:?}", chip.phases),
+                    Ok(vl) => match first_difference(&golden, &vl).map_or_else(|| traffic_equals_the_models(&chip.phases, &golden, RcType::IV), Err) {
+                        Err(d) => failures.push(format!("{name} {w}x{h} {shading:?} (golden vs Verilator): {d}")),
+                        Ok(()) => eprintln!("{name} {w}x{h} {shading:?}: equal to golden; {:?}", chip.phases),
                     },
                 }
             }
@@ -129,19 +134,26 @@ fn polyhedron_cycles_per_phase_through_verilator_equal_the_rusthdl_simulations()
 /// with `drive`: each frame equals its golden frame, and every frame's cycle accounting equals the
 /// RustHDL run's (`tb::chipset::mixed_frames`).
 fn five_frames_back_to_back(drive: HostDrive) {
+    five_frames_of_type_back_to_back::<Chipset>(drive)
+}
+
+fn five_frames_of_type_back_to_back<T: ChipsetTop>(drive: HostDrive) {
     let screen = Screen::new(96, 64).unwrap();
-    let jobs = mixed_frames(screen);
+    let mut jobs = mixed_frames(screen);
+    for (_, o) in jobs.iter_mut() {
+        o.rc_type = T::TYPE;
+    }
     let refs: Vec<(&golden::scene::Mesh, &RenderOptions)> = jobs.iter().map(|(m, o)| (m, o)).collect();
-    let mut vl = VerilatorChipset::new(screen, None).unwrap().with_drive(drive);
+    let mut vl = VerilatorChipset::of_type(T::TYPE, screen, None, VcdScope::Ports).unwrap().with_drive(drive);
     let frames = render_frames_with(&refs, &mut vl).unwrap();
     for (k, ((mesh, opts), f)) in jobs.iter().zip(&frames).enumerate() {
         if let Some(d) = first_difference(&render(mesh, opts).unwrap(), f) {
             panic!("frame {} ({} {:?}) through Verilator (golden vs Verilator), {drive:?}: {d}", k + 1, mesh.name, opts.shading);
         }
     }
-    let mut rtl = RtlChipset::new(screen, None).unwrap().with_drive(drive);
+    let mut rtl = RtlChipsetOf::<T>::new(screen, None).unwrap().with_drive(drive);
     render_frames_with(&refs, &mut rtl).unwrap();
-    assert_eq!(rtl.frame_phases, vl.frame_phases, "cycles per phase of every frame, {drive:?}: RustHDL (left) vs Verilator (right)");
+    assert_eq!(rtl.frame_phases, vl.frame_phases, "cycles per phase and port words of every frame, {drive:?}: RustHDL (left) vs Verilator (right)");
     assert_eq!(rtl.cycle, vl.cycle);
     assert_eq!(vl.frame_phases[2].clear, 0, "frame 3 needs no clear");
     eprintln!("{drive:?}: {} cycles for five frames", vl.cycle);
@@ -270,23 +282,38 @@ fn the_verilated_chipsets_port_waveforms_equal_the_rusthdl_simulations_at_every_
     if verilator_missing("Verilator vs RustHDL waveforms") {
         return;
     }
+    port_waveforms_equal::<Chipset>(53);
+}
+
+#[test]
+fn the_verilated_type_iii_chipsets_port_waveforms_equal_the_rusthdl_simulations_at_every_half_cycle() {
+    if verilator_missing("Verilator vs RustHDL waveforms, Type III") {
+        return;
+    }
+    // The Z-buffer's 6 ports give way to TdbV's 10.
+    port_waveforms_equal::<Chipset3>(57);
+}
+
+fn port_waveforms_equal<T: ChipsetTop>(ports: usize) {
     // Phong, so that the Phong-constant write ports carry traffic too.
     let screen = Screen::new(16, 8).unwrap();
     let mesh = builtin::polyhedron();
     // Three frames back to back, so that the bank swaps and both pipelines at once are on the ports.
-    let opts = RenderOptions::for_scene(&mesh, screen, Shading::Phong);
+    let mut opts = RenderOptions::for_scene(&mesh, screen, Shading::Phong);
+    opts.rc_type = T::TYPE;
     let jobs = [(&mesh, &opts), (&mesh, &opts), (&mesh, &opts)];
-    let (pr, pv) = (vcd_path("chipset_verilator", "polyhedron_16x8_rusthdl"), vcd_path("chipset_verilator", "polyhedron_16x8_verilator"));
+    let ty = T::TYPE.name();
+    let (pr, pv) = (vcd_path("chipset_verilator", &format!("polyhedron_16x8_type{ty}_rusthdl")), vcd_path("chipset_verilator", &format!("polyhedron_16x8_type{ty}_verilator")));
     // Random gaps and back-pressure, so that every handshake's both sides show on the ports.
     let drive = HostDrive::random(25, 25, 0x5eed);
-    let mut rtl = RtlChipset::new(screen, Some(pr.clone())).unwrap().with_drive(drive);
+    let mut rtl = RtlChipsetOf::<T>::new(screen, Some(pr.clone())).unwrap().with_drive(drive);
     render_frames_with(&jobs, &mut rtl).unwrap();
     rtl.finish_vcd();
-    let mut vl = VerilatorChipset::new(screen, Some(pv.clone())).unwrap().with_drive(drive);
+    let mut vl = VerilatorChipset::of_type(T::TYPE, screen, Some(pv.clone()), VcdScope::Ports).unwrap().with_drive(drive);
     render_frames_with(&jobs, &mut vl).unwrap();
     vl.finish_vcd();
     let (a, b) = (parse_vcd(&std::fs::read_to_string(&pr).unwrap()), parse_vcd(&std::fs::read_to_string(&pv).unwrap()));
-    assert_eq!(b.names.len(), 53, "the Verilator VCD holds the 53 ports and nothing else: {:?}", b.names);
+    assert_eq!(b.names.len(), ports, "the Verilator VCD holds the {ports} ports and nothing else: {:?}", b.names);
     assert!(b.port("draw_bank").iter().any(|(_, v)| v[0]) && b.port("draw_bank").iter().any(|(_, v)| !v[0]), "the banks never swapped");
     for (port, width) in &b.names {
         let (x, y) = (a.port(port), b.port(port));
@@ -328,4 +355,57 @@ fn a_run_that_stops_making_progress_ends_at_once_naming_the_phase_and_cycle() {
     let e2 = render_with(&mesh, &opts, &mut vl).err().expect("a stuck Verilator run must fail");
     assert!(e2.contains("no progress") && e2.contains("frame 1's rasterization"), "{e2}");
     assert_eq!(e.split("at cycle").nth(1).map(|t| t.split(':').next()), e2.split("at cycle").nth(1).map(|t| t.split(':').next()), "both stop in the same cycle");
+}
+
+/// The words each RC memory port of the RTL moved in the frame equal the algorithmic RC's count of
+/// the same type, once the clear writes are taken off (Type IV's clear writes the Z-buffer too).
+fn traffic_equals_the_models(p: &PhaseCycles, golden: &Frame, ty: RcType) -> Result<(), String> {
+    let (t, g) = (&p.traffic, &golden.stats.rc.traffic);
+    let z_clear = if ty == RcType::IV { p.clear } else { 0 };
+    let rtl = [t.z_reads, t.z_writes - z_clear, t.i_reads, t.i_writes - p.clear, t.tdbv_reads, t.tdbv_writes];
+    let model = [g.z_reads, g.z_writes, g.i_reads, g.i_writes, g.tdbv_reads, g.tdbv_writes];
+    if rtl != model {
+        return Err(format!("RC port words (Z r/w, I r/w, TdbV r/w): RTL {rtl:?}, model {model:?}"));
+    }
+    if t.tdbs_writes != golden.stats.tdbs_writes {
+        return Err(format!("TdbS writes: RTL {}, model {}", t.tdbs_writes, golden.stats.tdbs_writes));
+    }
+    Ok(())
+}
+
+/// Issue 16's acceptance for Type III: every built-in scene at both sizes through the generated
+/// Verilog of `chipset3` equals the golden Type III frame (which `golden/tests/type_iii.rs` shows equal
+/// to the Type IV frame), and the words its memory ports moved equal the model's counts.
+#[test]
+fn every_builtin_scene_at_320x200_and_640x480_through_the_verilated_type_iii_chipset_equals_the_golden_frame() {
+    if verilator_missing("every scene through Verilator, Type III") {
+        return;
+    }
+    let mut failures = Vec::new();
+    for (w, h) in [(320, 200), (640, 480)] {
+        let screen = Screen::new(w, h).unwrap();
+        let mut chip = VerilatorChipset::of_type(RcType::III, screen, None, VcdScope::Ports).unwrap();
+        for name in builtin::SCENES {
+            let mesh = builtin::scene(name).unwrap();
+            let mut opts = RenderOptions::for_scene(&mesh, screen, Shading::Gouraud);
+            opts.rc_type = RcType::III;
+            let golden = render(&mesh, &opts).unwrap();
+            match render_with(&mesh, &opts, &mut chip) {
+                Err(e) => failures.push(format!("{name} {w}x{h}: Verilator run failed: {e}")),
+                Ok(vl) => match first_difference(&golden, &vl).map_or_else(|| traffic_equals_the_models(&chip.phases, &golden, RcType::III), Err) {
+                    Err(d) => failures.push(format!("{name} {w}x{h} (golden vs Verilator): {d}")),
+                    Ok(()) => eprintln!("{name} {w}x{h} Type III: equal to golden; {:?}", chip.phases),
+                },
+            }
+        }
+    }
+    assert!(failures.is_empty(), "Type III frames through Verilator that differ from the golden model:\n{}", failures.join("\n"));
+}
+
+#[test]
+fn five_type_iii_frames_back_to_back_with_random_gaps_and_back_pressure_equal_golden_in_both_simulations() {
+    if verilator_missing("Type III frames back to back with random gaps") {
+        return;
+    }
+    five_frames_of_type_back_to_back::<Chipset3>(HostDrive::random(30, 40, 0x3b2b));
 }

@@ -7,6 +7,11 @@
 //!
 //! Steady state: each frame is drawn without the RC's clear (the chipset clears the I-buffer behind
 //! the scan-out), so clears and scan-out reads are not in these counts.
+//!
+//! `--chipset`: the whole chipset (`chipset` and `chipset3`, their generated Verilog under Verilator),
+//! every memory port of the top counted by the backend in the second of two frames back to back (no
+//! clear after reset; the I-buffer is cleared behind the scan-out), beside the analysis model's accesses
+//! for the same buffers (`golden::analysis::bandwidth::accesses`, seed 000 Figs. 11-12).
 
 use golden::format::Screen;
 use golden::raster::RcType;
@@ -26,6 +31,9 @@ fn main() {
 }
 
 fn run() -> Result<(), String> {
+    if std::env::args().any(|a| a == "--chipset") {
+        return chipset();
+    }
     let screen = Screen::new(320, 200)?;
     let px = screen.pixels() as u64;
     println!("| scene | type | cycles | Z read | Z write | I read | I write | TdbV read | TdbV write | bytes per frame | predicted (analysis) | buffers (bytes) |");
@@ -64,6 +72,59 @@ fn run() -> Result<(), String> {
                 ty.name(),
                 run.cycles,
                 c.traffic.tdbv_reads
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Words and bytes per frame on every memory port of the two chipset tops, Gouraud shading, 320x200.
+fn chipset() -> Result<(), String> {
+    use golden::analysis::bandwidth::accesses;
+    use golden::analysis::buffers::{Arch, Buffer};
+    use golden::render::{render, render_frames_with, RenderOptions};
+    use tb::chipset::{I_BYTES, TDBS_BYTES};
+    use tb::verilator::VerilatorChipset;
+    let screen = Screen::new(320, 200)?;
+    println!("| scene | type | Z r / w (words) | I draw r / w | I scan r / w | TdbV r / w | TdbS w / r | bytes per frame | analysis: accesses (bytes) |");
+    println!("|---|---|---|---|---|---|---|---|---|");
+    for name in golden::scene::builtin::SCENES {
+        let mesh = golden::scene::builtin::scene(name)?;
+        for ty in [RcType::IV, RcType::III] {
+            let mut opts = RenderOptions::for_scene(&mesh, screen, golden::shade::Shading::Gouraud);
+            opts.rc_type = ty;
+            let mut chip = VerilatorChipset::of_type(ty, screen, None, tb::chipset::VcdScope::Ports)?;
+            let frames = render_frames_with(&[(&mesh, &opts), (&mesh, &opts)], &mut chip)?;
+            let golden = render(&mesh, &opts)?;
+            if frames.iter().any(|f| f.rgb != golden.rgb || f.hw_index != golden.hw_index) {
+                return Err(format!("{name}: a Type {} chipset frame differs from golden", ty.name()));
+            }
+            let t = &chip.frame_phases[1].traffic;
+            let (rr, rw) = t.rasterization_bytes();
+            let bytes = rr + rw + (t.scan_i_reads + t.scan_i_writes) * I_BYTES + (t.tdbs_writes + t.tdbs_reads) * TDBS_BYTES;
+            let m = golden::analysis::measure::measure(&mesh, &RenderOptions { rc_type: RcType::IV, ..opts.clone() })?;
+            let tr = golden::analysis::traffic(&m, false);
+            let arch = if ty == RcType::IV { Arch::TypeIV } else { Arch::TypeIII };
+            let bufs: &[(Buffer, u64)] = match ty {
+                RcType::IV => &[(Buffer::Z, tb::chipset::Z_BYTES), (Buffer::I, I_BYTES), (Buffer::TdbS, TDBS_BYTES)],
+                RcType::III => &[(Buffer::I, I_BYTES), (Buffer::TdbV, tb::chipset::TDBV_BYTES), (Buffer::TdbS, TDBS_BYTES)],
+            };
+            let predicted: Vec<String> = bufs.iter().map(|&(b, _)| format!("{} {:.0}", b.name(), accesses(arch, b, &tr))).collect();
+            let predicted_bytes: f64 = bufs.iter().map(|&(b, w)| accesses(arch, b, &tr) * w as f64).sum();
+            println!(
+                "| {name} | {} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | {bytes} | {} ({predicted_bytes:.0}) |",
+                ty.name(),
+                t.z_reads,
+                t.z_writes,
+                t.i_reads,
+                t.i_writes,
+                t.scan_i_reads,
+                t.scan_i_writes,
+                t.tdbv_reads,
+                t.tdbv_writes,
+                t.tdbs_writes,
+                t.tdbs_reads,
+                predicted.join(", ")
             );
         }
     }

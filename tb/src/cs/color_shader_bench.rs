@@ -158,6 +158,7 @@ macro_rules! config_ports_of {
 }
 config_ports_of!(ColorShader);
 config_ports_of!(hdl::chipset::Chipset);
+config_ports_of!(hdl::chipset::chipset3::Chipset3);
 
 /// Drive one cycle's Phong-constant write (or none) onto a block's write ports.
 pub fn drive_config(u: &mut impl ConfigPorts, c: Option<CsConfigWrite>) {

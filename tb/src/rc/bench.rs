@@ -399,7 +399,7 @@ fn run_inner(
 }
 
 /// The depth of every pixel regenerated from TdbV where the I-buffer names a triangle, else far.
-fn regenerated_depths(screen: Screen, ibuf: &[u32], tdbv: &[Plane]) -> Vec<u32> {
+pub fn regenerated_depths(screen: Screen, ibuf: &[u32], tdbv: &[Plane]) -> Vec<u32> {
     let w = screen.width as usize;
     ibuf.iter()
         .enumerate()

@@ -27,7 +27,7 @@
 //! `target/verilator/chipset_<W>x<H>[_trace|_trace_full]/` and reused while the hash of the Verilog,
 //! the harness, the Verilator flags and `verilator --version` is unchanged (written in `hash` there).
 //!
-//! VCD: with a path, the harness is built with `--trace --trace-depth 1` (and [`PORTS_VLT`]) and dumps
+//! VCD: with a path, the harness is built with `--trace --trace-depth 1` (and `ports_vlt`, which switches the top module's own signals off) and dumps
 //! the 53 top-level ports only (scope `uut`, `$` in port names as in the Verilog: `rc_cmd$data`), at
 //! time 10*cycle with the clock low and 10*cycle + 5 after the rising edge: the same instants as
 //! `RtlChipset`'s VCD of the same ports (whose scope is `uut` and whose streams are sub-scopes `rc_cmd`
@@ -36,7 +36,9 @@
 
 pub mod shared_lib;
 
-use crate::chipset::{HostDrive, PhaseCycles, Progress, VcdScope};
+use crate::chipset::{HostDrive, PhaseCycles, PortTraffic, Progress, VcdScope};
+use golden::format::Plane;
+use golden::raster::RcType;
 use crate::common::workspace_target;
 use crate::cs::pack::{command_of, rgb_of};
 use crate::chipset::{depths_as_seen, FrameRun};
@@ -61,8 +63,18 @@ pub const HARNESS_CPP: &str = include_str!("../../verilator/chipset/harness.cpp"
 pub const BUILD_WAIVERS: &[&str] = &["WIDTH", "UNOPTFLAT"];
 
 /// Verilator configuration of the ports-only VCD: `--trace-depth 1` keeps the top-level ports (scope
-/// `uut`) but also the `chipset` module's own signals one level down; this switches those off.
-pub const PORTS_VLT: &str = "`verilator_config\ntracing_off -scope \"chipset\"\n";
+/// `uut`) but also the top module's own signals one level down; this switches those off.
+fn ports_vlt(module: &str) -> String {
+    format!("`verilator_config\ntracing_off -scope \"{module}\"\n")
+}
+
+/// The top module of a type: `chipset` (Type IV) or `chipset3` (Type III).
+pub fn module_of(ty: RcType) -> &'static str {
+    match ty {
+        RcType::IV => "chipset",
+        RcType::III => "chipset3",
+    }
+}
 
 /// 32-bit words of the packed ports the harness takes (Verilator's VlWide layout: word 0 = bits 31:0).
 const RC_WORDS: usize = 6;
@@ -99,8 +111,12 @@ pub(crate) fn fnv1a(parts: &[&[u8]]) -> u64 {
     h
 }
 
-fn verilator_flags(vcd: Option<VcdScope>) -> Vec<String> {
-    let mut f: Vec<String> = ["--cc", "--exe", "--build", "-O3", "-j", "2", "--top-module", "chipset", "-o", "Vchipset"].iter().map(|s| s.to_string()).collect();
+fn verilator_flags(ty: RcType, vcd: Option<VcdScope>) -> Vec<String> {
+    let m = module_of(ty);
+    let mut f: Vec<String> = ["--cc", "--exe", "--build", "-O3", "-j", "2", "--top-module", m, "-o", &format!("V{m}")].iter().map(|s| s.to_string()).collect();
+    if ty == RcType::III {
+        f.extend(["-CFLAGS".to_string(), "-DTYPE_III".to_string()]);
+    }
     f.extend(BUILD_WAIVERS.iter().map(|w| format!("-Wno-{w}")));
     match vcd {
         None => {}
@@ -110,26 +126,37 @@ fn verilator_flags(vcd: Option<VcdScope>) -> Vec<String> {
     f
 }
 
-/// Build the harness for `screen` (with a VCD writer of `vcd`'s kind) unless the cache holds it.
+/// Build the Type IV harness for `screen` (with a VCD writer of `vcd`'s kind) unless the cache holds it.
 pub fn build(screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
+    build_of(RcType::IV, screen, vcd)
+}
+
+/// Build the harness of the chipset of type `ty` (`chipset` or `chipset3`), as [`build`].
+pub fn build_of(ty: RcType, screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
     let t0 = Instant::now();
     let version = verilator_version()?;
-    let verilog = hdl::chipset::verilog(screen.width, screen.height)?;
-    let flags = verilator_flags(vcd);
-    let key = format!("{:016x}", fnv1a(&[verilog.as_bytes(), HARNESS_CPP.as_bytes(), PORTS_VLT.as_bytes(), flags.join(" ").as_bytes(), &version]));
-    let name = format!("chipset_{}x{}{}", screen.width, screen.height, trace_suffix(vcd));
-    cached_build(&name, &key, "obj/Vchipset", t0, &|tmp: &Path| {
+    let m = module_of(ty);
+    let verilog = match ty {
+        RcType::IV => hdl::chipset::verilog(screen.width, screen.height)?,
+        RcType::III => hdl::chipset::chipset3::verilog(screen.width, screen.height)?,
+    };
+    let flags = verilator_flags(ty, vcd);
+    let vlt = ports_vlt(m);
+    let key = format!("{:016x}", fnv1a(&[verilog.as_bytes(), HARNESS_CPP.as_bytes(), vlt.as_bytes(), flags.join(" ").as_bytes(), &version]));
+    let name = format!("{m}_{}x{}{}", screen.width, screen.height, trace_suffix(vcd));
+    let verilog_file = format!("{m}.v");
+    cached_build(&name, &key, &format!("obj/V{m}"), t0, &|tmp: &Path| {
         let write = |f: &str, text: &str| std::fs::write(tmp.join(f), text).map_err(|e| format!("cannot write {}: {e}", tmp.join(f).display()));
-        write("chipset.v", &verilog)?;
+        write(&verilog_file, &verilog)?;
         write("harness.cpp", HARNESS_CPP)?;
-        write("ports.vlt", PORTS_VLT)?;
+        write("ports.vlt", &vlt)?;
         let config: &[&str] = if vcd == Some(VcdScope::Ports) { &["ports.vlt"] } else { &[] };
         let out = Command::new("verilator")
             .current_dir(tmp)
             .args(&flags)
             .args(["-Mdir", "obj"])
             .args(config)
-            .args(["chipset.v", "harness.cpp"])
+            .args([verilog_file.as_str(), "harness.cpp"])
             .output()
             .map_err(|e| format!("cannot run verilator: {e}"))?;
         let log = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
@@ -203,9 +230,11 @@ pub(crate) fn tail(s: &str, n: usize) -> &str {
     &s[i..]
 }
 
-/// The `chipset` Verilog under Verilator, with its memories in the harness.
+/// The `chipset` (or `chipset3`) Verilog under Verilator, with its memories in the harness.
 pub struct VerilatorChipset {
     pub screen: Screen,
+    /// Type IV (`chipset`) or Type III (`chipset3`).
+    pub ty: RcType,
     pub cycle: u64,
     pub phases: PhaseCycles,
     /// How the harness was obtained (build time, cache hit).
@@ -232,21 +261,31 @@ impl VerilatorChipset {
 
     /// As [`VerilatorChipset::new`], choosing what the VCD holds.
     pub fn with_vcd_scope(screen: Screen, vcd: Option<PathBuf>, scope: VcdScope) -> Result<VerilatorChipset, String> {
+        Self::of_type(RcType::IV, screen, vcd, scope)
+    }
+
+    /// The chipset of type `ty` (`chipset3` for Type III), as [`VerilatorChipset::with_vcd_scope`].
+    pub fn of_type(ty: RcType, screen: Screen, vcd: Option<PathBuf>, scope: VcdScope) -> Result<VerilatorChipset, String> {
         if let Some(p) = &vcd {
             // Fail before a build with a clear message rather than in the harness.
             std::fs::File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
         }
-        let b = build(screen, vcd.as_ref().map(|_| scope))?;
-        Self::with_build(screen, vcd, b)
+        let b = build_of(ty, screen, vcd.as_ref().map(|_| scope))?;
+        Self::with_build(ty, screen, vcd, b)
     }
 
-    /// A chipset started from a harness already built by [`build`] (without a VCD writer): a run of many
-    /// frames checks the cache once per screen size instead of once per chipset.
+    /// A Type IV chipset started from a harness already built by [`build`] (without a VCD writer): a
+    /// run of many frames checks the cache once per screen size instead of once per chipset.
     pub fn from_build(screen: Screen, build: Build) -> Result<VerilatorChipset, String> {
-        Self::with_build(screen, None, build)
+        Self::with_build(RcType::IV, screen, None, build)
     }
 
-    fn with_build(screen: Screen, vcd: Option<PathBuf>, build: Build) -> Result<VerilatorChipset, String> {
+    /// As [`VerilatorChipset::from_build`], for a harness built by [`build_of`] for `ty`.
+    pub fn from_build_of(ty: RcType, screen: Screen, build: Build) -> Result<VerilatorChipset, String> {
+        Self::with_build(ty, screen, None, build)
+    }
+
+    fn with_build(ty: RcType, screen: Screen, vcd: Option<PathBuf>, build: Build) -> Result<VerilatorChipset, String> {
         let mut cmd = Command::new(&build.exe);
         cmd.arg(screen.width.to_string()).arg(screen.height.to_string());
         if let Some(p) = &vcd {
@@ -279,6 +318,7 @@ impl VerilatorChipset {
         let from_sim = BufReader::new(child.stdout.take().expect("piped stdout"));
         let mut c = VerilatorChipset {
             screen,
+            ty,
             cycle: 0,
             phases: PhaseCycles::default(),
             build,
@@ -494,7 +534,15 @@ impl Chipset for VerilatorChipset {
                     let (fi, count) = (num(1)? as usize, num(2)? as usize);
                     let words = self.words(count)?;
                     let ib = self.words(n)?;
-                    let zb = self.words(n)?;
+                    let zb = match self.ty {
+                        RcType::IV => depths_as_seen(&ib, &self.words(n)?),
+                        RcType::III => {
+                            let w = self.words(6 << 16)?;
+                            let v = |k: usize| (w[k] as u64 | (w[k + 1] as u64) << 32) as i64;
+                            let tdbv: Vec<Plane> = (0..1usize << 16).map(|i| Plane { a: v(6 * i), b: v(6 * i + 2), c: v(6 * i + 4) }).collect();
+                            crate::rc::bench::regenerated_depths(self.screen, &ib, &tdbv)
+                        }
+                    };
                     let fr = frames.get_mut(fi).ok_or("verilated chipset: a frame it was not sent")?;
                     for &w in &words {
                         let r = result_of(w).ok_or("verilated chipset: an end-of-frame word among the results")?;
@@ -503,7 +551,6 @@ impl Chipset for VerilatorChipset {
                     if fr.results.len() != fr.tris.len() {
                         return Err(format!("chipset: {} results for {} triangles", fr.results.len(), fr.tris.len()));
                     }
-                    let zb = depths_as_seen(&ib, &zb);
                     outs[fi] = Some(FrameOut { results: std::mem::take(&mut fr.results), scan: ScanOut { rgb: Vec::new(), ibuf: ib, zbuf: zb }, rc_counts: None });
                 }
                 "O" => {
@@ -517,12 +564,13 @@ impl Chipset for VerilatorChipset {
                 }
                 "F" => {
                     let fi = num(1)? as usize;
-                    let st = (2..13).map(num).collect::<Result<Vec<i64>, String>>()?;
+                    let st = (2..23).map(num).collect::<Result<Vec<i64>, String>>()?;
                     let o = |v: i64| (v >= 0).then_some(v as u64);
                     let fr = frames.get_mut(fi).ok_or("verilated chipset: a frame it was not sent")?;
                     (fr.start, fr.first_tri_taken, fr.last_cmd_taken, fr.eof) = (o(st[0]), o(st[1]), st[2] as u64, o(st[3]));
                     (fr.clear_writes, fr.z_reads, fr.setup_first, fr.drawn) = (st[4] as u64, st[5] as u64, o(st[6]), o(st[7]));
                     (fr.scan_begin, fr.scan_taken, fr.scan_done) = (o(st[8]), o(st[9]), o(st[10]));
+                    fr.traffic = PortTraffic::from_slice(&st[11..].iter().map(|&v| v as u64).collect::<Vec<u64>>());
                 }
                 "D" => {
                     self.cycle = num(1)? as u64;

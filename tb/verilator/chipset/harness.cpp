@@ -1,7 +1,8 @@
-// Verilator harness of the generated `chipset` top (hdl/src/chipset.rs), driven from Rust by
+// Verilator harness of the generated `chipset` top (hdl/src/chipset.rs), or with TYPE_III defined of
+// the `chipset3` top (hdl/src/chipset/chipset3.rs: TdbV instead of the Z-buffer), driven from Rust by
 // tb/src/verilator/mod.rs (`VerilatorChipset`) over a pipe.
 //
-//   usage: Vchipset <width> <height> [vcd-file]
+//   usage: Vchipset <width> <height> [vcd-file]      (Vchipset3 for Type III)
 //
 // The harness owns the memories behind the top's ports and drives the top exactly as the RustHDL
 // backend tb/src/chipset.rs (`RtlChipset`) does: the same phase loops, the same handshakes, the same
@@ -15,7 +16,8 @@
 // 2^16 records (address bit 16 = bank). Contents after reset: Z word i = (i * 2654435761) & 0xffffff,
 // I word j of both banks together = (j * 40503) & 0xffff (garbage with a fixed pattern, as in
 // `RtlChipset`; the first frame in each bank clears it), TdbS all zero. TdbS records are 424 bits =
-// 14 32-bit words (Verilator's VlWide<14>, word 0 holding bits 31:0).
+// 14 32-bit words (Verilator's VlWide<14>, word 0 holding bits 31:0). Type III's TdbV: 2^16 depth
+// planes (A, B 40 bits, C 56 bits, signed), all C = -2^40 after reset (as `RtlChipset3`'s).
 //
 // Protocol. Rust -> harness on stdin: a text line, then for some commands a binary payload (32-bit
 // little-endian words):
@@ -36,16 +38,27 @@
 //   Q <frame> <position>\n                            a visible triangle (see above)
 //   E <message>\n                                     the run failed (message as RtlChipset's)
 //   R <frame> <n> <bank>\n + n result words (u32, RcResult bits) + W*H I words of the drawn bank + W*H
-//                                                     Z words: the frame's end-of-frame result
+//                                                     Z words (Type III: 2^16 TdbV planes of 6 words,
+//                                                     A, B, C each as 64 bits, low word first): the
+//                                                     frame's end-of-frame result
 //   O <frame> <n>\n + n video_tdata words (u32)       the frame's scan-out ended
-//   F <frame> <11 cycle stamps, -1 for none>\n        start first_tri_taken last_cmd_taken eof
-//                                                     clear_writes z_reads setup_first drawn
-//                                                     scan_begin scan_taken scan_done
+//   F <frame> <11 cycle stamps, -1 for none>           start first_tri_taken last_cmd_taken eof
+//     <10 port counts>\n                              clear_writes z_reads setup_first drawn
+//                                                     scan_begin scan_taken scan_done, then the words
+//                                                     on each memory port (tb::chipset::PortTraffic's
+//                                                     order: Z r/w, I r/w, TdbV r/w, TdbS w, scan I
+//                                                     r/w, TdbS r)
 //   D <cycle>\n                                       the run is done
 //   V\n                                               VCD closed
 // `budget` is the number of cycles after which the run is an error (a hang, not an endless loop).
 
+#ifdef TYPE_III
+#include "Vchipset3.h"
+using Top = Vchipset3;
+#else
 #include "Vchipset.h"
+using Top = Vchipset;
+#endif
 #include "verilated.h"
 #if VM_TRACE
 #include "verilated_vcd_c.h"
@@ -70,6 +83,14 @@ constexpr int TDBS_WORDS = 14;   // 424-bit TdbS record
 constexpr size_t CONFIG_WORDS = 6;  // one Phong-constant write
 constexpr uint64_t PROGRESS_EVERY = 1 << 16;
 using Record = std::array<uint32_t, TDBS_WORDS>;
+// tb::chipset::PortTraffic's fields.
+enum Port { Z_RD, Z_WR, I_RD, I_WR, TDBV_RD, TDBV_WR, TDBS_WR, SCAN_I_RD, SCAN_I_WR, TDBS_RD, PORTS };
+// A TdbV record: the depth plane.
+struct Plane {
+    int64_t a = 0, b = 0, c = 0;
+};
+uint64_t mask(int64_t v, int bits) { return uint64_t(v) & ((uint64_t(1) << bits) - 1); }
+int64_t sign_extend(uint64_t v, int bits) { return int64_t(v << (64 - bits)) >> (64 - bits); }
 
 FILE* proto_out = nullptr;
 
@@ -84,7 +105,10 @@ class Bench {
 #if VM_TRACE
         if (vcd) ctx->traceEverOn(true);
 #endif
-        top.reset(new Vchipset{ctx.get(), "uut"});
+        top.reset(new Top{ctx.get(), "uut"});
+#ifdef TYPE_III
+        tdbv.assign(1 << 16, Plane{0, 0, -(int64_t(1) << 40)});
+#endif
         zbuf.resize(n);
         ibuf.resize(2 * n);
         for (size_t i = 0; i < n; i++) zbuf[i] = (uint32_t(i) * 2654435761u) & 0xffffffu;
@@ -132,6 +156,7 @@ class Bench {
         size_t results = 0;
         long long start = -1, first_tri_taken = -1, last_cmd_taken = 0, eof = -1, clear_writes = 0, z_reads = 0,
                   setup_first = -1, drawn = -1, scan_begin = -1, scan_taken = -1, scan_done = -1;
+        long long traffic[PORTS] = {};
     };
     std::vector<Frame> frames;
 
@@ -155,11 +180,15 @@ class Bench {
     const size_t n;
     const std::string vcd_name;
     std::unique_ptr<VerilatedContext> ctx;
-    std::unique_ptr<Vchipset> top;
+    std::unique_ptr<Top> top;
 #if VM_TRACE
     std::unique_ptr<VerilatedVcdC> tfp;
 #endif
     std::vector<uint32_t> zbuf, ibuf;
+    std::vector<Plane> tdbv;
+    Plane tdbv_rd;
+    // Words on each port in this cycle (high() counts them, run() gives them to their frames).
+    long long counts[PORTS] = {};
     std::vector<Record> tdbs;
     uint32_t z_rd = 0, id_rd = 0, is_rd = 0;
     Record t_rd;
@@ -201,8 +230,23 @@ class Bench {
         }
     }
 
+    // The RC's own memory: Type IV's Z-buffer, or Type III's TdbV.
+    bool rc_memory_active() const {
+#ifdef TYPE_III
+        return top->tdbv_re || top->tdbv_we;
+#else
+        return top->z_re || top->z_we;
+#endif
+    }
+
     void low() {
+#ifdef TYPE_III
+        top->tdbv_rd_a = mask(tdbv_rd.a, 40);
+        top->tdbv_rd_b = mask(tdbv_rd.b, 40);
+        top->tdbv_rd_c = mask(tdbv_rd.c, 56);
+#else
         top->z_rd_data = z_rd;
+#endif
         top->id_rd_data = id_rd;
         top->is_rd_data = is_rd;
         for (int k = 0; k < TDBS_WORDS; k++) top->t_rd_data[k] = t_rd[k];
@@ -226,30 +270,63 @@ class Bench {
 
     void high() {
         // Reads see the contents before this edge's writes.
+        for (long long& c : counts) c = 0;
+#ifdef TYPE_III
+        if (top->tdbv_re) {
+            tdbv_rd = tdbv[top->tdbv_rd_addr & 0xffff];
+            counts[TDBV_RD]++;
+        }
+        if (top->tdbv_we) {
+            tdbv[top->tdbv_wr_addr & 0xffff] =
+                Plane{sign_extend(top->tdbv_wr_a, 40), sign_extend(top->tdbv_wr_b, 40), sign_extend(top->tdbv_wr_c, 56)};
+            counts[TDBV_WR]++;
+        }
+#else
         if (top->z_re) {
             size_t a = top->z_rd_addr;
             if (a >= n) bad("Z read", a);
             z_rd = zbuf[a];
+            counts[Z_RD]++;
         }
-        if (top->id_re) id_rd = ibuf[ia("I read (draw side)", top->id_rd_addr)];
-        if (top->is_re) is_rd = ibuf[ia("I read (scan side)", top->is_rd_addr)];
-        if (top->t_re) t_rd = tdbs[top->t_rd_addr & 0x1ffff];
+#endif
+        if (top->id_re) {
+            id_rd = ibuf[ia("I read (draw side)", top->id_rd_addr)];
+            counts[I_RD]++;
+        }
+        if (top->is_re) {
+            is_rd = ibuf[ia("I read (scan side)", top->is_rd_addr)];
+            counts[SCAN_I_RD]++;
+        }
+        if (top->t_re) {
+            t_rd = tdbs[top->t_rd_addr & 0x1ffff];
+            counts[TDBS_RD]++;
+        }
+#ifndef TYPE_III
         if (top->z_we) {
             size_t a = top->z_wr_addr;
             if (a >= n) bad("Z write", a);
             zbuf[a] = top->z_wr_data;
+            counts[Z_WR]++;
         }
+#endif
         const bool dw = top->id_we, sw = top->is_we;
         const size_t da = top->id_wr_addr, sa = top->is_wr_addr;
         if (dw && sw && da == sa) {
             throw Failure{"chipset: both I-buffer write ports write address " + std::to_string(da) + " in cycle " +
                           std::to_string(cycle)};
         }
-        if (dw) ibuf[ia("I write (draw side)", da)] = top->id_wr_data;
-        if (sw) ibuf[ia("I write (scan side)", sa)] = top->is_wr_data;
+        if (dw) {
+            ibuf[ia("I write (draw side)", da)] = top->id_wr_data;
+            counts[I_WR]++;
+        }
+        if (sw) {
+            ibuf[ia("I write (scan side)", sa)] = top->is_wr_data;
+            counts[SCAN_I_WR]++;
+        }
         if (top->t_we) {
             Record& r = tdbs[top->t_wr_addr & 0x1ffff];
             for (int k = 0; k < TDBS_WORDS; k++) r[k] = top->t_wr_data[k];
+            counts[TDBS_WR]++;
         }
         top->clock = 1;
         top->eval();
@@ -332,7 +409,7 @@ void Bench::run(uint64_t budget) {
         const bool start_taken = scan == Scan::Start && !top->scan_busy;
         const bool scan_busy = top->scan_busy;
         if (res_f < nf) {
-            frames[res_f].z_reads += top->z_re ? 1 : 0;
+            frames[res_f].z_reads += top->id_re ? 1 : 0;
             frames[res_f].clear_writes += (top->id_we && top->id_wr_data == 0) ? 1 : 0;
         }
         const bool result = top->rc_result__024valid && res_ready;
@@ -354,7 +431,7 @@ void Bench::run(uint64_t budget) {
         }
         const size_t draw_bank = top->draw_bank;
         const bool active = rc_taken || setup_taken || start_taken || (top->rc_result__024valid && res_ready) ||
-                            (top->video_tvalid && video_ready) || top->z_re || top->z_we || top->id_we || top->is_we ||
+                            (top->video_tvalid && video_ready) || rc_memory_active() || top->id_re || top->id_we || top->is_we ||
                             top->t_we || scan == Scan::Config;
         // The host answers a visible result at once (its command is offered from the next cycle).
         bool eof = false;
@@ -378,6 +455,13 @@ void Bench::run(uint64_t budget) {
             }
         }
         high();
+        // The draw side's words go to the frame being drawn (the RC's to res_f, colour setup's to
+        // draw_f), the scan side's to scan_f (as RtlChipset::run).
+        if (res_f < nf) {
+            for (Port p : {Z_RD, Z_WR, I_RD, I_WR, TDBV_RD, TDBV_WR}) frames[res_f].traffic[p] += counts[p];
+        }
+        if (draw_f < nf) frames[draw_f].traffic[TDBS_WR] += counts[TDBS_WR];
+        for (Port p : {SCAN_I_RD, SCAN_I_WR, TDBS_RD}) frames[scan_f].traffic[p] += counts[p];
         const long long now = (long long)cycle;
         if (rc_taken) {
             rc_presenting = false;
@@ -401,7 +485,19 @@ void Bench::run(uint64_t budget) {
             fprintf(proto_out, "R %zu %zu %zu\n", res_f, res.size(), draw_bank);
             put_words(res.data(), res.size());
             put_words(ibuf.data() + draw_bank * n, n);
+#ifdef TYPE_III
+            std::vector<uint32_t> planes;
+            planes.reserve(6 * tdbv.size());
+            for (const Plane& p : tdbv) {
+                for (int64_t v : {p.a, p.b, p.c}) {
+                    planes.push_back(uint32_t(uint64_t(v)));
+                    planes.push_back(uint32_t(uint64_t(v) >> 32));
+                }
+            }
+            put_words(planes.data(), planes.size());
+#else
             put_words(zbuf.data(), n);
+#endif
             fflush(proto_out);
             res_f++;
         }
@@ -455,9 +551,11 @@ void Bench::run(uint64_t budget) {
     }
     for (size_t f = 0; f < nf; f++) {
         const Frame& fr = frames[f];
-        fprintf(proto_out, "F %zu %lld %lld %lld %lld %lld %lld %lld %lld %lld %lld %lld\n", f, fr.start, fr.first_tri_taken,
+        fprintf(proto_out, "F %zu %lld %lld %lld %lld %lld %lld %lld %lld %lld %lld %lld", f, fr.start, fr.first_tri_taken,
                 fr.last_cmd_taken, fr.eof, fr.clear_writes, fr.z_reads, fr.setup_first, fr.drawn, fr.scan_begin,
                 fr.scan_taken, fr.scan_done);
+        for (long long t : fr.traffic) fprintf(proto_out, " %lld", t);
+        fprintf(proto_out, "\n");
     }
     fprintf(proto_out, "D %llu\n", (unsigned long long)cycle);
     fflush(proto_out);
