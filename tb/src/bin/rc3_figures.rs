@@ -9,8 +9,9 @@
 //! the scan-out), so clears and scan-out reads are not in these counts.
 //!
 //! `--chipset`: the whole chipset (`chipset` and `chipset3`, their generated Verilog under Verilator),
-//! every memory port of the top counted by the backend in the second of two frames back to back (no
-//! clear after reset; the I-buffer is cleared behind the scan-out), beside the analysis model's accesses
+//! every memory port of the top counted by the backend in the third of three frames back to back (the
+//! first two clear their I-buffer bank after reset; the third finds its bank cleared behind the
+//! scan-out), beside the analysis model's accesses
 //! for the same buffers (`golden::analysis::bandwidth::accesses`, seed 000 Figs. 11-12).
 
 use golden::format::Screen;
@@ -86,7 +87,7 @@ fn chipset() -> Result<(), String> {
     use tb::chipset::{I_BYTES, TDBS_BYTES};
     use tb::verilator::VerilatorChipset;
     let screen = Screen::new(320, 200)?;
-    println!("| scene | type | Z r / w (words) | I draw r / w | I scan r / w | TdbV r / w | TdbS w / r | bytes per frame | analysis: accesses (bytes) |");
+    println!("| scene | type | Z r / w (words) | I draw r / w | I scan r / w | TdbV r / w | TdbS w / r | bytes: RC / whole frame | analysis: accesses (bytes, whole frame) |");
     println!("|---|---|---|---|---|---|---|---|---|");
     for name in golden::scene::builtin::SCENES {
         let mesh = golden::scene::builtin::scene(name)?;
@@ -94,12 +95,12 @@ fn chipset() -> Result<(), String> {
             let mut opts = RenderOptions::for_scene(&mesh, screen, golden::shade::Shading::Gouraud);
             opts.rc_type = ty;
             let mut chip = VerilatorChipset::of_type(ty, screen, None, tb::chipset::VcdScope::Ports)?;
-            let frames = render_frames_with(&[(&mesh, &opts), (&mesh, &opts)], &mut chip)?;
+            let frames = render_frames_with(&[(&mesh, &opts), (&mesh, &opts), (&mesh, &opts)], &mut chip)?;
             let golden = render(&mesh, &opts)?;
             if frames.iter().any(|f| f.rgb != golden.rgb || f.hw_index != golden.hw_index) {
                 return Err(format!("{name}: a Type {} chipset frame differs from golden", ty.name()));
             }
-            let t = &chip.frame_phases[1].traffic;
+            let t = &chip.frame_phases[2].traffic;
             let (rr, rw) = t.rasterization_bytes();
             let bytes = rr + rw + (t.scan_i_reads + t.scan_i_writes) * I_BYTES + (t.tdbs_writes + t.tdbs_reads) * TDBS_BYTES;
             let m = golden::analysis::measure::measure(&mesh, &RenderOptions { rc_type: RcType::IV, ..opts.clone() })?;
@@ -112,7 +113,7 @@ fn chipset() -> Result<(), String> {
             let predicted: Vec<String> = bufs.iter().map(|&(b, _)| format!("{} {:.0}", b.name(), accesses(arch, b, &tr))).collect();
             let predicted_bytes: f64 = bufs.iter().map(|&(b, w)| accesses(arch, b, &tr) * w as f64).sum();
             println!(
-                "| {name} | {} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | {bytes} | {} ({predicted_bytes:.0}) |",
+                "| {name} | {} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {bytes} | {} ({predicted_bytes:.0}) |",
                 ty.name(),
                 t.z_reads,
                 t.z_writes,
@@ -124,6 +125,7 @@ fn chipset() -> Result<(), String> {
                 t.tdbv_writes,
                 t.tdbs_writes,
                 t.tdbs_reads,
+                rr + rw,
                 predicted.join(", ")
             );
         }
