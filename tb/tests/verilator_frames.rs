@@ -1,8 +1,8 @@
-//! Whole frames through the generated Verilog of the `chipset` top under Verilator
-//! (`tb::verilator::VerilatorChipset`), driven by the golden model's host program: equal to the
-//! algorithmic golden model byte for byte, and cycle for cycle equal to the RustHDL simulation of the
-//! same top (`tb::chipset::RtlChipset`). Skipped, with a printed message, where `verilator` is not
-//! installed (the test script installs it).
+//! Whole frames through the generated Verilog of the `chipset` top (and of the Type III `chipset3`)
+//! under Verilator (`tb::verilator::VerilatorChipset`), driven by the golden model's host program: equal
+//! to the algorithmic golden model byte for byte, and cycle for cycle equal to the RustHDL simulation
+//! of the same top (`tb::chipset::RtlChipsetOf`). A missing `verilator` fails each test
+//! (`tb::common::require_tools`; the test script installs it).
 
 use golden::format::Screen;
 use golden::render::{render, render_frames_with, render_with, Frame, RenderOptions};
