@@ -430,8 +430,6 @@ pub struct RtlChipsetOf<T: ChipsetTop> {
     id_rd: u32,
     is_rd: u32,
     t_rd: TdbsRecord,
-    /// Words on each port since the last `take_traffic`, by the frame they belong to (see `run`).
-    draw_traffic: PortTraffic,
     pub cycle: u64,
     /// Cycles per phase of the last frame.
     pub phases: PhaseCycles,
@@ -517,18 +515,21 @@ impl<T: ChipsetTop> RtlChipsetOf<T> {
         };
         // After reset the memories hold garbage; the first frame's clear puts them in order.
         let n = screen.pixels();
-        // TdbV's garbage: a plane whose depth would win over most fragments, were it ever read.
-        let tdbv = if T::TYPE == RcType::III { vec![Plane { a: 0, b: 0, c: -1 << 40 }; 1 << 16] } else { Vec::new() };
+        // The RC's memory: Type IV's Z-buffer, or Type III's TdbV, whose garbage is a plane whose depth
+        // would win over most fragments, were it ever read.
+        let (zbuf, tdbv) = match T::TYPE {
+            RcType::IV => ((0..n).map(|i| (i as u32).wrapping_mul(2654435761) & DEPTH_MAX).collect(), Vec::new()),
+            RcType::III => (Vec::new(), vec![Plane { a: 0, b: 0, c: -1 << 40 }; 1 << 16]),
+        };
         Ok(RtlChipsetOf {
             screen,
             uut,
-            rc_mem: RcMemory { zbuf: (0..n).map(|i| (i as u32).wrapping_mul(2654435761) & DEPTH_MAX).collect(), z_rd: 0, tdbv, tdbv_rd: Plane::default() },
+            rc_mem: RcMemory { zbuf, z_rd: 0, tdbv, tdbv_rd: Plane::default() },
             ibuf: (0..2 * n).map(|i| (i as u32).wrapping_mul(40503) & 0xffff).collect(),
             tdbs: vec![TdbsRecord::default(); 2 << 16],
             id_rd: 0,
             is_rd: 0,
             t_rd: TdbsRecord::default(),
-            draw_traffic: PortTraffic::default(),
             cycle: 0,
             phases: PhaseCycles::default(),
             frame_phases: Vec::new(),
@@ -592,15 +593,15 @@ impl<T: ChipsetTop> RtlChipsetOf<T> {
         self.settle()
     }
 
-    /// The edge; the words on each port are counted in `t` (draw side) and `scan` (scan side).
-    fn high(&mut self, scan: &mut PortTraffic) -> Result<(), String> {
+    /// The edge; returns the words on each port in this cycle.
+    fn high(&mut self) -> Result<PortTraffic, String> {
         let n = self.screen.pixels();
         let cycle = self.cycle;
         let bad = |what: &str, a: usize| format!("chipset: {what} address {a:#x} outside the buffer (W*H = {n} words per bank) in cycle {cycle}");
         // I-buffer address: bit 20 the bank, bits 19:0 the pixel.
         let ia = |what: &str, a: usize| if a & 0xfffff < n { Ok((a >> 20) * n + (a & 0xfffff)) } else { Err(bad(what, a)) };
-        let t = &mut self.draw_traffic;
-        self.uut.rc_memory_edge(&mut self.rc_mem, t, cycle)?;
+        let mut t = PortTraffic::default();
+        self.uut.rc_memory_edge(&mut self.rc_mem, &mut t, cycle)?;
         let u = self.uut.host();
         // Reads see the contents before this edge's writes.
         if u.id_re.val() {
@@ -609,11 +610,11 @@ impl<T: ChipsetTop> RtlChipsetOf<T> {
         }
         if u.is_re.val() {
             self.is_rd = self.ibuf[ia("I read (scan side)", u.is_rd_addr.val().index())?];
-            scan.scan_i_reads += 1;
+            t.scan_i_reads += 1;
         }
         if u.t_re.val() {
             self.t_rd = self.tdbs[u.t_rd_addr.val().index()];
-            scan.tdbs_reads += 1;
+            t.tdbs_reads += 1;
         }
         let (dw, sw) = (u.id_we.val(), u.is_we.val());
         let (da, sa) = (u.id_wr_addr.val().index(), u.is_wr_addr.val().index());
@@ -626,7 +627,7 @@ impl<T: ChipsetTop> RtlChipsetOf<T> {
         }
         if sw {
             self.ibuf[ia("I write (scan side)", sa)?] = u.is_wr_data.val().to_u64() as u32;
-            scan.scan_i_writes += 1;
+            t.scan_i_writes += 1;
         }
         if u.t_we.val() {
             let a = u.t_wr_addr.val().index();
@@ -636,7 +637,7 @@ impl<T: ChipsetTop> RtlChipsetOf<T> {
         u.clock.next = true.into();
         self.settle()?;
         self.cycle += 1;
-        Ok(())
+        Ok(t)
     }
 
     fn idle_inputs(&mut self) {
@@ -896,19 +897,17 @@ impl<T: ChipsetTop> Chipset for RtlChipsetOf<T> {
                     queue.push_back((res_f, command_of(&SetupCmd::from_command(&c)?)));
                 }
             }
-            let mut scan_t = PortTraffic::default();
-            self.high(&mut scan_t)?;
+            let words = self.high()?;
             // The draw side's words go to the frame being drawn: the RC's to frame res_f (its end of
             // frame result ends them), colour setup's to frame draw_f; the scan side's to frame scan_f.
-            let dt = std::mem::take(&mut self.draw_traffic);
             if let Some(fr) = frames.get_mut(res_f) {
-                fr.traffic.add_rc(&dt);
+                fr.traffic.add_rc(&words);
             }
             if let Some(fr) = frames.get_mut(draw_f) {
-                fr.traffic.tdbs_writes += dt.tdbs_writes;
+                fr.traffic.tdbs_writes += words.tdbs_writes;
             }
             if let Some(fr) = frames.get_mut(scan_f) {
-                fr.traffic.add_scan(&scan_t);
+                fr.traffic.add_scan(&words);
             }
             let now = self.cycle;
             if rc_taken {
