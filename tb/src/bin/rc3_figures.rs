@@ -19,10 +19,8 @@ use golden::raster::RcType;
 use tb::rc::bench::{run_rtl_of, Drive};
 use tb::rc::stimulus::{frame, reference_of, scene_triangles};
 
-/// Bytes per entry: Z 24 bits, I 16 bits, a TdbV record (A 40 + B 40 + C 56 bits) 136 bits = 17 bytes.
-const Z_BYTES: u64 = 3;
-const I_BYTES: u64 = 2;
-const TDBV_BYTES: u64 = 17;
+// Bytes per entry (Z 3, I 2, a TdbV record 17, a TdbS record 53): the backends' own, `tb::chipset`.
+use tb::chipset::{I_BYTES, TDBS_BYTES, TDBV_BYTES, Z_BYTES};
 
 fn main() {
     if let Err(e) = run() {
@@ -84,7 +82,6 @@ fn chipset() -> Result<(), String> {
     use golden::analysis::bandwidth::accesses;
     use golden::analysis::buffers::{Arch, Buffer};
     use golden::render::{render, render_frames_with, RenderOptions};
-    use tb::chipset::{I_BYTES, TDBS_BYTES};
     use tb::verilator::VerilatorChipset;
     let screen = Screen::new(320, 200)?;
     println!("| scene | type | Z r / w (words) | I draw r / w | I scan r / w | TdbV r / w | TdbS w / r | bytes: RC / whole frame | analysis: accesses (bytes, whole frame) |");
@@ -107,8 +104,8 @@ fn chipset() -> Result<(), String> {
             let tr = golden::analysis::traffic(&m, false);
             let arch = if ty == RcType::IV { Arch::TypeIV } else { Arch::TypeIII };
             let bufs: &[(Buffer, u64)] = match ty {
-                RcType::IV => &[(Buffer::Z, tb::chipset::Z_BYTES), (Buffer::I, I_BYTES), (Buffer::TdbS, TDBS_BYTES)],
-                RcType::III => &[(Buffer::I, I_BYTES), (Buffer::TdbV, tb::chipset::TDBV_BYTES), (Buffer::TdbS, TDBS_BYTES)],
+                RcType::IV => &[(Buffer::Z, Z_BYTES), (Buffer::I, I_BYTES), (Buffer::TdbS, TDBS_BYTES)],
+                RcType::III => &[(Buffer::I, I_BYTES), (Buffer::TdbV, TDBV_BYTES), (Buffer::TdbS, TDBS_BYTES)],
             };
             let predicted: Vec<String> = bufs.iter().map(|&(b, _)| format!("{} {:.0}", b.name(), accesses(arch, b, &tr))).collect();
             let predicted_bytes: f64 = bufs.iter().map(|&(b, w)| accesses(arch, b, &tr) * w as f64).sum();
