@@ -8,6 +8,7 @@
 //!   by a recording `Chipset`, the golden TdbS, the hardware I-buffer);
 //! * [`replay`]: the generated Verilog replays recorded vectors under Icarus Verilog; lint and synthesis;
 //! * [`pack`]: golden types <-> RTL port words.
+//! * [`stimulus`]: random commands, records and constants; the recordings the Verilog replays.
 
 pub mod color_shader_bench;
 pub mod colour_setup_bench;
@@ -15,5 +16,6 @@ pub mod frames;
 pub mod pack;
 pub mod replay;
 
+pub mod stimulus;
 #[cfg(test)]
 mod tests;

@@ -220,3 +220,31 @@ impl<B: OppTop> OppDrive for Watched<'_, B> {
         self.watchdog.check(self.top.cycles(), progress, phase, self.top.trace())
     }
 }
+
+/// Random triangles on a small screen, at most `max_ops` OPs needed with reuse; some big and some in
+/// front of others so that lists have partial and full entries, insertions and drops.
+pub fn random_objects(rng: &mut crate::common::Rng, screen: Screen, count: usize, max_ops: usize) -> Vec<ObjectParams> {
+    let mut objs: Vec<ObjectParams> = Vec::new();
+    let (w, h) = (screen.width as i64 * 16, screen.height as i64 * 16);
+    let mut tries = 0;
+    while objs.len() < count && tries < 10 * count {
+        tries += 1;
+        let big = rng.chance(20);
+        let span = if big { w.max(h) } else { 12 * 16 };
+        let cx = rng.below((w + 64) as u64) as i64 - 32;
+        let cy = rng.below((h + 64) as u64) as i64 - 32;
+        let v = [0, 1, 2].map(|_| golden::format::WinVertex {
+            x: (cx + rng.below(span as u64) as i64 - span / 2) as i32,
+            y: (cy + rng.below(span as u64) as i64 - span / 2) as i32,
+            z: rng.below(1 << 24) as u32,
+        });
+        let n = [0, 1, 2].map(|_| [0, 1, 2].map(|_| rng.below(32768) as i64 - 16384));
+        if let Some(p) = golden::proof::setup::object_setup(&v, n, objs.len() as u16, screen) {
+            objs.push(p);
+            if golden::proof::render::ops_needed(screen, &objs) as usize > max_ops {
+                objs.pop();
+            }
+        }
+    }
+    objs
+}

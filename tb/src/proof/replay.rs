@@ -133,7 +133,7 @@ pub fn replay(sim: &str, dir: &Path, top: &str, ports: &[Port], verilog: &str, v
         "iverilog" => {
             let exe = dir.join(format!("tb_{top}.vvp"));
             run(Command::new("iverilog").args(["-g2012", "-o"]).arg(&exe).arg(&tbv).arg(&dut))?;
-            run(Command::new("vvp").arg("-n").arg(&exe))?
+            run(Command::new("timeout").args(["600", "vvp", "-n"]).arg(&exe))?
         }
         "verilator" => {
             let mdir = dir.join("obj_dir");

@@ -1,6 +1,6 @@
 //! PROOF testbenches (run with `cargo test --release -p tb proof`).
 
-use super::bench::run_frame;
+use super::bench::{random_objects, run_frame};
 use super::replay::replay;
 use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted, Rng};
 use golden::format::{Screen, WinVertex};
@@ -8,34 +8,6 @@ use golden::proof::cycle_opp::{run_opp, Gaps};
 use golden::proof::format::ObjectParams;
 use golden::proof::render::{object_lists, ops_needed};
 use golden::proof::setup::object_setup;
-
-/// Random triangles on a small screen, at most `max_ops` OPs needed with reuse; some big and some in
-/// front of others so that lists have partial and full entries, insertions and drops.
-fn random_objects(rng: &mut Rng, screen: Screen, count: usize, max_ops: usize) -> Vec<ObjectParams> {
-    let mut objs: Vec<ObjectParams> = Vec::new();
-    let (w, h) = (screen.width as i64 * 16, screen.height as i64 * 16);
-    let mut tries = 0;
-    while objs.len() < count && tries < 10 * count {
-        tries += 1;
-        let big = rng.chance(20);
-        let span = if big { w.max(h) } else { 12 * 16 };
-        let cx = rng.below((w + 64) as u64) as i64 - 32;
-        let cy = rng.below((h + 64) as u64) as i64 - 32;
-        let v = [0, 1, 2].map(|_| WinVertex {
-            x: (cx + rng.below(span as u64) as i64 - span / 2) as i32,
-            y: (cy + rng.below(span as u64) as i64 - span / 2) as i32,
-            z: rng.below(1 << 24) as u32,
-        });
-        let n = [0, 1, 2].map(|_| [0, 1, 2].map(|_| rng.below(32768) as i64 - 16384));
-        if let Some(p) = object_setup(&v, n, objs.len() as u16, screen) {
-            objs.push(p);
-            if ops_needed(screen, &objs) as usize > max_ops {
-                objs.pop();
-            }
-        }
-    }
-    objs
-}
 
 fn frame_matches(name: &str, seed: u64, screen: Screen, objs: &[ObjectParams], n: usize, depth: usize, gaps: Option<Gaps>) {
     let want = object_lists(screen, objs);

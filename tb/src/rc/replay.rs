@@ -129,6 +129,12 @@ pub fn replay_dumping(sim: Simulator, screen: Screen, vectors: &Path, vcd: Optio
     let tag = format!("rc_replay_{}x{}_{:?}", screen.width, screen.height, sim).to_lowercase();
     let dir = scratch_dir(&tag);
     let rc_v = write_rc_verilog(screen, &dir)?;
+    replay_verilog(sim, screen, &rc_v, &dir, vectors, vcd)
+}
+
+/// As [`replay_dumping`], of the module `rc` in the Verilog file `rc_v` (the generated one, or a
+/// mutant of it), building in `dir`. Icarus runs under `timeout` (a mutant may never settle).
+pub fn replay_verilog(sim: Simulator, screen: Screen, rc_v: &Path, dir: &Path, vectors: &Path, vcd: Option<&Path>) -> Result<u64, String> {
     let words = screen.pixels().to_string();
     let plusarg = format!("+vectors={}", vectors.display());
     let text = match sim {
@@ -139,9 +145,9 @@ pub fn replay_dumping(sim: Simulator, screen: Screen, vectors: &Path, vcd: Optio
             if vcd.is_some() {
                 c.arg("-DDUMP_VCD");
             }
-            run(c.arg(harness()).arg(&rc_v), "iverilog")?;
-            let mut c = Command::new("vvp");
-            c.arg("-n").arg(&exe).arg(&plusarg);
+            run(c.arg(harness()).arg(rc_v), "iverilog")?;
+            let mut c = Command::new("timeout");
+            c.args(["600", "vvp", "-n"]).arg(&exe).arg(&plusarg);
             if let Some(v) = vcd {
                 c.arg(format!("+vcd={}", v.display()));
             }
@@ -157,7 +163,7 @@ pub fn replay_dumping(sim: Simulator, screen: Screen, vectors: &Path, vcd: Optio
                     .arg(&obj)
                     .args(["-o", "vtb_rc"])
                     .arg(harness())
-                    .arg(&rc_v),
+                    .arg(rc_v),
                 "verilator",
             )?;
             run(Command::new(obj.join("vtb_rc")).arg(&plusarg), "verilated testbench")?

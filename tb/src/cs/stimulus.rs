@@ -1,0 +1,153 @@
+//! Random stimulus of colour setup and the Color Shader, shared by their tests and the mutation
+//! cover (`crate::mutation`): commands, TdbS records, I-buffers and Phong constants at the formats'
+//! limits, and the recordings the Verilog replays use.
+
+use super::color_shader_bench::{self as csb, CsDrive, FrameSpec};
+use super::colour_setup_bench::{self as setb, SetupDrive};
+use super::replay::Recording;
+use crate::common::Rng;
+use golden::cycle::color_shader::{phong_config, CsConfigWrite, CsMemories};
+use golden::cycle::colour_setup::SetupCmd;
+use golden::format::Plane;
+use golden::format::{CS_GLOSS_LOG2_MAX, CS_LIGHTS, CS_MATERIALS};
+use golden::shade::{normal_q14, PhongLights, PhongMaterial, TdbsEntry};
+
+pub fn rand_i16(rng: &mut Rng, lo: i32, hi: i32) -> i16 {
+    (lo + rng.below((hi - lo) as u64) as i32) as i16
+}
+
+/// Random colour-setup commands: flat ones, zero-area ones, realistic Gouraud and Phong ones, tiny
+/// triangles with steep gradients (A/B saturation), and full-range 16-bit fields (C saturation).
+pub fn random_commands(n: usize, rng: &mut Rng) -> Vec<SetupCmd> {
+    (0..n)
+        .map(|i| {
+            let index = 1 + rng.below(65535) as u16;
+            let material = rng.below(4) as u16;
+            let mut c = SetupCmd { index, material, ..Default::default() };
+            let kind = rng.below(10);
+            let (lo, hi, span) = match kind {
+                0 | 1 => (-32768, 32767, 65535),
+                2 => (-4000, 8000, 4),
+                _ => (-5120, 10240, 4000),
+            };
+            let x0 = rand_i16(rng, lo, hi) as i32;
+            let y0 = rand_i16(rng, lo, hi) as i32;
+            for k in 0..3 {
+                let dx = rng.below(2 * span as u64 + 1) as i32 - span;
+                let dy = rng.below(2 * span as u64 + 1) as i32 - span;
+                c.x[k] = (x0 + if k == 0 { 0 } else { dx }).clamp(-32768, 32767) as i16;
+                c.y[k] = (y0 + if k == 0 { 0 } else { dy }).clamp(-32768, 32767) as i16;
+            }
+            for k in 0..3 {
+                for ch in 0..3 {
+                    c.values[k][ch] = match kind {
+                        0 | 2 => rand_i16(rng, -32768, 32767),
+                        4 => rand_i16(rng, -16384, 16385),
+                        _ => rand_i16(rng, 0, 256),
+                    };
+                }
+            }
+            if kind == 3 {
+                // Zero area: vertex 2 on the line through vertices 0 and 1 (or all three equal).
+                let t = if i % 2 == 0 { 2 } else { 0 };
+                c.x[2] = (c.x[0] as i32 + t * (c.x[1] as i32 - c.x[0] as i32)).clamp(-32768, 32767) as i16;
+                c.y[2] = (c.y[0] as i32 + t * (c.y[1] as i32 - c.y[0] as i32)).clamp(-32768, 32767) as i16;
+                if t == 0 {
+                    c.x[1] = c.x[0];
+                    c.y[1] = c.y[0];
+                }
+            }
+            if kind == 5 {
+                c.flat = true;
+                c.flat_rgb = [rng.below(256) as u8, rng.below(256) as u8, rng.below(256) as u8];
+            }
+            c
+        })
+        .collect()
+}
+
+/// A random plane: mostly within the formats' useful range, sometimes at the extremes.
+pub fn random_plane(rng: &mut Rng) -> Plane {
+    let pick = |rng: &mut Rng, bits: u32, frac_of: u64| -> i64 {
+        match rng.below(8) {
+            0 => -(1i64 << (bits - 1)),
+            1 => (1i64 << (bits - 1)) - 1,
+            2 => (rng.next_u64() as i64) >> (64 - bits),
+            _ => (rng.below(2 * frac_of + 1) as i64) - frac_of as i64,
+        }
+    };
+    Plane { a: pick(rng, 40, 3 << 16), b: pick(rng, 40, 3 << 16), c: pick(rng, 56, 300 << 16) }
+}
+
+/// Memories with random TdbS records and a random I-buffer of `w` x `h` (a quarter background).
+pub fn random_memories(rng: &mut Rng, w: u32, h: u32, records: usize) -> CsMemories {
+    let tdbs: Vec<TdbsEntry> =
+        (0..records).map(|_| TdbsEntry { planes: [random_plane(rng), random_plane(rng), random_plane(rng)], material: rng.below(65536) as u16 }).collect();
+    let ibuf = (0..w * h).map(|_| if rng.chance(25) { 0 } else { 1 + rng.below(records as u64 - 1) as u16 }).collect();
+    let zbuf = (0..w * h).map(|_| rng.below(1 << 24) as u32).collect();
+    CsMemories::new(ibuf, zbuf, tdbs)
+}
+
+/// Random Phong constants at the RTL's limits: [`CS_LIGHTS`] lights (unit L and H, sometimes any
+/// 16-bit vector), [`CS_MATERIALS`] materials with coefficients anywhere in 16 bits and every gloss.
+pub fn random_lights(rng: &mut Rng) -> PhongLights {
+    let vector = |rng: &mut Rng| -> [i64; 3] {
+        if rng.chance(15) {
+            [0, 1, 2].map(|_| rng.below(65536) as i64 - 32768)
+        } else {
+            let v = [0, 1, 2].map(|_| rng.below(2001) as f64 - 1000.0);
+            normal_q14([v[0], v[1], v[2] + 0.5])
+        }
+    };
+    let l = (0..CS_LIGHTS).map(|_| vector(rng)).collect();
+    let h = (0..CS_LIGHTS).map(|_| vector(rng)).collect();
+    let c = |rng: &mut Rng| [0, 1, 2].map(|_| if rng.chance(10) { 65535 } else { rng.below(1 << 15) as i64 });
+    let materials = (0..CS_MATERIALS)
+        .map(|_| PhongMaterial {
+            ambient: c(rng),
+            diffuse: (0..CS_LIGHTS).map(|_| c(rng)).collect(),
+            specular: (0..CS_LIGHTS).map(|_| c(rng)).collect(),
+            gloss_log2: rng.below(CS_GLOSS_LOG2_MAX as u64 + 1) as u32,
+        })
+        .collect();
+    PhongLights { l, h, materials }
+}
+
+/// Writes the CS must ignore: light addresses past its units, material slots past its lights.
+pub fn ignored_writes(rng: &mut Rng) -> Vec<CsConfigWrite> {
+    let mut w = vec![CsConfigWrite::Light { address: CS_LIGHTS as u32, l: [123, -5, 77], h: [-1, -2, -3] }];
+    for slot in CS_LIGHTS as u32 + 1..8 {
+        w.push(CsConfigWrite::Material { address: rng.below(CS_MATERIALS as u64) as u32, slot, words: [0xffff; 6] });
+    }
+    w
+}
+
+
+/// The recording that colour setup's Verilog replays: 60 random commands with 30% input gaps, run
+/// on the RTL against the cycle model (which fails first if they differ).
+pub fn colour_setup_replay_recording(seed: u64) -> Result<Recording, String> {
+    let mut rng = Rng::new(seed);
+    let cmds = random_commands(60, &mut rng);
+    let run = setb::run_rtl_vs_model("colour_setup_replay", &cmds, SetupDrive { gap_percent: 30, seed }, true)?;
+    run.recording.ok_or_else(|| "colour setup bench: no recording".to_string())
+}
+
+/// The recording that the CS's Verilog replays: four frames (Phong and Gouraud, a clear behind the
+/// scan-out, a 2000x1 line) over random TdbS records and constants, with ignored configuration
+/// writes, 35% output stalls and starts while busy.
+pub fn cs_replay_recording(seed: u64) -> Result<Recording, String> {
+    let mut rng = Rng::new(seed);
+    let mut mem = random_memories(&mut rng, 40, 12, 100);
+    let lights = random_lights(&mut rng);
+    let mut config = ignored_writes(&mut rng);
+    config.extend(phong_config(&lights)?);
+    let frames = [
+        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: false, phong: true },
+        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: true, phong: false },
+        FrameSpec { width: 2000, height: 1, background: [0; 3], clear_behind: false, phong: false },
+        FrameSpec { width: 40, height: 12, background: [4, 5, 6], clear_behind: false, phong: true },
+    ];
+    let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed };
+    let run = csb::run_rtl_vs_model("cs_replay", &mut mem, &frames, &config, drive, true)?;
+    run.recording.ok_or_else(|| "CS bench: no recording".to_string())
+}
