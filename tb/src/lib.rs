@@ -17,3 +17,4 @@ pub mod rc;
 pub mod proof;
 pub mod verilator;
 pub mod backend;
+pub mod mutation;

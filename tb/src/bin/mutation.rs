@@ -1,0 +1,106 @@
+//! Mutation cover of one top's generated netlist (`tb::mutation`): `mutation TOP N [--seed S] [--jobs J]`.
+//! Prints one line per mutant and writes `target/mutation/TOP.json` with the counts drawn, killed,
+//! equivalent and surviving, and every mutant's command and verdict. `scripts/mutation.sh` runs it.
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+use tb::mutation::{draw, judge, target, work_dir, write_mutants, yosys_netlist, Outcome, TOPS};
+
+const USAGE: &str = "usage: mutation TOP N [--seed S] [--jobs J]   (TOP: rc, colour_setup, cs, opp; N mutants, at least 1)";
+
+fn main() {
+    if let Err(e) = run() {
+        eprintln!("error: {e}");
+        std::process::exit(1);
+    }
+}
+
+fn run() -> Result<(), String> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut pos = Vec::new();
+    let (mut seed, mut jobs) = (1u64, std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1));
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = |name: &str| -> Result<u64, String> {
+            let v = it.next().ok_or(format!("{name} needs a value\n{USAGE}"))?;
+            v.parse().map_err(|_| format!("{name}: '{v}' is not a whole number\n{USAGE}"))
+        };
+        match a.as_str() {
+            "--seed" => seed = value("--seed")?,
+            "--jobs" => jobs = value("--jobs")?.max(1) as usize,
+            s if s.starts_with("--") => return Err(format!("unknown option {s}\n{USAGE}")),
+            s => pos.push(s.to_string()),
+        }
+    }
+    let [top, n] = pos.as_slice() else { return Err(USAGE.into()) };
+    if !TOPS.contains(&top.as_str()) {
+        return Err(format!("unknown top '{top}'\n{USAGE}"));
+    }
+    let n: usize = n.parse().ok().filter(|&n| n > 0).ok_or(format!("N: '{n}' is not a positive number\n{USAGE}"))?;
+
+    let dir = work_dir(top);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let t = target(top, &dir)?;
+    println!("{top}: stimulus {}", t.stimulus);
+    // The replay must pass on the generated Verilog and on the unmutated netlist that Yosys writes,
+    // or every mutant would count as killed.
+    t.replay(&t.verilog, &dir.join("run_generated")).map_err(|e| format!("the generated Verilog fails its own replay: {e}"))?;
+    let netlist = yosys_netlist(&t, &dir)?;
+    t.replay(&netlist, &dir.join("run_netlist")).map_err(|e| format!("Yosys's unmutated netlist fails the replay: {e}"))?;
+    let cmds = draw(n, seed, &dir)?;
+    write_mutants(&cmds, &dir)?;
+    println!("{top}: {n} mutants drawn (seed {seed}), the unmutated netlist replays clean; {jobs} jobs");
+
+    let next = AtomicUsize::new(0);
+    let results: Mutex<Vec<Option<Outcome>>> = Mutex::new(vec![None; n]);
+    let t0 = std::time::Instant::now();
+    std::thread::scope(|s| {
+        for _ in 0..jobs {
+            s.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::SeqCst);
+                if i >= n {
+                    break;
+                }
+                let o = judge(&t, &cmds[i], &dir, i);
+                let detail = match &o {
+                    Outcome::Killed(d) | Outcome::Surviving(d) | Outcome::Error(d) => d.clone(),
+                    Outcome::Equivalent => "equiv_induct proves every equivalence".into(),
+                };
+                println!("{top} mutant {i:4}: {:10} {} | {detail}", o.name(), short(&cmds[i]));
+                if !matches!(o, Outcome::Killed(_)) {
+                    let _ = std::fs::remove_dir_all(dir.join(format!("run_{i}")));
+                }
+                results.lock().unwrap()[i] = Some(o);
+            });
+        }
+    });
+    let results: Vec<Outcome> = results.into_inner().unwrap().into_iter().map(|o| o.expect("every mutant judged")).collect();
+    let count = |name: &str| results.iter().filter(|o| o.name() == name).count();
+    let (killed, equivalent, surviving, errors) = (count("killed"), count("equivalent"), count("surviving"), count("error"));
+    let json = serde_json::json!({
+        "top": top,
+        "stimulus": t.stimulus,
+        "seed": seed,
+        "drawn": n,
+        "killed": killed,
+        "equivalent": equivalent,
+        "surviving": surviving,
+        "errors": errors,
+        "seconds": t0.elapsed().as_secs_f64().round(),
+        "mutants": results.iter().zip(&cmds).map(|(o, c)| serde_json::json!({
+            "command": c,
+            "outcome": o.name(),
+            "detail": match o { Outcome::Killed(d) | Outcome::Surviving(d) | Outcome::Error(d) => d.as_str(), Outcome::Equivalent => "" },
+        })).collect::<Vec<_>>(),
+    });
+    let out = dir.parent().unwrap().join(format!("{top}.json"));
+    std::fs::write(&out, serde_json::to_string_pretty(&json).unwrap()).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
+    println!("{top}: drawn {n}, killed {killed}, equivalent {equivalent}, surviving {surviving}, errors {errors} ({:.0} s); {}", t0.elapsed().as_secs_f64(), out.display());
+    Ok(())
+}
+
+/// The mutation without its source locations.
+fn short(cmd: &str) -> String {
+    cmd.split(" -src ").next().unwrap_or(cmd).trim_start_matches("mutate ").to_string()
+}

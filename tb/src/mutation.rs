@@ -1,0 +1,233 @@
+//! Mutation cover of the generated netlists, by the method of YosysHQ's mcy: Yosys draws mutations of a
+//! top's netlist (`mutate -list N`), each mutant is written out as Verilog and replayed under Icarus on
+//! the vectors that the top's Verilog replay test uses (every cycle's inputs and the cycle model's
+//! outputs). A mutant is **killed** when any port differs in any cycle (or the simulation never ends).
+//! A mutant that survives is checked for equivalence with the original by Yosys's `equiv_make`,
+//! `equiv_simple` and `equiv_induct` (an induction proof over the mutated module, its submodules
+//! flattened in, memories mapped to registers): **equivalent** when every equivalence is proven, else
+//! **surviving**.
+//!
+//! Run by `bash scripts/mutation.sh TOP N` (`tb/src/bin/mutation.rs`); results in
+//! `target/mutation/TOP.json`. The tops: `rc`, `colour_setup`, `cs`, `opp`.
+
+use crate::common::{workspace_target, Rng};
+use golden::format::Screen;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The tops this cover knows, with the stimulus each is replayed on.
+pub const TOPS: [&str; 4] = ["rc", "colour_setup", "cs", "opp"];
+
+type Replay = Box<dyn Fn(&str, &Path) -> Result<(), String> + Send + Sync>;
+
+/// A top: its generated Verilog, what its vectors are, and the replay of a Verilog text (the original
+/// or a mutant) in a work directory, Ok when every port matches in every cycle.
+pub struct Target {
+    pub top: &'static str,
+    pub verilog: String,
+    pub stimulus: String,
+    replay: Replay,
+}
+
+impl Target {
+    pub fn replay(&self, verilog: &str, dir: &Path) -> Result<(), String> {
+        std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        (self.replay)(verilog, dir)
+    }
+}
+
+/// The top `top` with its stimulus, recorded from the cycle model (for `rc`) or from the RustHDL bench
+/// checked against the cycle model (the others), into `dir`.
+pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    match top {
+        "rc" => rc_target(dir),
+        "colour_setup" => {
+            let rec = crate::cs::stimulus::colour_setup_replay_recording(0xC0105E7)?;
+            let stimulus = format!("{} cycles: the colour setup replay test's 60 random commands with 30% gaps", rec.cycles());
+            let replay: Replay = Box::new(move |v, d| crate::cs::replay::replay_iverilog(v, "colour_setup", &rec, d).map(|_| ()));
+            Ok(Target { top: "colour_setup", verilog: hdl::verilog_top("colour_setup")?, stimulus, replay })
+        }
+        "cs" => {
+            let rec = crate::cs::stimulus::cs_replay_recording(0xC5)?;
+            let stimulus = format!("{} cycles: the CS replay test's four frames (Phong, Gouraud, clear behind, 2000x1), 35% stalls", rec.cycles());
+            let replay: Replay = Box::new(move |v, d| crate::cs::replay::replay_iverilog(v, "cs", &rec, d).map(|_| ()));
+            Ok(Target { top: "cs", verilog: hdl::verilog_top("cs")?, stimulus, replay })
+        }
+        "opp" => opp_target(dir),
+        _ => Err(format!("unknown top '{top}': the mutation cover knows {}", TOPS.join(", "))),
+    }
+}
+
+/// `rc` at 32x24: the hand-made cases (every hazard the tests name) and six random triangle lists, one
+/// stream, random gaps and back-pressure.
+fn rc_target(dir: &Path) -> Result<Target, String> {
+    use crate::rc::bench::{run_model, Drive};
+    use crate::rc::replay::{replay_verilog, Simulator, VectorWriter};
+    use crate::rc::stimulus::{frame, hand_made, hand_made_screen, random_triangles};
+    let screen = hand_made_screen();
+    let mut cmds: Vec<_> = hand_made().into_iter().flat_map(|(_, c)| c).collect();
+    let mut rng = Rng::new(0x3_7a7e);
+    for _ in 0..6 {
+        cmds.extend(frame(true, random_triangles(&mut rng, screen, 40)));
+    }
+    let mut w = VectorWriter::create(dir.join("rc.vec"))?;
+    let drive = Drive { garbage: false, ..Drive::random("mutation_rc", 0x1ca5) };
+    run_model(screen, &cmds, drive, Some(&mut w))?;
+    let (vectors, cycles) = w.finish()?;
+    let replay: Replay = Box::new(move |v, d| {
+        let file = d.join("rc.v");
+        std::fs::write(&file, v).map_err(|e| format!("cannot write {}: {e}", file.display()))?;
+        let n = replay_verilog(Simulator::Icarus, screen, &file, d, &vectors, None)?;
+        if n == cycles { Ok(()) } else { Err(format!("the replay stopped after {n} of {cycles} cycles")) }
+    });
+    let stimulus = format!("{cycles} cycles at 32x24: the hand-made cases and 6 random lists of 40 triangles, random gaps and stalls");
+    Ok(Target { top: "rc", verilog: hdl::rc::verilog(screen.width, screen.height)?, stimulus, replay })
+}
+
+/// `opp` (eight OPs, FIFO depth 1): two random frames of 14 and 20 objects at 24x16, 25% gaps on both
+/// sides.
+fn opp_target(dir: &Path) -> Result<Target, String> {
+    use crate::proof::bench::{opp_ports, random_objects, run_frame};
+    use golden::proof::cycle_opp::Gaps;
+    let s = Screen::new(24, 16)?;
+    let mut rng = Rng::new(0x7e91a7);
+    let mut recs = Vec::new();
+    for (i, count) in [14, 20].into_iter().enumerate() {
+        let objs = random_objects(&mut rng, s, count, 8);
+        let gaps = Gaps { seed: rng.next_u64(), source_gap_percent: 25, sink_gap_percent: 25 };
+        let (_, rec) = run_frame(s, &objs, 8, 1, Some(gaps), None, Some(dir.join(format!("opp{i}.vec"))))?;
+        recs.push(rec.ok_or("the OPP bench wrote no vectors")?);
+    }
+    let stimulus = format!("{} cycles: two random frames (14 and 20 objects) at 24x16, 25% gaps in and out", recs.iter().map(|r| r.1).sum::<u64>());
+    let replay: Replay = Box::new(move |v, d| {
+        for (path, cycles) in &recs {
+            crate::proof::replay::replay("iverilog", d, "opp", &opp_ports(), v, path, *cycles)?;
+        }
+        Ok(())
+    });
+    Ok(Target { top: "opp", verilog: hdl::verilog_top("opp")?, stimulus, replay })
+}
+
+/// What became of one mutant.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    /// A port differed (the first mismatch), or the run did not end.
+    Killed(String),
+    /// Proven equivalent to the original netlist.
+    Equivalent,
+    /// Passed the replay and not proven equivalent (Yosys's last words).
+    Surviving(String),
+    /// The mutant could not be built or run (a tool error, not a verdict).
+    Error(String),
+}
+
+impl Outcome {
+    pub fn name(&self) -> &'static str {
+        match self {
+            Outcome::Killed(_) => "killed",
+            Outcome::Equivalent => "equivalent",
+            Outcome::Surviving(_) => "surviving",
+            Outcome::Error(_) => "error",
+        }
+    }
+}
+
+fn run(cmd: &mut Command, what: &str) -> Result<String, String> {
+    let o = cmd.output().map_err(|e| format!("{what}: cannot run: {e}"))?;
+    let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    if !o.status.success() {
+        let tail: Vec<&str> = text.lines().rev().take(15).collect();
+        return Err(format!("{what} failed ({}):\n{}", o.status, tail.into_iter().rev().collect::<Vec<_>>().join("\n")));
+    }
+    Ok(text)
+}
+
+/// The work directory of a top's cover.
+pub fn work_dir(top: &str) -> PathBuf {
+    workspace_target().join("mutation").join(top)
+}
+
+/// Yosys's netlist of the top (`prep -top`): kept as `orig.il` in `dir` for the mutations, and returned
+/// as Verilog. It must replay as the generated Verilog does, or Yosys and the simulators read the
+/// generated Verilog differently (as they did before `hdl::common::sized_localparams`).
+pub fn yosys_netlist(t: &Target, dir: &Path) -> Result<String, String> {
+    std::fs::write(dir.join("orig.v"), &t.verilog).map_err(|e| e.to_string())?;
+    let script = format!("read_verilog -sv orig.v; prep -top {}; write_rtlil orig.il; write_verilog -noattr netlist.v", t.top);
+    run(Command::new("yosys").current_dir(dir).args(["-q", "-p", &script]), "yosys prep")?;
+    std::fs::read_to_string(dir.join("netlist.v")).map_err(|e| format!("{}: {e}", dir.join("netlist.v").display()))
+}
+
+/// Draw `n` mutations of `orig.il` in `dir` (written by [`yosys_netlist`]) with `seed`; returns Yosys's
+/// `mutate` commands, one per mutant.
+pub fn draw(n: usize, seed: u64, dir: &Path) -> Result<Vec<String>, String> {
+    let script = format!("read_rtlil orig.il; mutate -list {n} -seed {seed} -o mutations.ys");
+    run(Command::new("yosys").current_dir(dir).args(["-q", "-p", &script]), "yosys mutate -list")?;
+    let list = std::fs::read_to_string(dir.join("mutations.ys")).map_err(|e| e.to_string())?;
+    let cmds: Vec<String> = list.lines().filter(|l| l.starts_with("mutate ")).map(str::to_string).collect();
+    if cmds.len() != n {
+        return Err(format!("yosys drew {} mutations, not {n}", cmds.len()));
+    }
+    Ok(cmds)
+}
+
+/// Write every mutant of `orig.il` (`mutant_I.v`) as Verilog, in one Yosys run.
+pub fn write_mutants(cmds: &[String], dir: &Path) -> Result<(), String> {
+    let mut ys = String::from("read_rtlil orig.il\ndesign -save orig\n");
+    for (i, c) in cmds.iter().enumerate() {
+        ys += &format!("design -load orig\n{c}\nwrite_verilog -noattr mutant_{i}.v\n");
+    }
+    std::fs::write(dir.join("write_mutants.ys"), ys).map_err(|e| e.to_string())?;
+    run(Command::new("yosys").current_dir(dir).args(["-q", "-s", "write_mutants.ys"]), "yosys write mutants")?;
+    Ok(())
+}
+
+/// Is the mutant `cmd` equivalent to the original? The mutated module alone (with its submodules
+/// flattened in, memories mapped to registers) against the same module unmutated: `equiv_make`,
+/// `equiv_simple -seq 4`, `equiv_induct -seq 4`, `equiv_status -assert`, within 120 s. Equivalence of
+/// the module implies equivalence of the top; a failure may still be equivalent in the top's context
+/// (an input the module never receives there), so it counts as surviving, not as proven different.
+pub fn equivalent(cmd: &str, dir: &Path, i: usize) -> Result<(), String> {
+    let module = cmd.split_whitespace().skip_while(|w| *w != "-module").nth(1).ok_or(format!("no -module in '{cmd}'"))?;
+    let prepare = |name: &str| format!("hierarchy -top {module}\nflatten\nmemory_map\nopt_clean\nrename {module} {name}\ndesign -stash {name}\n");
+    let ys = format!(
+        "read_rtlil orig.il\ndesign -save orig\n{cmd}\n{}design -load orig\n{}\
+         design -copy-from gold -as gold gold\ndesign -copy-from gate -as gate gate\n\
+         equiv_make gold gate equiv\nhierarchy -top equiv\nequiv_simple -seq 4\nequiv_induct -seq 4\nequiv_status -assert\n",
+        prepare("gate"),
+        prepare("gold")
+    );
+    let file = format!("equiv_{i}.ys");
+    std::fs::write(dir.join(&file), ys).map_err(|e| e.to_string())?;
+    run(Command::new("timeout").current_dir(dir).args(["120", "yosys", "-q", "-s", &file]), "yosys equiv").map(|_| ())
+}
+
+/// Replay mutant `i` and, if it survives, try to prove it equivalent.
+pub fn judge(t: &Target, cmd: &str, dir: &Path, i: usize) -> Outcome {
+    let v = match std::fs::read_to_string(dir.join(format!("mutant_{i}.v"))) {
+        Ok(v) => v,
+        Err(e) => return Outcome::Error(format!("cannot read mutant_{i}.v: {e}")),
+    };
+    match t.replay(&v, &dir.join(format!("run_{i}"))) {
+        Err(e) if KILLED.iter().any(|k| e.contains(k)) => Outcome::Killed(first_line_about_the_failure(&e)),
+        Err(e) => Outcome::Error(e.lines().take(3).collect::<Vec<_>>().join(" / ")),
+        Ok(()) => match equivalent(cmd, dir, i) {
+            Ok(()) => Outcome::Equivalent,
+            Err(e) if e.contains("exit status: 124") => Outcome::Surviving("equivalence not proven within 120 s".into()),
+            Err(e) => Outcome::Surviving(e.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("").trim().to_string()),
+        },
+    }
+}
+
+/// What the replays print when a port differs or the run never ends (`timeout` exits 124).
+const KILLED: [&str; 6] = ["FAILED", "MISMATCH", "differs from the cycle model", "did not finish", "stopped after", "exit status: 124"];
+
+fn first_line_about_the_failure(e: &str) -> String {
+    e.lines()
+        .find(|l| KILLED.iter().any(|k| l.contains(k)))
+        .unwrap_or_else(|| e.lines().next().unwrap_or(""))
+        .trim()
+        .chars()
+        .take(160)
+        .collect()
+}
