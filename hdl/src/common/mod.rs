@@ -27,11 +27,44 @@ pub fn verilog_named<U: Block>(uut: &U, name: &str) -> Result<String, String> {
     check_all(uut).map_err(|e| format!("{name}: rust-hdl check failed: {e:?}"))?;
     let mut defines = ModuleDefines::default();
     uut.accept(name, &mut defines);
-    Ok(defines.defines())
+    Ok(sized_localparams(&defines.defines()))
 }
 
-/// rust-hdl names the top module `top` and its children `top$...`: give them the top's own name.
+/// Give every signed `localparam` an explicit range. rust-hdl writes a signed constant as
+/// `localparam signed k7_17 = 17'b111;`: IEEE 1364 makes it a signed 17-bit parameter (Icarus and
+/// Verilator agree), but Yosys 0.23 keeps it unsigned, so `$signed(x) + k7_17` zero-extends a
+/// negative `x` in the synthesized netlist and not in simulation. Found by the mutation cover, whose
+/// replay of Yosys's unmutated netlist of `rc` failed: bounding boxes of triangles left of the screen.
+/// With `localparam signed [16:0] k7_17 = 17'b111;` every tool reads the same value.
+pub fn sized_localparams(v: &str) -> String {
+    let mut out = String::with_capacity(v.len() + v.len() / 50);
+    for line in v.lines() {
+        let t = line.trim_start();
+        let sized = t.strip_prefix("localparam signed ").and_then(|rest| {
+            let (name, value) = rest.split_once(" = ")?;
+            let width: usize = value.trim_start_matches('-').split_once('\'')?.0.parse().ok()?;
+            (!name.contains('[')).then(|| format!("{}localparam signed [{}:0] {name} = {value}", &line[..line.len() - t.len()], width - 1))
+        });
+        out.push_str(sized.as_deref().unwrap_or(line));
+        out.push('\n');
+    }
+    out
+}
+
+#[cfg(test)]
+mod sized_localparams_tests {
+    #[test]
+    fn signed_localparams_get_the_range_of_their_literal_and_the_rest_is_untouched() {
+        let v = "module m;\n    localparam signed k7_17 = 17'b111;\n    localparam  k0_2 = 2'b0;\n    localparam signed [3:0] k = 4'h1;\nendmodule\n";
+        let want = "module m;\n    localparam signed [16:0] k7_17 = 17'b111;\n    localparam  k0_2 = 2'b0;\n    localparam signed [3:0] k = 4'h1;\nendmodule\n";
+        assert_eq!(super::sized_localparams(v), want);
+    }
+}
+
+/// rust-hdl names the top module `top` and its children `top$...`: give them the top's own name
+/// (and its signed constants their ranges, [`sized_localparams`]).
 pub fn rename_top(v: &str, name: &str) -> String {
+    let v = sized_localparams(v);
     let mut out = String::with_capacity(v.len());
     for line in v.lines() {
         let indent = &line[..line.len() - line.trim_start().len()];
