@@ -92,3 +92,37 @@ fn a_bench_that_stops_making_progress_ends_at_once_with_a_clear_error() {
     assert!(e.contains("no progress for 1664 cycles") && e.contains("results"), "{e}");
     eprintln!("stopped in {:.3} s: {e}", t0.elapsed().as_secs_f64());
 }
+
+/// `fill_rule_every_edge_index` is what its name says: for each of the three edges of the set-up
+/// triangle (vertex order with det > 0), and for top-left and other edges alike, some triangle has a
+/// pixel centre exactly on that edge, covered by its other two edges and on no other triangle of the
+/// case, so the tie alone decides what the I-buffer holds there. (`fill_rule_corners` has ties on
+/// every edge index too, but those on the third edge all lie on an edge shared at equal depth.)
+#[test]
+fn the_fill_rule_case_puts_lone_pixel_centres_on_every_edge_index_of_both_kinds() {
+    use golden::raster::{setup, CullMode, FrontFace};
+    let (_, cmds) = hand_made().into_iter().find(|(n, _)| *n == "fill_rule_every_edge_index").unwrap();
+    let tris: Vec<_> = cmds
+        .iter()
+        .filter(|c| c.kind == golden::cycle::rc::CmdKind::Triangle)
+        .map(|c| setup(&c.v, CullMode::None, FrontFace::Ccw, hand_made_screen()).expect("drawn"))
+        .collect();
+    let mut seen = [[false; 2]; 3];
+    for (i, st) in tris.iter().enumerate() {
+        let b = st.bbox;
+        for (y, x) in (b.y0..=b.y1).flat_map(|y| (b.x0..=b.x1).map(move |x| (y, x))) {
+            // No other triangle has the centre inside or on its edges.
+            let touches = |o: &golden::raster::Setup| o.edges.iter().all(|e| e.at(x as i64, y as i64) + if e.top_left { 0 } else { 1 } >= 0);
+            let lone = tris.iter().enumerate().all(|(j, o)| j == i || !touches(o));
+            for k in 0..3 {
+                let e = &st.edges[k];
+                let on_edge = e.at(x as i64, y as i64) + if e.top_left { 0 } else { 1 } == 0;
+                let others_cover = (0..3).filter(|&j| j != k).all(|j| st.edges[j].at(x as i64, y as i64) >= 0);
+                if on_edge && others_cover && lone {
+                    seen[k][e.top_left as usize] = true;
+                }
+            }
+        }
+    }
+    assert_eq!(seen, [[true; 2]; 3], "[edge][top-left] with a lone centre on the edge");
+}

@@ -59,6 +59,12 @@ pub fn hand_made() -> Vec<(&'static str, Vec<RcCmd>)> {
                                    tri(2, [px(4 * s + 8, 4 * s + 8, 10), px(4 * s + 8, 8 * s + 8, 10), px(8 * s + 8, 8 * s + 8, 10)]),
                                    tri(3, [px(12 * s + 8, 4 * s + 8, 10), px(12 * s + 8, 8 * s + 8, 10), px(16 * s + 8, 4 * s + 8, 10)]),
                                    tri(4, [px(16 * s + 8, 8 * s + 8, 10), px(12 * s + 8, 8 * s + 8, 10), px(16 * s + 8, 4 * s + 8, 10)])]),
+        // Pixel centres exactly on each edge of a lone triangle, for every edge index: a right triangle
+        // whose legs and diagonal pass through centres, in its three vertex rotations and both
+        // windings, for each diagonal direction, each at its own place with nothing else drawn there,
+        // so every tie alone decides a pixel (`fill_rule_corners` has no such tie on a top-left second
+        // edge; `rc_model` checks that this case has one for every edge index and both kinds).
+        ("fill_rule_every_edge_index", fill_rule_every_edge_index(s)),
         // Zero area: collinear and coincident vertices.
         ("zero_area", vec![tri(1, [px(0, 0, 5), px(5 * s, 5 * s, 5), px(10 * s, 10 * s, 5)]),
                            tri(2, [px(3 * s, 3 * s, 5); 3]),
@@ -121,6 +127,25 @@ pub fn hand_made() -> Vec<(&'static str, Vec<RcCmd>)> {
     let behind = [px(lx * s + 4, ly * s + 4, 900), px(lx * s + 60, ly * s + 4, 900), px(lx * s + 4, ly * s + 60, 900)];
     cases.push(("same_pixel_across_triangles_without_gap", vec![tri(1, big), tri(2, behind)]));
     cases.into_iter().map(|(n, t)| (n, frame(true, t))).collect()
+}
+
+/// Twelve 4x4-pixel right triangles with every edge through pixel centres (see `hand_made`).
+fn fill_rule_every_edge_index(s: i32) -> Vec<RcCmd> {
+    let mut tris = Vec::new();
+    for (row, diagonal_down) in [(0, true), (1, false)] {
+        for k in 0..6 {
+            let (x0, y0) = ((1 + 5 * k) * s + 8, (2 + 6 * row) * s + 8);
+            let (a, b, c) = if diagonal_down {
+                (px(x0, y0, 30), px(x0 + 4 * s, y0, 30), px(x0 + 4 * s, y0 + 4 * s, 30))
+            } else {
+                (px(x0, y0 + 4 * s, 30), px(x0 + 4 * s, y0, 30), px(x0 + 4 * s, y0 + 4 * s, 30))
+            };
+            let ccw = [[a, b, c], [b, c, a], [c, a, b]][k as usize % 3];
+            let v = if k < 3 { ccw } else { [ccw[0], ccw[2], ccw[1]] };
+            tris.push(tri(tris.len() as u32 + 1, v));
+        }
+    }
+    tris
 }
 
 /// The last covered pixel of a triangle in raster order (where its walk's last fragment is).
