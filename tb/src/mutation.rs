@@ -8,7 +8,7 @@
 //! **surviving**. A mutation of a clock is never called equivalent ([`CLOCK_UNDECIDED`]).
 //!
 //! Run by `bash scripts/mutation.sh TOP N` (`tb/src/bin/mutation.rs`); results in
-//! `target/mutation/TOP.json`. The tops: `rc`, `colour_setup`, `cs`, `opp`.
+//! `target/mutation/TOP.json`. The tops: `rc`, `rc3`, `colour_setup`, `cs`, `opp`.
 
 use crate::common::{workspace_target, Rng};
 use golden::format::Screen;
@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// The tops this cover knows, with the stimulus each is replayed on.
-pub const TOPS: [&str; 4] = ["rc", "colour_setup", "cs", "opp"];
+pub const TOPS: [&str; 5] = ["rc", "rc3", "colour_setup", "cs", "opp"];
 
 type Replay = Box<dyn Fn(&str, &Path) -> Result<(), String> + Send + Sync>;
 
@@ -42,9 +42,11 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     match top {
         "rc" => rc_target(dir),
+        "rc3" => rc3_target(dir),
         "colour_setup" => {
-            let rec = crate::cs::stimulus::colour_setup_replay_recording(0xC0105E7)?;
-            let stimulus = format!("{} cycles: the colour setup replay test's 60 random commands with 30% gaps", rec.cycles());
+            // Ten times the replay test's 60 commands: with 60 (278 cycles), 43 of 100 mutants survived.
+            let rec = crate::cs::stimulus::colour_setup_replay_recording(0xC0105E7, 600)?;
+            let stimulus = format!("{} cycles: 600 random commands of the colour setup replay test's kinds, 30% gaps", rec.cycles());
             let replay: Replay = Box::new(move |v, d| crate::cs::replay::replay_iverilog(v, "colour_setup", &rec, d).map(|_| ()));
             Ok(Target { top: "colour_setup", verilog: hdl::verilog_top("colour_setup")?, stimulus, replay })
         }
@@ -64,13 +66,7 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
 fn rc_target(dir: &Path) -> Result<Target, String> {
     use crate::rc::bench::{run_model, Drive};
     use crate::rc::replay::{replay_verilog, Simulator, VectorWriter};
-    use crate::rc::stimulus::{frame, hand_made, hand_made_screen, random_triangles};
-    let screen = hand_made_screen();
-    let mut cmds: Vec<_> = hand_made().into_iter().flat_map(|(_, c)| c).collect();
-    let mut rng = Rng::new(0x3_7a7e);
-    for _ in 0..6 {
-        cmds.extend(frame(true, random_triangles(&mut rng, screen, 40)));
-    }
+    let (screen, cmds) = rc_stream();
     let mut w = VectorWriter::create(dir.join("rc.vec"))?;
     let drive = Drive { garbage: false, ..Drive::random("mutation_rc", 0x1ca5) };
     run_model(screen, &cmds, drive, Some(&mut w))?;
@@ -83,6 +79,33 @@ fn rc_target(dir: &Path) -> Result<Target, String> {
     });
     let stimulus = format!("{cycles} cycles at 32x24: the hand-made cases and 6 random lists of 40 triangles, random gaps and stalls");
     Ok(Target { top: "rc", verilog: hdl::rc::verilog(screen.width, screen.height)?, stimulus, replay })
+}
+
+/// The RCs' stream at 32x24: the hand-made cases, then six random lists of 40 triangles.
+fn rc_stream() -> (Screen, Vec<golden::cycle::rc::RcCmd>) {
+    use crate::rc::stimulus::{frame, hand_made, hand_made_screen, random_triangles};
+    let screen = hand_made_screen();
+    let mut cmds: Vec<_> = hand_made().into_iter().flat_map(|(_, c)| c).collect();
+    let mut rng = Rng::new(0x3_7a7e);
+    for _ in 0..6 {
+        cmds.extend(frame(true, random_triangles(&mut rng, screen, 40)));
+    }
+    (screen, cmds)
+}
+
+/// `rc3` (Type III) at 32x24 on the same stream as `rc`, every port a column of the vectors (TdbV's
+/// read data are inputs, as the bench's memory model returned them).
+fn rc3_target(dir: &Path) -> Result<Target, String> {
+    use crate::rc::bench::{run_model_of, Drive};
+    use crate::rc::replay::{rc3_ports, Rc3Vectors};
+    let (screen, cmds) = rc_stream();
+    let mut w = Rc3Vectors::create(dir.join("rc3.vec"))?;
+    let drive = Drive { garbage: false, ..Drive::random("mutation_rc3", 0x3ca5) };
+    run_model_of(golden::raster::RcType::III, screen, &cmds, drive, Some(&mut w))?;
+    let (vectors, cycles) = w.0.finish()?;
+    let replay: Replay = Box::new(move |v, d| crate::proof::replay::replay("iverilog", d, "rc3", &rc3_ports(), v, &vectors, cycles).map(|_| ()));
+    let stimulus = format!("{cycles} cycles at 32x24: the hand-made cases and 6 random lists of 40 triangles, random gaps and stalls");
+    Ok(Target { top: "rc3", verilog: hdl::rc::rc3::verilog(screen.width, screen.height)?, stimulus, replay })
 }
 
 /// `opp` (eight OPs, FIFO depth 1): two random frames of 14 and 20 objects at 24x16, 25% gaps on both

@@ -6,7 +6,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use tb::mutation::{draw, judge, target, work_dir, write_mutants, yosys_netlist, Outcome, TOPS};
 
-const USAGE: &str = "usage: mutation TOP N [--seed S] [--jobs J]   (TOP: rc, colour_setup, cs, opp; N mutants, at least 1)";
+const USAGE: &str = "usage: mutation TOP N [--seed S] [--jobs J]   (TOP: rc, rc3, colour_setup, cs, opp; N mutants, at least 1)";
 
 fn main() {
     if let Err(e) = run() {

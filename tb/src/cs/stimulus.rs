@@ -123,11 +123,11 @@ pub fn ignored_writes(rng: &mut Rng) -> Vec<CsConfigWrite> {
 }
 
 
-/// The recording that colour setup's Verilog replays: 60 random commands with 30% input gaps, run
-/// on the RTL against the cycle model (which fails first if they differ).
-pub fn colour_setup_replay_recording(seed: u64) -> Result<Recording, String> {
+/// The recording that colour setup's Verilog replays: `n` random commands (the replay test sends 60)
+/// with 30% input gaps, run on the RTL against the cycle model (which fails first if they differ).
+pub fn colour_setup_replay_recording(seed: u64, n: usize) -> Result<Recording, String> {
     let mut rng = Rng::new(seed);
-    let cmds = random_commands(60, &mut rng);
+    let cmds = random_commands(n, &mut rng);
     let run = setb::run_rtl_vs_model("colour_setup_replay", &cmds, SetupDrive { gap_percent: 30, seed }, true)?;
     run.recording.ok_or_else(|| "colour setup bench: no recording".to_string())
 }

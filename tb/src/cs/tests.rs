@@ -220,7 +220,7 @@ fn colour_setup_verilog_replays_the_recorded_vectors() {
     if !require_tools("colour_setup_verilog_replays_the_recorded_vectors", &["iverilog"]) {
         return;
     }
-    let rec = colour_setup_replay_recording(seed_for("colour_setup_replay", 0xC0105E7)).unwrap();
+    let rec = colour_setup_replay_recording(seed_for("colour_setup_replay", 0xC0105E7), 60).unwrap();
     let v = hdl::verilog_top("colour_setup").unwrap();
     let r = replay_iverilog(&v, "colour_setup", &rec, &scratch_dir("cs/colour_setup_replay")).unwrap();
     println!("colour_setup Verilog (iverilog): {} cycles replayed in {:.2} s, 0 mismatches", r.cycles, r.seconds);
