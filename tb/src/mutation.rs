@@ -77,9 +77,12 @@ fn rc_target(dir: &Path) -> Result<Target, String> {
         let n = replay_verilog(Simulator::Icarus, screen, &file, d, &vectors, None)?;
         if n == cycles { Ok(()) } else { Err(format!("the replay stopped after {n} of {cycles} cycles")) }
     });
-    let stimulus = format!("{cycles} cycles at 32x24: the hand-made cases and 6 random lists of 40 triangles, random gaps and stalls");
+    let stimulus = format!("{cycles} {RC_STREAM}");
     Ok(Target { top: "rc", verilog: hdl::rc::verilog(screen.width, screen.height)?, stimulus, replay })
 }
+
+/// What [`rc_stream`] holds, after its cycle count.
+const RC_STREAM: &str = "cycles at 32x24: the hand-made cases and 6 random lists of 40 triangles, random gaps and stalls";
 
 /// The RCs' stream at 32x24: the hand-made cases, then six random lists of 40 triangles.
 fn rc_stream() -> (Screen, Vec<golden::cycle::rc::RcCmd>) {
@@ -104,7 +107,7 @@ fn rc3_target(dir: &Path) -> Result<Target, String> {
     run_model_of(golden::raster::RcType::III, screen, &cmds, drive, Some(&mut w))?;
     let (vectors, cycles) = w.0.finish()?;
     let replay: Replay = Box::new(move |v, d| crate::proof::replay::replay("iverilog", d, "rc3", &rc3_ports(), v, &vectors, cycles).map(|_| ()));
-    let stimulus = format!("{cycles} cycles at 32x24: the hand-made cases and 6 random lists of 40 triangles, random gaps and stalls");
+    let stimulus = format!("{cycles} {RC_STREAM}");
     Ok(Target { top: "rc3", verilog: hdl::rc::rc3::verilog(screen.width, screen.height)?, stimulus, replay })
 }
 
@@ -152,6 +155,13 @@ impl Outcome {
             Outcome::Equivalent => "equivalent",
             Outcome::Surviving(_) => "surviving",
             Outcome::Error(_) => "error",
+        }
+    }
+    /// The first mismatch, Yosys's last words or the error; empty for an equivalent mutant.
+    pub fn detail(&self) -> &str {
+        match self {
+            Outcome::Killed(d) | Outcome::Surviving(d) | Outcome::Error(d) => d,
+            Outcome::Equivalent => "",
         }
     }
 }
@@ -207,9 +217,12 @@ pub fn write_mutants(cmds: &[String], dir: &Path) -> Result<(), String> {
 
 /// Is the mutant `cmd` equivalent to the original? The mutated module alone (with its submodules
 /// flattened in, memories mapped to registers) against the same module unmutated: `equiv_make`,
-/// `equiv_simple -seq 4`, `equiv_induct -seq 4`, `equiv_status -assert`, within 60 s. Equivalence of
+/// `equiv_simple -seq 4`, `equiv_induct -seq 4`, `equiv_status -assert`, within [`EQUIV_SECONDS`] (wall time). Equivalence of
 /// the module implies equivalence of the top; a failure may still be equivalent in the top's context
 /// (an input the module never receives there), so it counts as surviving, not as proven different.
+/// The wall-time limit of one equivalence check.
+pub const EQUIV_SECONDS: u32 = 60;
+
 pub fn equivalent(cmd: &str, dir: &Path, i: usize) -> Result<(), String> {
     if touches_a_clock(cmd) {
         return Err(CLOCK_UNDECIDED.into());
@@ -225,12 +238,12 @@ pub fn equivalent(cmd: &str, dir: &Path, i: usize) -> Result<(), String> {
     );
     let file = format!("equiv_{i}.ys");
     std::fs::write(dir.join(&file), ys).map_err(|e| e.to_string())?;
-    run(Command::new("timeout").current_dir(dir).args(["60", "yosys", "-q", "-s", &file]), "yosys equiv").map(|_| ())
+    run(Command::new("timeout").current_dir(dir).args([EQUIV_SECONDS.to_string().as_str(), "yosys", "-q", "-s", &file]), "yosys equiv").map(|_| ())
 }
 
 /// Why a clock mutation is never called equivalent: Yosys's SAT model of a flip-flop steps it every
 /// cycle whatever its clock input does, so `equiv_induct` "proves" a register with its clock tied
-/// to 0 or inverted equivalent to the original (it did, for three CS mutants, before this rule).
+/// to 0 or inverted equivalent to the original (it did, for three CS and five colour-setup mutants, before this rule).
 pub const CLOCK_UNDECIDED: &str = "a clock mutation: equiv_* ignore flip-flop clocks, so they cannot decide it";
 
 /// Does the mutation act on a flip-flop's clock (its CLK port or the `clock` net)?
@@ -250,7 +263,7 @@ pub fn judge(t: &Target, cmd: &str, dir: &Path, i: usize) -> Outcome {
         Err(e) => Outcome::Error(e.lines().take(3).collect::<Vec<_>>().join(" / ")),
         Ok(()) => match equivalent(cmd, dir, i) {
             Ok(()) => Outcome::Equivalent,
-            Err(e) if e.contains("exit status: 124") => Outcome::Surviving("equivalence not proven within 60 s".into()),
+            Err(e) if e.contains("exit status: 124") => Outcome::Surviving(format!("equivalence not proven within {EQUIV_SECONDS} s")),
             Err(e) => Outcome::Surviving(e.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("").trim().to_string()),
         },
     }

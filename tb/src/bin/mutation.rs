@@ -63,10 +63,7 @@ fn run() -> Result<(), String> {
                     break;
                 }
                 let o = judge(&t, &cmds[i], &dir, i);
-                let detail = match &o {
-                    Outcome::Killed(d) | Outcome::Surviving(d) | Outcome::Error(d) => d.clone(),
-                    Outcome::Equivalent => "equiv_induct proves every equivalence".into(),
-                };
+                let detail = if o == Outcome::Equivalent { "equiv_induct proves every equivalence" } else { o.detail() };
                 println!("{top} mutant {i:4}: {:10} {} | {detail}", o.name(), short(&cmds[i]));
                 if !matches!(o, Outcome::Killed(_)) {
                     let _ = std::fs::remove_dir_all(dir.join(format!("run_{i}")));
@@ -91,7 +88,7 @@ fn run() -> Result<(), String> {
         "mutants": results.iter().zip(&cmds).map(|(o, c)| serde_json::json!({
             "command": c,
             "outcome": o.name(),
-            "detail": match o { Outcome::Killed(d) | Outcome::Surviving(d) | Outcome::Error(d) => d.as_str(), Outcome::Equivalent => "" },
+            "detail": o.detail(),
         })).collect::<Vec<_>>(),
     });
     let out = dir.parent().unwrap().join(format!("{top}.json"));
