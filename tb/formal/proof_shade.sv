@@ -1,0 +1,73 @@
+// Formal harness of the `proof_shade` top (PROOF's shading stage, `idxrender verilog --block
+// proof_shade`; RustHDL source hdl/src/proof/shading.rs). Run by `bash scripts/formal.sh
+// proof_shade`; see docs/verification.md.
+//
+// Assumed: upstream valid held until ready and data stable while stalled; table writes (cfg_*) are
+// arbitrary. Asserted: downstream valid held until ready and data stable while stalled; one slot out
+// per slot in, in order: the n-th slot out (n solver-chosen) carries the n-th slot in's position,
+// last, has_entry, id, full and edge distances. Reach points: a stall on the output, a stall on the
+// input, the tracked slot delivered.
+//
+// ProofSlot (in): x 9:0, y 19:10, last 20, has_entry 21, id 37:22, depth 61:38, full 62, normal
+// 110:63, d0..d2 158:111. ShadedSlot (out): x, y, last, has_entry, id 37:0 as above, full 38,
+// d0..d2 86:39, r g b 110:87.
+module proof_shade_formal #(
+    parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+) (
+    input wire clock,
+    input wire cfg_write,
+    input wire [3:0] cfg_sel,
+    input wire [15:0] cfg_addr,
+    input wire [95:0] cfg_data,
+    input wire [158:0] up_data,
+    input wire up_valid,
+    input wire down_ready
+);
+    wire up_ready;
+    wire [110:0] down_data;
+    wire down_valid;
+    proof_shade dut (
+        .clock(clock), .cfg_write(cfg_write), .cfg_sel(cfg_sel), .cfg_addr(cfg_addr), .cfg_data(cfg_data),
+        .upstream$data(up_data), .upstream$valid(up_valid), .upstream$ready(up_ready),
+        .downstream$data(down_data), .downstream$valid(down_valid), .downstream$ready(down_ready)
+    );
+
+    reg past_valid = 1'b0;
+    always @(posedge clock) past_valid <= 1'b1;
+    wire up_fire = up_valid && up_ready;
+    wire down_fire = down_valid && down_ready;
+
+    always @(posedge clock) if (past_valid && $past(up_valid && !up_ready)) begin
+        assume (up_valid);
+        assume (up_data == $past(up_data));
+    end
+    always @(posedge clock) if (past_valid && $past(down_valid && !down_ready)) begin
+        if (REACH < 0) assert (down_valid);
+        if (REACH < 0) assert (down_data == $past(down_data));
+    end
+
+    wire [86:0] up_kept = {up_data[158:111], up_data[62], up_data[37:0]};
+    reg [7:0] slots_in = 8'd0;
+    reg [7:0] slots_out = 8'd0;
+    (* anyconst *) reg [7:0] tracked;
+    reg [86:0] tracked_slot = 87'd0;
+    always @(posedge clock) begin
+        if (up_fire) slots_in <= slots_in + 8'd1;
+        if (down_fire) slots_out <= slots_out + 8'd1;
+        if (up_fire && slots_in == tracked) tracked_slot <= up_kept;
+    end
+    wire delivered = down_fire && slots_out == tracked;
+    always @(*) begin
+        if (REACH < 0) assert (slots_out <= slots_in);
+        if (delivered) if (REACH < 0) assert (tracked < slots_in && down_data[86:0] == tracked_slot);
+    end
+
+    always @(posedge clock) if (past_valid) begin
+        cover ($past(down_valid && !down_ready) && down_valid);
+        if (REACH == 0) assert (!($past(down_valid && !down_ready) && down_valid));
+        cover ($past(up_valid && !up_ready) && up_valid);
+        if (REACH == 1) assert (!($past(up_valid && !up_ready) && up_valid));
+        cover (delivered && tracked == 8'd2);
+        if (REACH == 2) assert (!(delivered && tracked == 8'd2));
+    end
+endmodule

@@ -1,0 +1,159 @@
+// Formal harness of the RC's Z-test stage, module `rc$z_test` of the `rc` top's Verilog
+// (`idxrender verilog --block rc`; RustHDL source hdl/src/rc/z_test.rs). Run by
+// `bash scripts/formal.sh rc_z_test`; see docs/verification.md.
+//
+// The Z-buffer and the I-buffer are modelled at one solver-chosen address A (any other address
+// returns arbitrary words): a synchronous read issued with each token returns, one cycle later, the
+// word held before the writes of that edge, as the external memories do. Tokens are arbitrary.
+// Assumed: a token that pushes a result (a result token, or a fragment marked last) is issued only
+// while `result_free`; a fragment's triangle index is not 0 (the background index; the host's
+// triangles are numbered from 1); the result port's `ready` is arbitrary.
+// Asserted:
+//   * the Z-test compares a fragment at A with the depth last written to A, even when that write
+//     happened at the previous edge (the read-after-write forwarding), and with the far plane where
+//     the I-buffer holds the background index 0;
+//   * writes: a passing fragment writes its depth and index at its address, a clear token writes the
+//     far plane and index 0, nothing else writes; Z and I are written together;
+//   * results: valid held until ready and data stable while stalled, never more than three held,
+//     and the n-th result (n solver-chosen) is the n-th pushed token's index and flags, with
+//     `visible` the OR of the Z-test passes of that triangle's fragments.
+// Reach points (each must be reachable; sby's reachN tasks): the forwarding used on the same pixel
+// within a triangle, and across two triangles with no gap; forwarding changing the outcome; a full
+// result queue; a stall of the result port.
+//
+// RcToken layout (rust-hdl packs the first field at bit 0): kind 1:0 (0 none, 1 clear, 2 fragment,
+// 3 result), covered 2, last 3, addr 23:4, x 33:24, y 43:34, z 67:44, index 83:68, eof 84,
+// culled 85, zero_area 86. RcResult: eof 0, index 16:1, culled 17, zero_area 18, visible 19.
+module rc_z_test_formal #(
+    // -1: check every assertion; n >= 0: check only that reach point n is unreachable, a run that
+    // sby expects to fail (its counterexample is the witness that the point is reachable).
+    parameter integer REACH = -1
+) (
+    input wire clock,
+    input wire [86:0] tok,
+    input wire [23:0] z_other,
+    input wire [15:0] i_other,
+    input wire result_ready
+);
+    wire result_free;
+    reg [23:0] z_rd_data = 24'd0;
+    reg [15:0] i_rd_data = 16'd0;
+    wire z_we, i_we;
+    wire [19:0] z_wr_addr, i_wr_addr;
+    wire [23:0] z_wr_data;
+    wire [15:0] i_wr_data;
+    wire [19:0] result_data;
+    wire result_valid;
+
+    rc$z_test dut (
+        .clock(clock), .tok(tok), .result_free(result_free),
+        .z_rd_data(z_rd_data), .i_rd_data(i_rd_data),
+        .z_we(z_we), .z_wr_addr(z_wr_addr), .z_wr_data(z_wr_data),
+        .i_we(i_we), .i_wr_addr(i_wr_addr), .i_wr_data(i_wr_data),
+        .result$data(result_data), .result$valid(result_valid), .result$ready(result_ready)
+    );
+
+    localparam [1:0] CLEAR = 2'd1, FRAG = 2'd2, RESULT = 2'd3;
+    localparam [23:0] FAR = 24'hffffff;
+
+    reg past_valid = 1'b0;
+    always @(posedge clock) past_valid <= 1'b1;
+
+    // ---- The memories at address A.
+    (* anyconst *) reg [19:0] A;
+    (* anyconst *) reg [23:0] z_init;
+    (* anyconst *) reg [15:0] i_init;
+    reg written = 1'b0;
+    reg [23:0] z_a = 24'd0;
+    reg [15:0] i_a = 16'd0;
+    wire [23:0] z_now = written ? z_a : z_init;
+    wire [15:0] i_now = written ? i_a : i_init;
+    always @(posedge clock) begin
+        z_rd_data <= tok[23:4] == A ? z_now : z_other;
+        i_rd_data <= tok[23:4] == A ? i_now : i_other;
+        if (z_we && z_wr_addr == A) begin
+            written <= 1'b1;
+            z_a <= z_wr_data;
+            i_a <= i_wr_data;
+        end
+    end
+
+    // ---- The token in the Z-test (F1) and what the memories hold for it.
+    reg [86:0] f1 = 87'd0;
+    always @(posedge clock) f1 <= tok;
+    wire [1:0] f1_kind = f1[1:0];
+    wire f1_covered = f1[2];
+    wire f1_last = f1[3];
+    wire [19:0] f1_addr = f1[23:4];
+    wire [23:0] f1_z = f1[67:44];
+    wire [15:0] f1_index = f1[83:68];
+    wire f1_frag = f1_kind == FRAG;
+    wire [23:0] true_old = i_now == 16'd0 ? FAR : z_now;
+
+    // ---- Assumption: result tokens only with room.
+    wire tok_pushes = tok[1:0] == RESULT || (tok[1:0] == FRAG && tok[3]);
+    always @(*) begin
+        if (tok_pushes) assume (result_free);
+        if (tok[1:0] == FRAG) assume (tok[83:68] != 16'd0);
+    end
+
+    // ---- The Z-test and the writes.
+    always @(*) begin
+        if (f1_frag && f1_covered && f1_addr == A) if (REACH < 0) assert (z_we == (f1_z < true_old));
+        if (z_we) begin
+            if (REACH < 0) assert (z_wr_addr == f1_addr && i_we && i_wr_addr == f1_addr);
+            if (f1_frag) begin
+                if (REACH < 0) assert (f1_covered && z_wr_data == f1_z && i_wr_data == f1_index);
+            end else begin
+                if (REACH < 0) assert (f1_kind == CLEAR && z_wr_data == FAR && i_wr_data == 16'd0);
+            end
+        end else begin
+            if (REACH < 0) assert (!i_we && f1_kind != CLEAR);
+        end
+    end
+
+    // ---- Results: protocol, depth, order and content.
+    wire f1_pushes = f1_kind == RESULT || (f1_frag && f1_last);
+    reg vis = 1'b0;
+    always @(posedge clock) if (f1_frag) vis <= f1_last ? 1'b0 : (vis | z_we);
+    wire [19:0] expected = f1_frag
+        ? {vis | z_we, 2'b00, f1_index, 1'b0}
+        : {1'b0, f1[86], f1[85], f1_index, f1[84]};
+    reg [7:0] pushed = 8'd0;
+    reg [7:0] popped = 8'd0;
+    (* anyconst *) reg [7:0] tracked;
+    reg [19:0] tracked_result = 20'd0;
+    wire pop = result_valid && result_ready;
+    always @(posedge clock) begin
+        if (f1_pushes) pushed <= pushed + 8'd1;
+        if (pop) popped <= popped + 8'd1;
+        if (f1_pushes && pushed == tracked) tracked_result <= expected;
+    end
+    always @(*) begin
+        if (REACH < 0) assert (pushed - popped <= 8'd3);  // modulo 256: the counters may wrap
+        if (REACH < 0) assert (result_valid == (pushed != popped));
+        if (pop && popped == tracked) if (REACH < 0) assert (result_data == tracked_result);
+    end
+    always @(posedge clock) if (past_valid && $past(result_valid && !result_ready)) begin
+        if (REACH < 0) assert (result_valid && result_data == $past(result_data));
+    end
+
+    // ---- Reach points.
+    reg prev_last = 1'b0;
+    always @(posedge clock) prev_last <= f1_frag && f1_last;
+    reg prev_write_a = 1'b0;
+    always @(posedge clock) prev_write_a <= z_we && z_wr_addr == A;
+    wire forwarded = prev_write_a && f1_frag && f1_covered && f1_addr == A;
+    always @(posedge clock) if (past_valid) begin
+        cover (forwarded && !prev_last);
+        if (REACH == 0) assert (!(forwarded && !prev_last));
+        cover (forwarded && prev_last);
+        if (REACH == 1) assert (!(forwarded && prev_last));
+        cover (forwarded && (z_we != (f1_z < z_rd_data)));
+        if (REACH == 2) assert (!(forwarded && (z_we != (f1_z < z_rd_data))));
+        cover (pushed - popped == 8'd3);
+        if (REACH == 3) assert (!(pushed - popped == 8'd3));
+        cover ($past(result_valid && !result_ready) && result_valid);
+        if (REACH == 4) assert (!($past(result_valid && !result_ready) && result_valid));
+    end
+endmodule
