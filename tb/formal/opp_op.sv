@@ -1,0 +1,119 @@
+// Formal harness of one object processor, module `opp$ops$0` of the `opp` top's Verilog (all eight
+// OPs instantiate it; RustHDL source hdl/src/proof/object_processor.rs). Run by `bash
+// scripts/formal.sh opp_op`; see docs/verification.md. The whole-OPP harness (opp.sv) cannot see a
+// list of two entries leave the pipeline before depth 19, deeper than its bmc reaches; one OP shows
+// the list invariants within a few clocks, and by induction over the chain they hold for the OPP.
+//
+// Assumed: upstream valid held until ready and data stable while stalled; the lists coming in have
+// the invariants asserted on the way out (one position per list, an empty slot is a whole list, a
+// full entry ends its list, sorted by (depth, id)); a load only while `free`.
+// Asserted on the way out: valid held until ready and data stable while stalled; the same list
+// invariants; one list out per list in, in order (the n-th list's position, n solver-chosen).
+// Reach points: the own entry inserted before an entry of the list, a list of three entries, a full
+// own entry ending a list that had more entries, a stall on the output.
+//
+// ProofSlot: x 9:0, y 19:10, last 20, has_entry 21, id 37:22, depth 61:38, full 62.
+module opp_op_formal #(
+    parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+) (
+    input wire clock,
+    input wire load,
+    input wire [730:0] load_params,
+    input wire [158:0] up_data,
+    input wire up_valid,
+    input wire down_ready
+);
+    wire up_ready;
+    wire [158:0] down_data;
+    wire down_valid;
+    wire free;
+    opp$ops$0 dut (
+        .clock(clock), .load(load), .load_params(load_params),
+        .upstream$data(up_data), .upstream$valid(up_valid), .upstream$ready(up_ready),
+        .downstream$data(down_data), .downstream$valid(down_valid), .downstream$ready(down_ready),
+        .free(free)
+    );
+
+    reg past_valid = 1'b0;
+    always @(posedge clock) past_valid <= 1'b1;
+    wire up_fire = up_valid && up_ready;
+    wire down_fire = down_valid && down_ready;
+
+    // ---- The lists coming in.
+    reg up_in_list = 1'b0;
+    reg [19:0] up_pos = 20'd0;
+    reg [39:0] up_key = 40'd0;
+    always @(posedge clock) if (up_fire) begin
+        up_in_list <= !up_data[20];
+        up_pos <= up_data[19:0];
+        up_key <= {up_data[61:38], up_data[37:22]};
+    end
+    always @(*) begin
+        if (load) assume (free);
+        if (up_valid) begin
+            if (!up_data[21]) assume (up_data[20] && !up_in_list);
+            if (up_data[21] && up_data[62]) assume (up_data[20]);
+            if (up_in_list) assume (up_data[19:0] == up_pos && {up_data[61:38], up_data[37:22]} >= up_key);
+        end
+    end
+    always @(posedge clock) if (past_valid && $past(up_valid && !up_ready)) begin
+        assume (up_valid);
+        assume (up_data == $past(up_data));
+    end
+
+    // ---- The lists going out.
+    always @(posedge clock) if (past_valid && $past(down_valid && !down_ready)) begin
+        if (REACH < 0) assert (down_valid);
+        if (REACH < 0) assert (down_data == $past(down_data));
+    end
+    reg in_list = 1'b0;
+    reg [19:0] list_pos = 20'd0;
+    reg [39:0] list_key = 40'd0;
+    reg [1:0] list_len = 2'd0;     // entries so far in the list going out, saturating at 3
+    always @(posedge clock) if (down_fire) begin
+        in_list <= !down_data[20];
+        list_pos <= down_data[19:0];
+        list_key <= {down_data[61:38], down_data[37:22]};
+        list_len <= down_data[20] ? 2'd0 : (list_len == 2'd3 ? 2'd3 : list_len + {1'b0, down_data[21]});
+    end
+    always @(*) if (down_valid) begin
+        if (!down_data[21]) if (REACH < 0) assert (down_data[20] && !in_list);
+        if (down_data[21] && down_data[62]) if (REACH < 0) assert (down_data[20]);
+        if (in_list) begin
+            if (REACH < 0) assert (down_data[19:0] == list_pos);
+            if (REACH < 0) assert ({down_data[61:38], down_data[37:22]} >= list_key);
+        end
+    end
+
+    // ---- One list out per list in, in order.
+    reg [7:0] lists_in = 8'd0;
+    reg [7:0] lists_out = 8'd0;
+    (* anyconst *) reg [7:0] tracked;
+    reg [19:0] tracked_pos = 20'd0;
+    always @(posedge clock) begin
+        // A list counts in at its first slot: a full own entry ends the list going out before the
+        // rest of the list coming in (dropped) has arrived.
+        if (up_fire && !up_in_list) lists_in <= lists_in + 8'd1;
+        if (down_fire && down_data[20]) lists_out <= lists_out + 8'd1;
+        if (up_fire && !up_in_list && lists_in == tracked) tracked_pos <= up_data[19:0];
+    end
+    always @(*) begin
+        if (REACH < 0) assert (lists_out <= lists_in);
+        if (down_fire && down_data[20] && lists_out == tracked) if (REACH < 0) assert (tracked < lists_in && down_data[19:0] == tracked_pos);
+    end
+
+    // ---- Reach points. "Own entry" = the id the OP was loaded with (load_params' first field).
+    reg [15:0] own_id = 16'd0;
+    always @(posedge clock) if (load) own_id <= load_params[15:0];
+    wire own_out = down_fire && down_data[21] && down_data[37:22] == own_id;
+    always @(posedge clock) if (past_valid) begin
+        cover (own_out && !down_data[20] && up_in_list);
+        if (REACH == 0) assert (!(own_out && !down_data[20]));
+        cover (down_fire && down_data[21] && list_len == 2'd2);
+        if (REACH == 1) assert (!(down_fire && down_data[21] && list_len == 2'd2));
+        cover (own_out && down_data[62] && list_len != 2'd0);
+        if (REACH == 2) assert (!(own_out && down_data[62] && list_len != 2'd0));
+        cover ($past(down_valid && !down_ready) && down_valid);
+        if (REACH == 3) assert (!($past(down_valid && !down_ready) && down_valid));
+    end
+endmodule
