@@ -140,7 +140,7 @@ pub struct RenderArgs {
 /// The most frames one `render --frames` run takes (each frame's host state is kept until the run ends).
 pub const MAX_FRAMES: u32 = 64;
 
-fn parse_size(s: &str) -> Result<Screen, String> {
+pub fn parse_size(s: &str) -> Result<Screen, String> {
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(|| format!("--size '{s}' is not WxH (e.g. 320x200)"))?;
     let w: u32 = w.trim().parse().map_err(|_| format!("--size '{s}': width '{w}' is not a whole number"))?;
     let h: u32 = h.trim().parse().map_err(|_| format!("--size '{s}': height '{h}' is not a whole number"))?;

@@ -113,6 +113,39 @@ fn verilog_rejects_an_unknown_block_naming_the_known_ones() {
     assert!(err.contains("unknown block 'nosuch'") && err.contains("rc"), "{err}");
 }
 
+/// `verilog --size WxH` sizes exactly the tops of `hdl::SCREEN_TOPS` (the formal harness of the 2x2
+/// filter uses a 4x3 build): their Verilog and README text follow the size, every other top is the
+/// same file as the default build; a size a top cannot take is refused naming the top's limit, and
+/// writes nothing.
+#[test]
+fn verilog_size_resizes_only_the_screen_sized_tops_and_refuses_sizes_they_cannot_take() {
+    let small = scratch("verilog_size_4x3");
+    let o = bin().args(["verilog", "--size", "4x3", "--out"]).arg(&small).output().unwrap();
+    assert!(o.status.success(), "verilog --size 4x3 failed:\n{}", String::from_utf8_lossy(&o.stderr));
+    let default = scratch("verilog_size_default");
+    generate(&default);
+    for (top, _) in hdl::TOPS {
+        let a = std::fs::read(small.join(format!("{top}.v"))).unwrap();
+        let b = std::fs::read(default.join(format!("{top}.v"))).unwrap();
+        assert_eq!(a != b, hdl::SCREEN_TOPS.contains(top), "{top}: resized = {}, but SCREEN_TOPS says otherwise", a != b);
+    }
+    let readme = std::fs::read_to_string(small.join("README.md")).unwrap();
+    assert!(!readme.contains("320x200") && !readme.contains("320-column"), "the 4x3 README still names the default screen");
+    assert!(readme.contains("for a 4x3 screen") && readme.contains("4-column line buffer"), "{readme}");
+    // The 2x2 filter's line buffer: one 112-bit word per column.
+    assert!(readme.contains("Internal memories (block RAM on an FPGA): 4 x 112,"), "{readme}");
+
+    let refused = scratch("verilog_size_1x3");
+    let o = bin().args(["verilog", "--block", "proof_filter2x2", "--size", "1x3", "--out"]).arg(&refused).output().unwrap();
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("1x3 screen") && err.contains("width must be 2..=1024"), "{err}");
+    assert_eq!(std::fs::read_dir(&refused).unwrap().count(), 0, "a refused size wrote into {}", refused.display());
+    let o = bin().args(["verilog", "--size", "320by200", "--out"]).arg(&refused).output().unwrap();
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--size '320by200' is not WxH"), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
 /// `verilog --out` is one unit (issue 18): a run for one block replaces a folder of every block whole
 /// (no stale .v beside a files.f that no longer lists it); a write that fails halfway leaves the
 /// previous folder complete; a folder with files verilog does not write is refused.

@@ -30,19 +30,42 @@ pub const TOPS: &[(&str, &str)] = &[
     ("cs", "Color Shader: I-buffer + TdbS scan-out, 1 pixel/clock, AXI4-Stream video, clear-behind ports"),
 ];
 
-/// Generate the Verilog of the top named `block` (module name = `block`).
+/// The screen the screen-sized tops are generated for unless another is asked for.
+pub const DEFAULT_SCREEN: (u32, u32) = (320, 200);
+
+/// The tops whose RTL depends on the screen size (address widths, the 2x2 filter's line buffer):
+/// `idxrender verilog --size WxH` applies to these and leaves the others as they are.
+pub const SCREEN_TOPS: &[&str] = &["proof_filter2x2", "rc", "rc3", "chipset", "chipset3"];
+
+/// The description of top `block` (from [`TOPS`]) for a `screen` of width x height pixels.
+pub fn top_description(block: &str, screen: (u32, u32)) -> Option<String> {
+    let (w, h) = screen;
+    let (dw, dh) = DEFAULT_SCREEN;
+    TOPS.iter().find(|t| t.0 == block).map(|t| {
+        t.1.replace(&format!("{dw}x{dh}"), &format!("{w}x{h}")).replace(&format!("{dw}-column"), &format!("{w}-column"))
+    })
+}
+
+/// Generate the Verilog of the top named `block` (module name = `block`) for [`DEFAULT_SCREEN`].
 pub fn verilog_top(block: &str) -> Result<String, String> {
+    verilog_top_for(block, DEFAULT_SCREEN)
+}
+
+/// Generate the Verilog of the top named `block` (module name = `block`); the tops of
+/// [`SCREEN_TOPS`] are sized for `screen` (width, height), the others do not depend on it.
+pub fn verilog_top_for(block: &str, screen: (u32, u32)) -> Result<String, String> {
+    let (w, h) = screen;
     match block {
         "opp" => proof::verilog_opp("opp", 8, 1),
         "proof_shade" => proof::verilog_shading("proof_shade", 1, 10),
         "proof_filter" => proof::verilog_filter("proof_filter", 10),
-        "proof_filter2x2" => proof::verilog_filter2x2("proof_filter2x2", 10, 320, 200),
-        "rc" => rc::verilog(320, 200),
-        "rc3" => rc::rc3::verilog(320, 200),
+        "proof_filter2x2" => proof::verilog_filter2x2("proof_filter2x2", 10, w, h),
+        "rc" => rc::verilog(w, h),
+        "rc3" => rc::rc3::verilog(w, h),
         "colour_setup" => cs::colour_setup_verilog(),
         "cs" => cs::color_shader_verilog(),
-        "chipset" => chipset::verilog(320, 200),
-        "chipset3" => chipset::chipset3::verilog(320, 200),
+        "chipset" => chipset::verilog(w, h),
+        "chipset3" => chipset::chipset3::verilog(w, h),
         _ => Err(format!(
             "unknown block '{block}': known blocks are {}",
             TOPS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")
