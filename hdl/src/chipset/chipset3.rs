@@ -47,10 +47,14 @@ pub struct Chipset3 {
     pub scan_clear_behind: Signal<In, Bit>,
     /// Light the interpolated normals per pixel (Phong) instead of evaluating colours (latched at start).
     pub scan_phong: Signal<In, Bit>,
-    /// The CS's Phong constants (see `cs::color_shader`): write while `scan_busy` is low.
+    /// The CS's Phong constants (see `cs::color_shader`), written while `scan_busy` is low: load light
+    /// `light_write_address`'s L and H.
     pub light_write_enable: Signal<In, Bit>,
     pub light_write_address: Signal<In, Bits<2>>,
     pub light_write_data: Signal<In, LightVectors>,
+    /// The CS's Phong constants, written while `scan_busy` is low: word `material_write_slot` of
+    /// material `material_write_address` (slot 0 = ambient and log2 of the gloss, slot 1 + l = light
+    /// l's diffuse and specular coefficients).
     pub material_write_enable: Signal<In, Bit>,
     pub material_write_address: Signal<In, Bits<CS_MATERIAL_BITS>>,
     pub material_write_slot: Signal<In, Bits<3>>,
