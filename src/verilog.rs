@@ -296,8 +296,6 @@ pub fn verilog_facts(v: &str) -> VerilogFacts {
 
 /// The memory ports of each known top (outside the core, synchronous): what a user must attach.
 fn memory_interface(top: &str, screen: (u32, u32)) -> String {
-    let (dw, dh) = hdl::DEFAULT_SCREEN;
-    let fixed = format!("({dw}x{dh})");
     let text = match top {
         "rc" => "Z-buffer (W*H words x 24 bits, address `y*W + x`): read port `z_re`/`z_rd_addr` -> `z_rd_data`, write port `z_we`/`z_wr_addr`/`z_wr_data`. I-buffer (W*H x 16): write port `i_we`/`i_wr_addr`/`i_wr_data`, and `i_rd_data`, the index read with `z_re`/`z_rd_addr` (a background index makes the depth read with it count as far: no Z clear pass).",
         "rc3" => "No Z-buffer. I-buffer (W*H x 16, address `y*W + x`): read port `i_re`/`i_rd_addr` -> `i_rd_data` one cycle later, write port `i_we`/`i_wr_addr`/`i_wr_data`. TdbV (2^16 records x 136 bits, address = triangle index, a depth plane: A 40 bits, B 40, C 56): read port `tdbv_re`/`tdbv_rd_addr` -> `tdbv_rd_a`/`_b`/`_c` one cycle later, write port `tdbv_we`/`tdbv_wr_addr`/`tdbv_wr_a`/`_b`/`_c`.",
@@ -311,7 +309,7 @@ fn memory_interface(top: &str, screen: (u32, u32)) -> String {
         "proof_filter2x2" => "No external memory: the direction table and the filter's parameters are inside (written through `cfg_*`); the 2x2 box's line buffer (one 112-bit word per screen column) is inside too. The screen size is fixed at generation (320x200): the stream must be whole frames of that size in raster order.",
         _ => "See the port table (no memory-interface note is written for this top yet).",
     };
-    text.replace(&fixed, &format!("({}x{})", screen.0, screen.1))
+    hdl::for_screen(text, screen)
 }
 
 /// The README of the output directory for these tops (name, Verilog).

@@ -37,13 +37,17 @@ pub const DEFAULT_SCREEN: (u32, u32) = (320, 200);
 /// `idxrender verilog --size WxH` applies to these and leaves the others as they are.
 pub const SCREEN_TOPS: &[&str] = &["proof_filter2x2", "rc", "rc3", "chipset", "chipset3"];
 
-/// The description of top `block` (from [`TOPS`]) for a `screen` of width x height pixels.
-pub fn top_description(block: &str, screen: (u32, u32)) -> Option<String> {
+/// A text written for [`DEFAULT_SCREEN`] ("320x200", "320-column") said of a `screen` of width x
+/// height pixels instead.
+pub fn for_screen(text: &str, screen: (u32, u32)) -> String {
     let (w, h) = screen;
     let (dw, dh) = DEFAULT_SCREEN;
-    TOPS.iter().find(|t| t.0 == block).map(|t| {
-        t.1.replace(&format!("{dw}x{dh}"), &format!("{w}x{h}")).replace(&format!("{dw}-column"), &format!("{w}-column"))
-    })
+    text.replace(&format!("{dw}x{dh}"), &format!("{w}x{h}")).replace(&format!("{dw}-column"), &format!("{w}-column"))
+}
+
+/// The description of top `block` (from [`TOPS`]) for a `screen` of width x height pixels.
+pub fn top_description(block: &str, screen: (u32, u32)) -> Option<String> {
+    TOPS.iter().find(|t| t.0 == block).map(|t| for_screen(t.1, screen))
 }
 
 /// Generate the Verilog of the top named `block` (module name = `block`) for [`DEFAULT_SCREEN`].
