@@ -51,8 +51,8 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
             Ok(Target { top: "colour_setup", verilog: hdl::verilog_top("colour_setup")?, stimulus, replay })
         }
         "cs" => {
-            let rec = crate::cs::stimulus::cs_replay_recording(0xC5)?;
-            let stimulus = format!("{} cycles: the CS replay test's four frames (Phong, Gouraud, clear behind, 2000x1), 35% stalls", rec.cycles());
+            let rec = crate::cs::stimulus::cs_mutation_recording(0xC5)?;
+            let stimulus = format!("{} cycles: the CS replay test's four frames (Phong, Gouraud, clear behind, 2000x1) and three Phong frames of 64x32 with unit-scale normals, 35% stalls", rec.cycles());
             let replay: Replay = Box::new(move |v, d| crate::cs::replay::replay_iverilog(v, "cs", &rec, d).map(|_| ()));
             Ok(Target { top: "cs", verilog: hdl::verilog_top("cs")?, stimulus, replay })
         }
@@ -82,16 +82,21 @@ fn rc_target(dir: &Path) -> Result<Target, String> {
 }
 
 /// What [`rc_stream`] holds, after its cycle count.
-const RC_STREAM: &str = "cycles at 32x24: the hand-made cases and 6 random lists of 40 triangles, random gaps and stalls";
+const RC_STREAM: &str = "cycles at 32x24: the hand-made cases, 6 random lists of 40 triangles and 4 lists of 80 triangles on one pixel each (fragments back to back, random depths and 16-bit indices), random gaps and stalls";
 
-/// The RCs' stream at 32x24: the hand-made cases, then six random lists of 40 triangles.
+/// The RCs' stream at 32x24: the hand-made cases, then six random lists of 40 triangles, then four
+/// lists of 80 triangles on one pixel each ([`hazard_triangles`](crate::rc::stimulus::hazard_triangles),
+/// added for the survivors of the first run: forwarded depths and high index bits).
 fn rc_stream() -> (Screen, Vec<golden::cycle::rc::RcCmd>) {
-    use crate::rc::stimulus::{frame, hand_made, hand_made_screen, random_triangles};
+    use crate::rc::stimulus::{frame, hand_made, hand_made_screen, hazard_triangles, random_triangles};
     let screen = hand_made_screen();
     let mut cmds: Vec<_> = hand_made().into_iter().flat_map(|(_, c)| c).collect();
     let mut rng = Rng::new(0x3_7a7e);
     for _ in 0..6 {
         cmds.extend(frame(true, random_triangles(&mut rng, screen, 40)));
+    }
+    for _ in 0..4 {
+        cmds.extend(frame(true, hazard_triangles(&mut rng, screen, 80)));
     }
     (screen, cmds)
 }
@@ -252,8 +257,9 @@ pub fn touches_a_clock(cmd: &str) -> bool {
     words.windows(2).any(|w| (w[0] == "-port" && w[1] == "CLK") || (w[0] == "-wire" && w[1] == "clock"))
 }
 
-/// Replay mutant `i` and, if it survives, try to prove it equivalent.
-pub fn judge(t: &Target, cmd: &str, dir: &Path, i: usize) -> Outcome {
+/// Replay mutant `i` and, if it survives and `prove` is set, try to prove it equivalent (without
+/// `prove`, a survivor is [`Outcome::Surviving`] with [`EQUIVALENCE_NOT_TRIED`]).
+pub fn judge(t: &Target, cmd: &str, dir: &Path, i: usize, prove: bool) -> Outcome {
     let v = match std::fs::read_to_string(dir.join(format!("mutant_{i}.v"))) {
         Ok(v) => v,
         Err(e) => return Outcome::Error(format!("cannot read mutant_{i}.v: {e}")),
@@ -261,6 +267,7 @@ pub fn judge(t: &Target, cmd: &str, dir: &Path, i: usize) -> Outcome {
     match t.replay(&v, &dir.join(format!("run_{i}"))) {
         Err(e) if KILLED.iter().any(|k| e.contains(k)) => Outcome::Killed(first_line_about_the_failure(&e)),
         Err(e) => Outcome::Error(e.lines().take(3).collect::<Vec<_>>().join(" / ")),
+        Ok(()) if !prove => Outcome::Surviving(EQUIVALENCE_NOT_TRIED.into()),
         Ok(()) => match equivalent(cmd, dir, i) {
             Ok(()) => Outcome::Equivalent,
             Err(e) if e.contains("exit status: 124") => Outcome::Surviving(format!("equivalence not proven within {EQUIV_SECONDS} s")),
@@ -268,6 +275,9 @@ pub fn judge(t: &Target, cmd: &str, dir: &Path, i: usize) -> Outcome {
         },
     }
 }
+
+/// The detail of a survivor judged without the equivalence check (`mutation --replay-only`).
+pub const EQUIVALENCE_NOT_TRIED: &str = "not killed; equivalence not tried (--replay-only)";
 
 /// What the replays print when a port differs or the run never ends (`timeout` exits 124).
 const KILLED: [&str; 6] = ["FAILED", "MISMATCH", "differs from the cycle model", "did not finish", "stopped after", "exit status: 124"];

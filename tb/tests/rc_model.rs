@@ -6,7 +6,7 @@
 use golden::format::Screen;
 use tb::common::Rng;
 use tb::rc::bench::{run_model, Drive};
-use tb::rc::stimulus::{frame, hand_made, hand_made_screen, random_triangles, reference, scene_triangles};
+use tb::rc::stimulus::{frame, hand_made, hand_made_screen, hazard_triangles, random_triangles, reference, scene_triangles};
 
 fn check(name: &str, screen: Screen, cmds: &[golden::cycle::rc::RcCmd], drive: Drive) -> u64 {
     let run = run_model(screen, cmds, drive, None).unwrap_or_else(|e| panic!("{name}: {e}"));
@@ -47,6 +47,30 @@ fn the_same_pixel_cases_produce_the_read_patterns_they_are_named_for() {
     assert_eq!((three.z_reads, three.same_address_reads_back_to_back), (3, 2), "three reads of one pixel, each the cycle after the one before");
     let gapless = run_model(hand_made_screen(), &case("same_pixel_across_triangles_without_gap"), Drive::ideal(), None).unwrap();
     assert_eq!(gapless.same_address_reads_back_to_back, 1, "one read of the pixel the cycle after the other triangle's");
+}
+
+/// The mutation cover's one-pixel triangle lists (`hazard_triangles`) do what they are for: the cycle model
+/// draws them as the algorithmic model does, their fragments read one pixel in consecutive cycles many
+/// times (the forwarding's hazard), they set the top index bit, and they use the depth clamps.
+#[test]
+fn one_pixel_triangle_lists_read_their_pixel_back_to_back_with_high_indices_and_clamped_depths() {
+    let mut rng = Rng::new(0x4a2a);
+    let screen = hand_made_screen();
+    let (mut back_to_back, mut top_index_bit, mut clamps) = (0, false, [false; 2]);
+    for n in 0..4 {
+        let tris = hazard_triangles(&mut rng, screen, 80);
+        top_index_bit |= tris.iter().any(|t| t.index >= 1 << (golden::cycle::rc::INDEX_BITS - 1));
+        for t in &tris {
+            clamps[0] |= t.v.iter().all(|v| v.z == 0);
+            clamps[1] |= t.v.iter().all(|v| v.z == golden::format::DEPTH_MAX);
+        }
+        let cmds = frame(true, tris);
+        check(&format!("one-pixel list {n}"), screen, &cmds, Drive::random(&format!("one-pixel list {n}"), 0x4a2a + n));
+        back_to_back += run_model(screen, &cmds, Drive::ideal(), None).unwrap().same_address_reads_back_to_back;
+    }
+    assert!(back_to_back >= 100, "only {back_to_back} reads of the pixel read the cycle before");
+    assert!(top_index_bit, "no index with bit 15 set");
+    assert_eq!(clamps, [true, true], "depth 0 and DEPTH_MAX on every vertex of some triangle");
 }
 
 #[test]

@@ -122,6 +122,39 @@ pub fn ignored_writes(rng: &mut Rng) -> Vec<CsConfigWrite> {
     w
 }
 
+/// The mutation cover's recording of the CS (`crate::mutation`): [`cs_replay_recording`]'s four
+/// frames, then three Phong frames of 64x32 over records whose planes give normals of unit scale
+/// (Q14, as colour setup makes them from unit vertex normals) that turn across the frame, so that the
+/// normaliser and the light units see the range they meet in scenes; the replay's random planes give
+/// mostly short or saturated normals. Added for the survivors of the first cover run, 28 of which were
+/// in the light units.
+pub fn cs_mutation_recording(seed: u64) -> Result<Recording, String> {
+    let mut rng = Rng::new(seed);
+    let mut mem = random_memories(&mut rng, 64, 32, 200);
+    for rec in mem.tdbs.iter_mut().skip(100) {
+        rec.planes = [0, 1, 2].map(|_| Plane {
+            a: (rng.below(2 * 400 + 1) as i64 - 400) << 16,
+            b: (rng.below(2 * 400 + 1) as i64 - 400) << 16,
+            c: (rng.below(2 * 20000 + 1) as i64 - 20000) << 16,
+        });
+        rec.material = rng.below(65536) as u16;
+    }
+    let lights = random_lights(&mut rng);
+    let mut config = ignored_writes(&mut rng);
+    config.extend(phong_config(&lights)?);
+    let mut frames = vec![
+        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: false, phong: true },
+        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: true, phong: false },
+        FrameSpec { width: 2000, height: 1, background: [0; 3], clear_behind: false, phong: false },
+        FrameSpec { width: 40, height: 12, background: [4, 5, 6], clear_behind: false, phong: true },
+    ];
+    for bg in [[7, 8, 9], [255, 0, 128], [0, 255, 1]] {
+        frames.push(FrameSpec { width: 64, height: 32, background: bg, clear_behind: false, phong: true });
+    }
+    let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed };
+    let run = csb::run_rtl_vs_model("cs_mutation", &mut mem, &frames, &config, drive, true)?;
+    run.recording.ok_or_else(|| "CS bench: no recording".to_string())
+}
 
 /// The recording that colour setup's Verilog replays: `n` random commands (the replay test sends 60)
 /// with 30% input gaps, run on the RTL against the cycle model (which fails first if they differ).

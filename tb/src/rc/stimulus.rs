@@ -188,6 +188,42 @@ pub fn random_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
     v
 }
 
+/// `n` triangles on one pixel, for the Z-test's forwarding: groups of a triangle of about 8x8 pixels
+/// around a random pixel, then six one-pixel triangles on that pixel whose records queue up while the
+/// larger one is walked, so that their fragments follow each other in consecutive cycles. Depths are
+/// random over the whole range (four tenths), within 8 of a base depth of the list (four tenths: the
+/// forwarded depth's low bits decide the test), or at the clamps 0 and `DEPTH_MAX`; indices random over the whole 16-bit
+/// range, culling random (a fifth of the one-pixel triangles is culled): the forwarding's compare sees
+/// every depth bit and the I-buffer every index bit.
+pub fn hazard_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
+    let (cx, cy) = ((4 + rng.below(screen.width as u64 - 8) as i32) * 16 + 8, (4 + rng.below(screen.height as u64 - 8) as i32) * 16 + 8);
+    let base = rng.below(DEPTH_MAX as u64 + 1) as i64;
+    (0..n)
+        .map(|i| {
+            let z = match rng.below(10) {
+                0 => 0,
+                1 => DEPTH_MAX,
+                2..=5 => rng.below(DEPTH_MAX as u64 + 1) as u32,
+                // Near the list's base depth: the forwarded depth's low bits decide the test.
+                _ => (base + rng.below(16) as i64 - 8).clamp(0, DEPTH_MAX as i64) as u32,
+            };
+            let index = 1 + rng.below((1 << golden::cycle::rc::INDEX_BITS) - 1) as u32;
+            let cull_tiny = rng.chance(20);
+            let mut j = || rng.below(3) as i32;
+            let (p, cull) = if i % 7 == 0 {
+                let r = 64 + j() * 8;
+                ([(cx - r, cy - r), (cx + r, cy - r / 2), (cx - r / 2, cy + r)], CullMode::None)
+            } else {
+                let cull = if cull_tiny { CullMode::Back } else { CullMode::None };
+                ([(cx - 4 - j(), cy - 4 - j()), (cx + 4 + j(), cy - 4 - j()), (cx, cy + 4 + j())], cull)
+            };
+            let v = p.map(|(x, y)| WinVertex { x, y, z: if rng.chance(30) { z.saturating_add(rng.below(64) as u32).min(DEPTH_MAX) } else { z } });
+            let front = if rng.chance(50) { FrontFace::Ccw } else { FrontFace::Cw };
+            RcCmd::triangle(index, v, cull, front).expect("on-screen vertices fit the formats")
+        })
+        .collect()
+}
+
 /// The stream that fills the RC's queues (on a 40x24 screen): a screen-size triangle keeps the
 /// traversal busy while 40 small drawn and back-facing triangles pile up behind it.
 pub fn queue_filling_triangles() -> (Screen, Vec<RcCmd>) {
