@@ -217,7 +217,7 @@ pub fn hazard_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
                 let cull = if cull_tiny { CullMode::Back } else { CullMode::None };
                 ([(cx - 4 - j(), cy - 4 - j()), (cx + 4 + j(), cy - 4 - j()), (cx, cy + 4 + j())], cull)
             };
-            let v = p.map(|(x, y)| WinVertex { x, y, z: if rng.chance(30) { z.saturating_add(rng.below(64) as u32).min(DEPTH_MAX) } else { z } });
+            let v = p.map(|(x, y)| WinVertex { x, y, z: if rng.chance(30) { z.saturating_add(rng.below(4) as u32).min(DEPTH_MAX) } else { z } });
             let front = if rng.chance(50) { FrontFace::Ccw } else { FrontFace::Cw };
             RcCmd::triangle(index, v, cull, front).expect("on-screen vertices fit the formats")
         })
