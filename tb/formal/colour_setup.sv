@@ -11,6 +11,8 @@
 // apart and both written; a command held waiting for ready.
 //
 // cmd layout: index 15:0 (then the vertices and values, hdl/src/cs/mod.rs).
+`include "stream.vh"
+
 module colour_setup_formal #(
     parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
 ) (
@@ -31,10 +33,7 @@ module colour_setup_formal #(
     reg past_valid = 1'b0;
     always @(posedge clock) past_valid <= 1'b1;
     wire take = cmd_valid && cmd_ready;
-    always @(posedge clock) if (past_valid && $past(cmd_valid && !cmd_ready)) begin
-        assume (cmd_valid);
-        assume (cmd_data == $past(cmd_data));
-    end
+    `STREAM_IN(cmd_valid, cmd_ready, cmd_data)
 
     // Cycles since the last command was taken (saturating), and the commands in flight.
     reg [5:0] since = 6'd63;
@@ -67,10 +66,9 @@ module colour_setup_formal #(
 
     reg two_close = 1'b0;   // two commands were taken 4 cycles apart
     always @(posedge clock) if (take && since == 6'd4) two_close <= 1'b1;
+    `STALL_REACH(cmd_valid, cmd_ready, 1)
     always @(posedge clock) if (past_valid) begin
         cover (two_close && we && written == 8'd1);
         if (REACH == 0) assert (!(two_close && we && written == 8'd1));
-        cover ($past(cmd_valid && !cmd_ready) && cmd_valid);
-        if (REACH == 1) assert (!($past(cmd_valid && !cmd_ready) && cmd_valid));
     end
 endmodule

@@ -10,6 +10,8 @@
 // tlast on the last beat of each line only; `busy` high while beats of the frame are still to come
 // and none is on the port; no size error. Reach points: a stalled beat, the last beat of a 3x2
 // frame taken.
+`include "stream.vh"
+
 module cs_formal #(
     parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
 ) (
@@ -88,10 +90,7 @@ module cs_formal #(
             end
         end
     end
-    always @(posedge clock) if (past_valid && $past(video_tvalid && !video_tready)) begin
-        if (REACH < 0) assert (video_tvalid);
-        if (REACH < 0) assert (video_tdata == $past(video_tdata) && video_tuser == $past(video_tuser) && video_tlast == $past(video_tlast));
-    end
+    `STREAM_OUT(video_tvalid, video_tready, {video_tdata, video_tuser, video_tlast}, REACH < 0)
     always @(*) begin
         if (video_tvalid) begin
             if (REACH < 0) assert (started && !frame_done);
@@ -102,9 +101,8 @@ module cs_formal #(
         if (started && !frame_done && !video_tvalid) if (REACH < 0) assert (busy);
     end
 
+    `STALL_REACH(video_tvalid, video_tready, 0)
     always @(posedge clock) if (past_valid) begin
-        cover ($past(video_tvalid && !video_tready) && video_tvalid);
-        if (REACH == 0) assert (!($past(video_tvalid && !video_tready) && video_tvalid));
         cover (beat && video_tlast && by + 11'd1 == h && h == 11'd2 && w == 11'd3);
         if (REACH == 1) assert (!(beat && video_tlast && by + 11'd1 == h && h == 11'd2 && w == 11'd3));
     end

@@ -15,6 +15,8 @@
 //
 // ProofSlot layout (rust-hdl packs the first field at bit 0): x 9:0, y 19:10, last 20,
 // has_entry 21, id 37:22, depth 61:38, full 62.
+`include "stream.vh"
+
 module opp_formal #(
     // -1: check every assertion; n >= 0: check only that reach point n is unreachable, a run that
     // sby expects to fail (its counterexample is the witness that the point is reachable).
@@ -58,16 +60,10 @@ module opp_formal #(
         if (up_valid) assume (up_data[20] && !up_data[21]);
         if (load) assume (any_free && load_op == free_op);
     end
-    always @(posedge clock) if (past_valid && $past(up_valid && !up_ready)) begin
-        assume (up_valid);
-        assume (up_data == $past(up_data));
-    end
+    `STREAM_IN(up_valid, up_ready, up_data)
 
     // ---- Output protocol.
-    always @(posedge clock) if (past_valid && $past(down_valid && !down_ready)) begin
-        if (REACH < 0) assert (down_valid);
-        if (REACH < 0) assert (down_data == $past(down_data));
-    end
+    `STREAM_OUT(down_valid, down_ready, down_data, REACH < 0)
 
     // ---- Pixels in = pixels out, in order (a scoreboard of one solver-chosen pixel).
     reg [7:0] pixels_in = 8'd0;
@@ -107,11 +103,9 @@ module opp_formal #(
     always @(posedge clock) if (down_fire && d_entry && in_list) saw_two <= 1'b1;
     // Reach point n: `cover` for sby's cover mode, and for the `reachN` tasks an assertion that the
     // point is never reached, which bmc must refute.
+    `STALL_REACH(down_valid, down_ready, 0)
+    `STALL_REACH(up_valid, up_ready, 1)
     always @(posedge clock) if (past_valid) begin
-        cover ($past(down_valid && !down_ready) && down_valid);
-        if (REACH == 0) assert (!($past(down_valid && !down_ready) && down_valid));
-        cover ($past(up_valid && !up_ready) && up_valid);
-        if (REACH == 1) assert (!($past(up_valid && !up_ready) && up_valid));
         cover (saw_two && down_fire && d_last);
         if (REACH == 2) assert (!(saw_two && down_fire && d_last));
         cover (down_fire && d_entry && d_full);

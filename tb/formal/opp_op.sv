@@ -13,6 +13,8 @@
 // own entry ending a list that had more entries, a stall on the output.
 //
 // ProofSlot: x 9:0, y 19:10, last 20, has_entry 21, id 37:22, depth 61:38, full 62.
+`include "stream.vh"
+
 module opp_op_formal #(
     parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
 ) (
@@ -56,16 +58,10 @@ module opp_op_formal #(
             if (up_in_list) assume (up_data[19:0] == up_pos && {up_data[61:38], up_data[37:22]} >= up_key);
         end
     end
-    always @(posedge clock) if (past_valid && $past(up_valid && !up_ready)) begin
-        assume (up_valid);
-        assume (up_data == $past(up_data));
-    end
+    `STREAM_IN(up_valid, up_ready, up_data)
 
     // ---- The lists going out.
-    always @(posedge clock) if (past_valid && $past(down_valid && !down_ready)) begin
-        if (REACH < 0) assert (down_valid);
-        if (REACH < 0) assert (down_data == $past(down_data));
-    end
+    `STREAM_OUT(down_valid, down_ready, down_data, REACH < 0)
     reg in_list = 1'b0;
     reg [19:0] list_pos = 20'd0;
     reg [39:0] list_key = 40'd0;
@@ -106,6 +102,7 @@ module opp_op_formal #(
     reg [15:0] own_id = 16'd0;
     always @(posedge clock) if (load) own_id <= load_params[15:0];
     wire own_out = down_fire && down_data[21] && down_data[37:22] == own_id;
+    `STALL_REACH(down_valid, down_ready, 3)
     always @(posedge clock) if (past_valid) begin
         cover (own_out && !down_data[20] && up_in_list);
         if (REACH == 0) assert (!(own_out && !down_data[20]));
@@ -113,7 +110,5 @@ module opp_op_formal #(
         if (REACH == 1) assert (!(down_fire && down_data[21] && list_len == 2'd2));
         cover (own_out && down_data[62] && list_len != 2'd0);
         if (REACH == 2) assert (!(own_out && down_data[62] && list_len != 2'd0));
-        cover ($past(down_valid && !down_ready) && down_valid);
-        if (REACH == 3) assert (!($past(down_valid && !down_ready) && down_valid));
     end
 endmodule

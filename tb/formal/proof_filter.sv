@@ -11,6 +11,8 @@
 //
 // ShadedSlot (in): x 9:0, y 19:10, last 20, has_entry 21, id 37:22, full 38, d0..d2 86:39,
 // r g b 110:87. FilteredPixel (out): x 9:0, y 19:10, r g b 43:20, covered 50:44.
+`include "stream.vh"
+
 module proof_filter_formal #(
     parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
 ) (
@@ -38,14 +40,8 @@ module proof_filter_formal #(
     wire down_fire = down_valid && down_ready;
 
     always @(*) if (up_valid && !up_data[21]) assume (up_data[20]);
-    always @(posedge clock) if (past_valid && $past(up_valid && !up_ready)) begin
-        assume (up_valid);
-        assume (up_data == $past(up_data));
-    end
-    always @(posedge clock) if (past_valid && $past(down_valid && !down_ready)) begin
-        if (REACH < 0) assert (down_valid);
-        if (REACH < 0) assert (down_data == $past(down_data));
-    end
+    `STREAM_IN(up_valid, up_ready, up_data)
+    `STREAM_OUT(down_valid, down_ready, down_data, REACH < 0)
 
     reg [7:0] lists_in = 8'd0;
     reg [7:0] pixels_out = 8'd0;
@@ -71,11 +67,9 @@ module proof_filter_formal #(
         if (delivered) if (REACH < 0) assert (tracked < lists_in && down_data[19:0] == tracked_pos);
     end
 
+    `STALL_REACH(down_valid, down_ready, 0)
+    `STALL_REACH(up_valid, up_ready, 1)
     always @(posedge clock) if (past_valid) begin
-        cover ($past(down_valid && !down_ready) && down_valid);
-        if (REACH == 0) assert (!($past(down_valid && !down_ready) && down_valid));
-        cover ($past(up_valid && !up_ready) && up_valid);
-        if (REACH == 1) assert (!($past(up_valid && !up_ready) && up_valid));
         cover (delivered && tracked_two);
         if (REACH == 2) assert (!(delivered && tracked_two));
     end

@@ -11,6 +11,8 @@
 // ProofSlot (in): x 9:0, y 19:10, last 20, has_entry 21, id 37:22, depth 61:38, full 62, normal
 // 110:63, d0..d2 158:111. ShadedSlot (out): x, y, last, has_entry, id 37:0 as above, full 38,
 // d0..d2 86:39, r g b 110:87.
+`include "stream.vh"
+
 module proof_shade_formal #(
     parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
 ) (
@@ -37,14 +39,8 @@ module proof_shade_formal #(
     wire up_fire = up_valid && up_ready;
     wire down_fire = down_valid && down_ready;
 
-    always @(posedge clock) if (past_valid && $past(up_valid && !up_ready)) begin
-        assume (up_valid);
-        assume (up_data == $past(up_data));
-    end
-    always @(posedge clock) if (past_valid && $past(down_valid && !down_ready)) begin
-        if (REACH < 0) assert (down_valid);
-        if (REACH < 0) assert (down_data == $past(down_data));
-    end
+    `STREAM_IN(up_valid, up_ready, up_data)
+    `STREAM_OUT(down_valid, down_ready, down_data, REACH < 0)
 
     wire [86:0] up_kept = {up_data[158:111], up_data[62], up_data[37:0]};
     reg [7:0] slots_in = 8'd0;
@@ -62,11 +58,9 @@ module proof_shade_formal #(
         if (delivered) if (REACH < 0) assert (tracked < slots_in && down_data[86:0] == tracked_slot);
     end
 
+    `STALL_REACH(down_valid, down_ready, 0)
+    `STALL_REACH(up_valid, up_ready, 1)
     always @(posedge clock) if (past_valid) begin
-        cover ($past(down_valid && !down_ready) && down_valid);
-        if (REACH == 0) assert (!($past(down_valid && !down_ready) && down_valid));
-        cover ($past(up_valid && !up_ready) && up_valid);
-        if (REACH == 1) assert (!($past(up_valid && !up_ready) && up_valid));
         cover (delivered && tracked == 8'd2);
         if (REACH == 2) assert (!(delivered && tracked == 8'd2));
     end

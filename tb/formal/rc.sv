@@ -36,52 +36,13 @@ module rc_formal #(
         .i_rd_data(i_rd_data)
     );
 
-    reg past_valid = 1'b0;
-    always @(posedge clock) past_valid <= 1'b1;
-    wire take = cmd_valid && cmd_ready;
-    wire [1:0] kind = cmd_data[1:0];
-    always @(*) if (cmd_valid) begin
-        assume (kind != 2'd3);
-        if (kind == 2'd0) assume (!cmd_data[2]);
-        if (kind == 2'd1) assume (cmd_data[18:3] != 16'd0);
-    end
-    always @(posedge clock) if (past_valid && $past(cmd_valid && !cmd_ready)) begin
-        assume (cmd_valid);
-        assume (cmd_data == $past(cmd_data));
-    end
-
-    wire pop = result_valid && result_ready;
-    wire counts = take && kind != 2'd0;
-    reg [7:0] pushed = 8'd0;
-    reg [7:0] popped = 8'd0;
-    (* anyconst *) reg [7:0] tracked;
-    reg [16:0] tracked_key = 17'd0;   // {index, eof} of the tracked command
-    always @(posedge clock) begin
-        if (counts) pushed <= pushed + 8'd1;
-        if (pop) popped <= popped + 8'd1;
-        if (counts && pushed == tracked) tracked_key <= kind == 2'd2 ? 17'd1 : {cmd_data[18:3], 1'b0};
-    end
+    `define RC_ORDER (REACH < 0)
+    `include "stream.vh"
+    `include "rc_protocol.vh"
     always @(*) begin
-        if (REACH < 0) assert (popped <= pushed);
-        // An end-of-frame result carries eof (its index field is the command's, unspecified here).
-        if (pop && popped == tracked) if (REACH < 0) assert (tracked < pushed && result_data[0] == tracked_key[0]
-            && (tracked_key[0] || result_data[16:1] == tracked_key[16:1]));
         if (REACH < 0) assert (z_we == i_we && (!z_we || z_wr_addr == i_wr_addr));
         if (!z_re) if (REACH < 0) assert (z_rd_addr == 20'd0);
         if (!z_we) if (REACH < 0) assert (z_wr_addr == 20'd0 && z_wr_data == 24'd0);
         if (!i_we) if (REACH < 0) assert (i_wr_addr == 20'd0 && i_wr_data == 16'd0);
-        if (!result_valid) if (REACH < 0) assert (result_data == 20'd0);
-    end
-    always @(posedge clock) if (past_valid && $past(result_valid && !result_ready)) begin
-        if (REACH < 0) assert (result_valid && result_data == $past(result_data));
-    end
-
-    always @(posedge clock) if (past_valid) begin
-        cover ($past(result_valid && !result_ready) && result_valid);
-        if (REACH == 0) assert (!($past(result_valid && !result_ready) && result_valid));
-        cover (pop && result_data[19]);
-        if (REACH == 1) assert (!(pop && result_data[19]));
-        cover (pop && result_data[0]);
-        if (REACH == 2) assert (!(pop && result_data[0]));
     end
 endmodule

@@ -24,6 +24,8 @@
 // RcToken layout (rust-hdl packs the first field at bit 0): kind 1:0 (0 none, 1 clear, 2 fragment,
 // 3 result), covered 2, last 3, addr 23:4, x 33:24, y 43:34, z 67:44, index 83:68, eof 84,
 // culled 85, zero_area 86. RcResult: eof 0, index 16:1, culled 17, zero_area 18, visible 19.
+`include "stream.vh"
+
 module rc_z_test_formal #(
     // -1: check every assertion; n >= 0: check only that reach point n is unreachable, a run that
     // sby expects to fail (its counterexample is the witness that the point is reachable).
@@ -134,9 +136,7 @@ module rc_z_test_formal #(
         if (REACH < 0) assert (result_valid == (pushed != popped));
         if (pop && popped == tracked) if (REACH < 0) assert (result_data == tracked_result);
     end
-    always @(posedge clock) if (past_valid && $past(result_valid && !result_ready)) begin
-        if (REACH < 0) assert (result_valid && result_data == $past(result_data));
-    end
+    `STREAM_OUT(result_valid, result_ready, result_data, REACH < 0)
 
     // ---- Reach points.
     reg prev_last = 1'b0;
@@ -144,6 +144,7 @@ module rc_z_test_formal #(
     reg prev_write_a = 1'b0;
     always @(posedge clock) prev_write_a <= z_we && z_wr_addr == A;
     wire forwarded = prev_write_a && f1_frag && f1_covered && f1_addr == A;
+    `STALL_REACH(result_valid, result_ready, 4)
     always @(posedge clock) if (past_valid) begin
         cover (forwarded && !prev_last);
         if (REACH == 0) assert (!(forwarded && !prev_last));
@@ -153,7 +154,5 @@ module rc_z_test_formal #(
         if (REACH == 2) assert (!(forwarded && (z_we != (f1_z < z_rd_data))));
         cover (pushed - popped == 8'd3);
         if (REACH == 3) assert (!(pushed - popped == 8'd3));
-        cover ($past(result_valid && !result_ready) && result_valid);
-        if (REACH == 4) assert (!($past(result_valid && !result_ready) && result_valid));
     end
 endmodule
