@@ -82,10 +82,10 @@ fn rc_target(dir: &Path) -> Result<Target, String> {
 }
 
 /// What [`rc_stream`] holds, after its cycle count.
-const RC_STREAM: &str = "cycles at 32x24: the hand-made cases, 6 random lists of 40 triangles and 4 lists of 80 triangles on one pixel each (fragments back to back, random depths and 16-bit indices), random gaps and stalls";
+const RC_STREAM: &str = "cycles at 32x24: the hand-made cases, 6 random lists of 40 triangles and 8 lists of 80 triangles on one pixel each (fragments back to back; random, near or stepping depths; 16-bit indices), random gaps and stalls";
 
-/// The RCs' stream at 32x24: the hand-made cases, then six random lists of 40 triangles, then four
-/// lists of 80 triangles on one pixel each ([`hazard_triangles`](crate::rc::stimulus::hazard_triangles),
+/// The RCs' stream at 32x24: the hand-made cases, then six random lists of 40 triangles, then eight
+/// lists of 80 triangles on one pixel each (four with random depths, four with a staircase) ([`hazard_triangles`](crate::rc::stimulus::hazard_triangles),
 /// added for the survivors of the first run: forwarded depths and high index bits).
 fn rc_stream() -> (Screen, Vec<golden::cycle::rc::RcCmd>) {
     use crate::rc::stimulus::{frame, hand_made, hand_made_screen, hazard_triangles, random_triangles};
@@ -95,8 +95,8 @@ fn rc_stream() -> (Screen, Vec<golden::cycle::rc::RcCmd>) {
     for _ in 0..6 {
         cmds.extend(frame(true, random_triangles(&mut rng, screen, 40)));
     }
-    for _ in 0..4 {
-        cmds.extend(frame(true, hazard_triangles(&mut rng, screen, 80)));
+    for staircase in [false, false, false, false, true, true, true, true] {
+        cmds.extend(frame(true, hazard_triangles(&mut rng, screen, 80, staircase)));
     }
     (screen, cmds)
 }

@@ -51,14 +51,15 @@ fn the_same_pixel_cases_produce_the_read_patterns_they_are_named_for() {
 
 /// The mutation cover's one-pixel triangle lists (`hazard_triangles`) do what they are for: the cycle model
 /// draws them as the algorithmic model does, their fragments read one pixel in consecutive cycles many
-/// times (the forwarding's hazard), they set the top index bit, and they use the depth clamps.
+/// times (the forwarding's hazard), they set the top index bit, they use the depth clamps, and in the
+/// staircase lists at least half of the fragments pass.
 #[test]
 fn one_pixel_triangle_lists_read_their_pixel_back_to_back_with_high_indices_and_clamped_depths() {
     let mut rng = Rng::new(0x4a2a);
     let screen = hand_made_screen();
     let (mut back_to_back, mut top_index_bit, mut clamps) = (0, false, [false; 2]);
     for n in 0..4 {
-        let tris = hazard_triangles(&mut rng, screen, 80);
+        let tris = hazard_triangles(&mut rng, screen, 80, n >= 2);
         top_index_bit |= tris.iter().any(|t| t.index >= 1 << (golden::cycle::rc::INDEX_BITS - 1));
         for t in &tris {
             clamps[0] |= t.v.iter().all(|v| v.z == 0);
@@ -66,7 +67,12 @@ fn one_pixel_triangle_lists_read_their_pixel_back_to_back_with_high_indices_and_
         }
         let cmds = frame(true, tris);
         check(&format!("one-pixel list {n}"), screen, &cmds, Drive::random(&format!("one-pixel list {n}"), 0x4a2a + n));
-        back_to_back += run_model(screen, &cmds, Drive::ideal(), None).unwrap().same_address_reads_back_to_back;
+        let run = run_model(screen, &cmds, Drive::ideal(), None).unwrap();
+        back_to_back += run.same_address_reads_back_to_back;
+        if n >= 2 {
+            // The staircase: fragments mostly nearer than what the pixel holds, so they pass.
+            assert!(2 * run.z_passes >= run.z_reads, "staircase list {n}: {} of {} Z reads passed", run.z_passes, run.z_reads);
+        }
     }
     assert!(back_to_back >= 100, "only {back_to_back} reads of the pixel read the cycle before");
     assert!(top_index_bit, "no index with bit 15 set");

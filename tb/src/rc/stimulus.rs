@@ -190,22 +190,42 @@ pub fn random_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
 
 /// `n` triangles on one pixel, for the Z-test's forwarding: groups of a triangle of about 8x8 pixels
 /// around a random pixel, then six one-pixel triangles on that pixel whose records queue up while the
-/// larger one is walked, so that their fragments follow each other in consecutive cycles. Depths are
-/// random over the whole range (four tenths), within 8 of a base depth of the list (four tenths: the
-/// forwarded depth's low bits decide the test), or at the clamps 0 and `DEPTH_MAX`; indices random over the whole 16-bit
-/// range, culling random (a fifth of the one-pixel triangles is culled): the forwarding's compare sees
-/// every depth bit and the I-buffer every index bit.
-pub fn hazard_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
+/// larger one is walked, so that their fragments follow each other in consecutive cycles. Depths: with
+/// `staircase`, most triangles step 0 to 7 units nearer than the one before (consecutive fragments
+/// pass and the forwarded depth's low bits decide the next test), some lie behind (they fail), some at
+/// `DEPTH_MAX`, and the last at 0; without, random, near a base depth of the list, or at the clamps
+/// (the first 0 ends every later pass on the pixel). Indices are random over the whole 16-bit range, culling random (a fifth of the
+/// one-pixel triangles is culled): the forwarding's compare sees every depth bit and the I-buffer every
+/// index bit.
+pub fn hazard_triangles(rng: &mut Rng, screen: Screen, n: usize, staircase: bool) -> Vec<RcCmd> {
     let (cx, cy) = ((4 + rng.below(screen.width as u64 - 8) as i32) * 16 + 8, (4 + rng.below(screen.height as u64 - 8) as i32) * 16 + 8);
+    // Depths, one of two ways. A staircase: most triangles come a few units nearer than the one before
+    // (or at the same depth), so that consecutive fragments on the pixel pass and the next one's test
+    // against the forwarded depth is decided by its low bits. Otherwise: random over the whole range
+    // (four tenths), within 8 of a base depth (four tenths), or at a clamp.
     let base = rng.below(DEPTH_MAX as u64 + 1) as i64;
+    let mut run = if staircase { (DEPTH_MAX / 2 + rng.below(DEPTH_MAX as u64 / 2) as u32) as i64 } else { 0 };
     (0..n)
         .map(|i| {
-            let z = match rng.below(10) {
-                0 => 0,
-                1 => DEPTH_MAX,
-                2..=5 => rng.below(DEPTH_MAX as u64 + 1) as u32,
-                // Near the list's base depth: the forwarded depth's low bits decide the test.
-                _ => (base + rng.below(16) as i64 - 8).clamp(0, DEPTH_MAX as i64) as u32,
+            let z = if !staircase {
+                match rng.below(10) {
+                    0 => 0,
+                    1 => DEPTH_MAX,
+                    2..=5 => rng.below(DEPTH_MAX as u64 + 1) as u32,
+                    _ => (base + rng.below(16) as i64 - 8).clamp(0, DEPTH_MAX as i64) as u32,
+                }
+            } else if i + 1 == n {
+                0
+            } else {
+                match rng.below(20) {
+                    0 => DEPTH_MAX,
+                    // Behind the staircase: fails against the forwarded or the stored depth.
+                    1..=3 => (run + 1 + rng.below((DEPTH_MAX as i64 - run) as u64) as i64) as u32,
+                    _ => {
+                        run = (run - rng.below(8) as i64).max(1);
+                        run as u32
+                    }
+                }
             };
             let index = 1 + rng.below((1 << golden::cycle::rc::INDEX_BITS) - 1) as u32;
             let cull_tiny = rng.chance(20);
@@ -217,7 +237,8 @@ pub fn hazard_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
                 let cull = if cull_tiny { CullMode::Back } else { CullMode::None };
                 ([(cx - 4 - j(), cy - 4 - j()), (cx + 4 + j(), cy - 4 - j()), (cx, cy + 4 + j())], cull)
             };
-            let v = p.map(|(x, y)| WinVertex { x, y, z: if rng.chance(30) { z.saturating_add(rng.below(4) as u32).min(DEPTH_MAX) } else { z } });
+            let clamp = staircase && (z == 0 || z == DEPTH_MAX);
+            let v = p.map(|(x, y)| WinVertex { x, y, z: if !clamp && rng.chance(30) { (z + rng.below(4) as u32).min(DEPTH_MAX) } else { z } });
             let front = if rng.chance(50) { FrontFace::Ccw } else { FrontFace::Cw };
             RcCmd::triangle(index, v, cull, front).expect("on-screen vertices fit the formats")
         })
