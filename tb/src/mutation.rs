@@ -51,9 +51,15 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
             Ok(Target { top: "colour_setup", verilog: hdl::verilog_top("colour_setup")?, stimulus, replay })
         }
         "cs" => {
-            let rec = crate::cs::stimulus::cs_mutation_recording(0xC5)?;
-            let stimulus = format!("{} cycles: the CS replay test's four frames (Phong, Gouraud, clear behind, 2000x1) and three Phong frames of 64x32 with unit-scale normals, 35% stalls", rec.cycles());
-            let replay: Replay = Box::new(move |v, d| crate::cs::replay::replay_iverilog(v, "cs", &rec, d).map(|_| ()));
+            // The replay test's recording (the first cover run's stimulus), then three Phong frames with
+            // unit-scale normals (added for its survivors), each from reset.
+            let recs = [crate::cs::stimulus::cs_replay_recording(0xC5)?, crate::cs::stimulus::cs_unit_normal_recording(0xC5)?];
+            let stimulus = format!(
+                "{} + {} cycles: the CS replay test's four frames (Phong, Gouraud, clear behind, 2000x1), then three Phong frames of 64x32 with unit-scale normals, 35% stalls",
+                recs[0].cycles(),
+                recs[1].cycles()
+            );
+            let replay: Replay = Box::new(move |v, d| recs.iter().try_for_each(|rec| crate::cs::replay::replay_iverilog(v, "cs", rec, d).map(|_| ())));
             Ok(Target { top: "cs", verilog: hdl::verilog_top("cs")?, stimulus, replay })
         }
         "opp" => opp_target(dir),

@@ -122,13 +122,13 @@ pub fn ignored_writes(rng: &mut Rng) -> Vec<CsConfigWrite> {
     w
 }
 
-/// The mutation cover's recording of the CS (`crate::mutation`): [`cs_replay_recording`]'s four
-/// frames, then three Phong frames of 64x32 over records whose planes give normals of unit scale
-/// (Q14, as colour setup makes them from unit vertex normals) that turn across the frame, so that the
-/// normaliser and the light units see the range they meet in scenes; the replay's random planes give
-/// mostly short or saturated normals. Added for the survivors of the first cover run, 28 of which were
-/// in the light units.
-pub fn cs_mutation_recording(seed: u64) -> Result<Recording, String> {
+/// The mutation cover's second recording of the CS (`crate::mutation`, after [`cs_replay_recording`]):
+/// three Phong frames of 64x32 over records whose planes give normals of unit scale (Q14, as colour
+/// setup makes them from unit vertex normals) that turn across the frame, so that the normaliser and
+/// the light units see the range they meet in scenes; the replay's random planes give mostly short or
+/// saturated normals. Added for the survivors of the first cover run, 28 of which were in the light
+/// units.
+pub fn cs_unit_normal_recording(seed: u64) -> Result<Recording, String> {
     let mut rng = Rng::new(seed);
     let mut mem = random_memories(&mut rng, 64, 32, 200);
     for rec in mem.tdbs.iter_mut().skip(100) {
@@ -142,12 +142,9 @@ pub fn cs_mutation_recording(seed: u64) -> Result<Recording, String> {
     let lights = random_lights(&mut rng);
     let mut config = ignored_writes(&mut rng);
     config.extend(phong_config(&lights)?);
-    let mut frames = replay_frames();
-    for bg in [[7, 8, 9], [255, 0, 128], [0, 255, 1]] {
-        frames.push(FrameSpec { width: 64, height: 32, background: bg, clear_behind: false, phong: true });
-    }
+    let frames = [[7, 8, 9], [255, 0, 128], [0, 255, 1]].map(|bg| FrameSpec { width: 64, height: 32, background: bg, clear_behind: false, phong: true });
     let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed };
-    let run = csb::run_rtl_vs_model("cs_mutation", &mut mem, &frames, &config, drive, true)?;
+    let run = csb::run_rtl_vs_model("cs_unit_normals", &mut mem, &frames, &config, drive, true)?;
     run.recording.ok_or_else(|| "CS bench: no recording".to_string())
 }
 
@@ -160,17 +157,6 @@ pub fn colour_setup_replay_recording(seed: u64, n: usize) -> Result<Recording, S
     run.recording.ok_or_else(|| "colour setup bench: no recording".to_string())
 }
 
-/// The four frames of [`cs_replay_recording`]: Phong, Gouraud with a clear behind the scan-out, a
-/// 2000x1 line, Phong again.
-fn replay_frames() -> Vec<FrameSpec> {
-    vec![
-        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: false, phong: true },
-        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: true, phong: false },
-        FrameSpec { width: 2000, height: 1, background: [0; 3], clear_behind: false, phong: false },
-        FrameSpec { width: 40, height: 12, background: [4, 5, 6], clear_behind: false, phong: true },
-    ]
-}
-
 /// The recording that the CS's Verilog replays: four frames (Phong and Gouraud, a clear behind the
 /// scan-out, a 2000x1 line) over random TdbS records and constants, with ignored configuration
 /// writes, 35% output stalls and starts while busy.
@@ -180,7 +166,12 @@ pub fn cs_replay_recording(seed: u64) -> Result<Recording, String> {
     let lights = random_lights(&mut rng);
     let mut config = ignored_writes(&mut rng);
     config.extend(phong_config(&lights)?);
-    let frames = replay_frames();
+    let frames = [
+        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: false, phong: true },
+        FrameSpec { width: 40, height: 12, background: [1, 2, 3], clear_behind: true, phong: false },
+        FrameSpec { width: 2000, height: 1, background: [0; 3], clear_behind: false, phong: false },
+        FrameSpec { width: 40, height: 12, background: [4, 5, 6], clear_behind: false, phong: true },
+    ];
     let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed };
     let run = csb::run_rtl_vs_model("cs_replay", &mut mem, &frames, &config, drive, true)?;
     run.recording.ok_or_else(|| "CS bench: no recording".to_string())
