@@ -1,5 +1,5 @@
 //! Mutation cover of one top's generated netlist (`tb::mutation`):
-//! `mutation TOP N [--seed S] [--jobs J] [--only I,J,...]`.
+//! `mutation TOP N [--seed S] [--jobs J] [--only I,J,...] [--replay-only]`.
 //! Prints one line per mutant and writes `target/mutation/TOP.json` with the counts drawn, killed,
 //! equivalent and surviving, and every mutant's command and verdict. `--only` judges only the listed
 //! mutants of the same draw (for example the survivors of an earlier run, after new stimulus); the
