@@ -62,7 +62,7 @@ pub enum FrontArg {
 
 #[derive(clap::Args, Debug)]
 pub struct RenderArgs {
-    /// A built-in scene: polyhedron, teapot, castle, dolphins.
+    /// A built-in scene: polyhedron, teapot, castle, dolphins; glass (transparent, --arch proof).
     #[arg(long, conflicts_with = "obj")]
     pub scene: Option<String>,
     /// A Wavefront OBJ file to render instead of a built-in scene.
@@ -119,6 +119,10 @@ pub struct RenderArgs {
     /// PROOF: filter area, 1x1 (default) or 2x2 pixels.
     #[arg(long)]
     pub filter: Option<String>,
+    /// Every material's opacity, 0..=1 (1 = opaque; default: the scene's own, MTL `d` or 1 - `Tr`).
+    /// Below 1 only --arch proof (golden backend) renders it.
+    #[arg(long, allow_hyphen_values = true)]
+    pub opacity: Option<f64>,
     /// Rendering architecture.
     #[arg(long, value_enum, default_value_t = ArchArg::Index)]
     pub arch: ArchArg,
@@ -162,8 +166,21 @@ fn parse_vec3(name: &str, s: &str) -> Result<[f64; 3], String> {
     Ok(v)
 }
 
-/// Load the scene the arguments name.
+/// Load the scene the arguments name, with `--opacity` applied to every material.
 pub fn load_scene(args: &RenderArgs) -> Result<Mesh, String> {
+    let mut mesh = load_mesh(args)?;
+    if let Some(a) = args.opacity {
+        if !(0.0..=1.0).contains(&a) {
+            return Err(format!("--opacity {a:?} is not in 0..=1 (1 = opaque)"));
+        }
+        for m in &mut mesh.materials {
+            m.opacity = a;
+        }
+    }
+    Ok(mesh)
+}
+
+fn load_mesh(args: &RenderArgs) -> Result<Mesh, String> {
     match (&args.scene, &args.obj) {
         (_, Some(path)) if args.grid.is_some() => Err(format!("--grid applies to --scene teapot only (GLUT's tessellation), not to {}", path.display())),
         (_, Some(path)) => {
@@ -182,7 +199,7 @@ pub fn load_scene(args: &RenderArgs) -> Result<Mesh, String> {
         }
         (Some(name), None) if args.grid.is_some() => Err(format!("--grid applies to --scene teapot only (GLUT's tessellation); {name} has its own triangles")),
         (Some(name), None) => builtin::scene(name),
-        (None, None) => Err(format!("say what to render: --scene NAME (one of {}) or --obj FILE", builtin::SCENES.join(", "))),
+        (None, None) => Err(format!("say what to render: --scene NAME (one of {}; {} with --arch proof) or --obj FILE", builtin::SCENES.join(", "), builtin::TRANSPARENT_SCENES.join(", "))),
     }
 }
 

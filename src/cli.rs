@@ -49,6 +49,11 @@ fn run_render(args: &RenderArgs) -> Result<(), String> {
         ArchArg::Proof if args.rc_type.is_some() => Err("--type applies to --arch index only (seed 000's Types III and IV are index-rendering architectures)".into()),
         ArchArg::Proof if args.index_bits.is_some() => Err("--index-bits applies to --arch index only (PROOF keeps no triangle index)".into()),
         ArchArg::Proof if args.frames != 1 => Err("--frames applies to --arch index (the chipset); PROOF renders one frame".into()),
+        ArchArg::Index if mesh.materials.iter().any(|m| !m.is_opaque()) => Err(format!(
+            "{} has transparent materials (opacity {}): the index-rendering chipset keeps one triangle per pixel in its I-buffer and cannot blend; render it with --arch proof, or opaque with --opacity 1",
+            mesh.name,
+            mesh.materials.iter().filter(|m| !m.is_opaque()).map(|m| format!("{}", m.opacity)).collect::<Vec<_>>().join(", ")
+        )),
         ArchArg::Proof => crate::proof::run_render(args, &mesh, &opts),
         ArchArg::Index => crate::render::run_render(args, &mesh, &opts),
     }

@@ -46,6 +46,13 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     }
     let t0 = std::time::Instant::now();
     let scene = scene_setup(mesh, opts)?;
+    if args.backend != BackendArg::Golden && scene.stats.transparent_objects > 0 {
+        // Before any output: the RTL OP, shading and filter stages are opaque-only so far (issue 22).
+        return Err(format!(
+            "{}: {} of {} objects are transparent, and PROOF's RTL (OP, filter) does not blend yet: use --backend golden, or --opacity 1",
+            mesh.name, scene.stats.transparent_objects, scene.stats.objects
+        ));
+    }
     let od = crate::output::OutputDir::begin(&args.out)?;
     let needed = ops_needed(scene.screen, &scene.objects) as usize;
     let n_ops = args.ops.unwrap_or(needed.max(1));

@@ -157,3 +157,64 @@ fn the_proof_study_uses_the_clis_default_camera_and_options() {
         assert_eq!(stats["stats"]["setup"]["objects"].as_u64().unwrap() as usize, row.objects, "{scene}: objects");
     }
 }
+
+/// Issue 22: the glass scene (transparent panes and teapot) renders through PROOF's golden model
+/// (whose OPP cycle model must build the same lists), and stats.json counts its transparent objects;
+/// `--opacity` applies to any scene; the chipset and PROOF's RTL backends refuse transparency by name,
+/// before writing anything.
+#[test]
+fn the_glass_scene_renders_transparent_through_proof_and_is_refused_where_nothing_blends() {
+    let out = temp_dir("glass");
+    let o = out.to_str().unwrap();
+    let (ok, _, err) = run(&["render", "--arch", "proof", "--scene", "glass", "--size", "96x60", "--out", o]);
+    assert!(ok, "{err}");
+    let stats: serde_json::Value = serde_json::from_slice(&std::fs::read(out.join("stats.json")).unwrap()).unwrap();
+    let transparent = stats["stats"]["setup"]["transparent_objects"].as_u64().unwrap();
+    let objects = stats["stats"]["setup"]["objects"].as_u64().unwrap();
+    assert!(transparent > 0 && transparent < objects, "{transparent} of {objects}");
+
+    // --opacity 1 makes it opaque: fewer entries (lists end at the panes and the teapot).
+    let opaque = temp_dir("glass-opaque");
+    let (ok, _, err) = run(&["render", "--arch", "proof", "--scene", "glass", "--opacity", "1", "--size", "96x60", "--out", opaque.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    let stats1: serde_json::Value = serde_json::from_slice(&std::fs::read(opaque.join("stats.json")).unwrap()).unwrap();
+    assert_eq!(stats1["stats"]["setup"]["transparent_objects"], 0);
+    assert!(stats1["stats"]["entries"].as_u64() < stats["stats"]["entries"].as_u64());
+
+    for (args, says) in [
+        (vec!["render", "--scene", "glass"], "index-rendering chipset keeps one triangle per pixel"),
+        (vec!["render", "--scene", "teapot", "--opacity", "0.5"], "--arch proof"),
+        (vec!["render", "--arch", "proof", "--scene", "glass", "--backend", "rtl"], "does not blend yet"),
+        (vec!["render", "--arch", "proof", "--scene", "teapot", "--opacity", "0.5", "--backend", "verilator"], "does not blend yet"),
+        (vec!["render", "--arch", "proof", "--scene", "teapot", "--opacity", "1.5"], "--opacity 1.5 is not in 0..=1"),
+        (vec!["render", "--arch", "proof", "--scene", "teapot", "--opacity", "NaN"], "is not in 0..=1"),
+    ] {
+        let d = temp_dir("refused");
+        let mut a = args.clone();
+        a.extend(["--size", "32x20", "--out", d.to_str().unwrap()]);
+        let (ok, _, err) = run(&a);
+        assert!(!ok && err.contains(says), "{args:?}: {err}");
+        assert!(!d.join("frame.png").exists(), "{args:?} wrote a frame");
+    }
+}
+
+/// MTL opacity: `d`, else 1 - `Tr`; a value outside 0..=1 makes the library unusable, as any bad MTL
+/// line does: a warning naming the line and the fallback (grey plastic, opaque), on the CLI too.
+#[test]
+fn mtl_dissolve_and_tr_set_the_opacity_and_bad_values_name_their_line() {
+    let dir = temp_dir("mtl");
+    let obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl half\nf 1 2 3\nusemtl tr\nf 2 4 3\n";
+    std::fs::write(dir.join("a.obj"), obj).unwrap();
+    std::fs::write(dir.join("m.mtl"), "newmtl half\nKd 1 0 0\nd 0.5\nnewmtl tr\nKd 0 1 0\nTr 0.25\n").unwrap();
+    let (mesh, _) = golden::scene::obj::load_obj_with_warnings(&dir.join("a.obj")).unwrap();
+    let mut opacities: Vec<f64> = mesh.materials.iter().map(|m| m.opacity).collect();
+    opacities.sort_by(f64::total_cmp);
+    assert_eq!(opacities, vec![0.5, 0.75]);
+    std::fs::write(dir.join("m.mtl"), "newmtl half\nKd 1 0 0\n\nd NaN\n").unwrap();
+    let (mesh, warnings) = golden::scene::obj::load_obj_with_warnings(&dir.join("a.obj")).unwrap();
+    assert!(warnings.iter().any(|w| w.contains("line 4") && w.contains("`d` needs one number in 0..=1")), "{warnings:?}");
+    assert!(mesh.materials.iter().all(|m| m.opacity == 1.0));
+    let out = temp_dir("mtl-out");
+    let (ok, _, err) = run(&["render", "--arch", "proof", "--obj", dir.join("a.obj").to_str().unwrap(), "--size", "32x20", "--out", out.to_str().unwrap()]);
+    assert!(ok && err.contains("line 4") && err.contains("grey plastic"), "{err}");
+}

@@ -13,6 +13,14 @@
 //! full entry covers all 64. Going down the list (nearest first), each entry gets the subpixels no
 //! earlier entry took; the rest show the background.
 //!
+//! Transparency (issue 22, seed 002 §6 "both opaque and transparent objects"): when the frame has a
+//! transparent object, each subpixel is composited front to back ([`blend_subpixels`]). Its
+//! transmittance `T` starts at [`T_ONE`] (1.0 in Q1.8); an entry of opacity `a` (Q1.8) covering the
+//! subpixel adds its colour with the weight `w = (T a + 128) >> 8` and leaves `T - w`, so the weights
+//! and the final `T` (the background's weight) always sum to exactly 256 per subpixel. An opaque entry
+//! takes `w = T`: on lists of opaque entries this is the unblended filter scaled by 256, and the
+//! result is the same byte for byte (tested), so frames without transparency do not change.
+//!
 //! Filter area: [`FilterArea::Box1`] averages the pixel's 64 subpixels; [`FilterArea::Box2`] is the
 //! paper's 2x2 area: a 2x2-pixel box centred on the pixel centre (its own 64 subpixels, half of each
 //! edge neighbour's and a quarter of each corner neighbour's; pixels beyond the screen edge repeat the
@@ -114,8 +122,97 @@ pub fn quadrant_sums(owners: &[u64], colours: &[[u8; 3]], taken: u64, bg: [u8; 3
     out
 }
 
+/// The transmittance of an uncovered subpixel: 1.0 in Q1.8.
+pub const T_ONE: u32 = 256;
+
+/// Front-to-back compositing per subpixel (module doc): for each of the 64 subpixels, the sum of
+/// `weight x colour` over the entries covering it and the background (weights in 1/256, summing to
+/// 256), and the union of the entries' masks. `alpha(id)` is the object's opacity, Q1.8.
+pub fn blend_subpixels(
+    list: &[Entry],
+    dirs: &dyn Fn(u16) -> [(i16, i16); 3],
+    alpha: &dyn Fn(u16) -> u16,
+    colours: &[[u8; 3]],
+    bg: [u8; 3],
+) -> ([[u32; 3]; 64], u64) {
+    let mut t = [T_ONE; 64];
+    let mut acc = [[0u32; 3]; 64];
+    let mut taken = 0u64;
+    for (e, c) in list.iter().zip(colours) {
+        let m = subpixel_mask(e, &dirs(e.id));
+        taken |= m;
+        let a = alpha(e.id).min(T_ONE as u16) as u32;
+        for i in 0..64 {
+            if m >> i & 1 == 1 && t[i] > 0 {
+                let w = (t[i] * a + 128) >> 8;
+                for k in 0..3 {
+                    acc[i][k] += w * c[k] as u32;
+                }
+                t[i] -= w;
+            }
+        }
+    }
+    for i in 0..64 {
+        for k in 0..3 {
+            acc[i][k] += t[i] * bg[k] as u32;
+        }
+    }
+    (acc, taken)
+}
+
+/// The 1x1 filter of blended subpixels: the mean of the 64, rounded.
+pub fn combine_blended(acc: &[[u32; 3]; 64]) -> [u8; 3] {
+    [0, 1, 2].map(|k| ((acc.iter().map(|a| a[k]).sum::<u32>() + (1 << 13)) >> 14) as u8)
+}
+
+/// Per-quadrant sums of blended subpixels, in 1/256 (for [`box2_q`] with shift 16).
+pub fn quadrant_sums_blended(acc: &[[u32; 3]; 64]) -> [[u32; 3]; 4] {
+    let mut out = [[0u32; 3]; 4];
+    for (i, a) in acc.iter().enumerate() {
+        let q = 2 * (i / 32) + (i % 8) / 4;
+        for k in 0..3 {
+            out[q][k] += a[k];
+        }
+    }
+    out
+}
+
+/// The same compositing in f64 with the unquantised opacities: the reference that the fixed-point
+/// form's error is measured against (the same subpixel masks; colours as given).
+pub fn blend_reference(
+    list: &[Entry],
+    dirs: &dyn Fn(u16) -> [(i16, i16); 3],
+    opacity: &dyn Fn(u16) -> f64,
+    colours: &[[u8; 3]],
+    bg: [u8; 3],
+) -> [f64; 3] {
+    let mut out = [0f64; 3];
+    let masks: Vec<u64> = list.iter().map(|e| subpixel_mask(e, &dirs(e.id))).collect();
+    for i in 0..64 {
+        let mut t = 1.0f64;
+        for ((e, c), m) in list.iter().zip(colours).zip(&masks) {
+            if m >> i & 1 == 1 {
+                let a = opacity(e.id);
+                for k in 0..3 {
+                    out[k] += t * a * c[k] as f64;
+                }
+                t *= 1.0 - a;
+            }
+        }
+        for k in 0..3 {
+            out[k] += t * bg[k] as f64;
+        }
+    }
+    out.map(|v| v / 64.0)
+}
+
 /// The 2x2 filter over a whole image of quadrant sums (row-major pixels).
 pub fn box2(width: u32, height: u32, quads: &[[[u32; 3]; 4]]) -> Vec<u8> {
+    box2_q(width, height, quads, 8)
+}
+
+/// [`box2`] for quadrant sums with `shift - 8` more fraction bits (16 for blended sums).
+pub fn box2_q(width: u32, height: u32, quads: &[[[u32; 3]; 4]], shift: u32) -> Vec<u8> {
     let (w, h) = (width as i64, height as i64);
     let at = |qx: i64, qy: i64, k: usize| -> u32 {
         // Quadrant coordinates; beyond the screen, the edge pixel's nearest quadrant repeats.
@@ -127,13 +224,13 @@ pub fn box2(width: u32, height: u32, quads: &[[[u32; 3]; 4]]) -> Vec<u8> {
     for y in 0..h {
         for x in 0..w {
             for k in 0..3 {
-                let mut s = 0u32;
+                let mut s = 0u64;
                 for qy in 2 * y - 1..=2 * y + 2 {
                     for qx in 2 * x - 1..=2 * x + 2 {
-                        s += at(qx, qy, k);
+                        s += at(qx, qy, k) as u64;
                     }
                 }
-                out.push(((s + 128) >> 8) as u8);
+                out.push(((s + (1 << (shift - 1))) >> shift) as u8);
             }
         }
     }

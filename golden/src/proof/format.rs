@@ -42,6 +42,20 @@ pub const ID_BITS: u32 = 16;
 pub const COORD_BITS: u32 = 10;
 /// Subpixels per pixel side in the filter (seed 002 §6: 8x8).
 pub const SUBPIXELS: u32 = 8;
+/// Opacity (issue 22): fraction bits of the object's opacity `alpha`, Q1.8 in 0..=[`ALPHA_ONE`] (9-bit
+/// field); `alpha = round(opacity * 256)`.
+pub const ALPHA_FRAC: u32 = 8;
+/// The opacity of an opaque object (1.0 in Q1.8).
+pub const ALPHA_ONE: u16 = 1 << ALPHA_FRAC;
+
+/// A material's opacity (0..=1) in the object's Q1.8 form; anything not below 1 (and a NaN, which
+/// [`crate::scene::Mesh::validate`] refuses before this) is opaque.
+pub fn alpha_q8(opacity: f64) -> u16 {
+    if opacity.is_nan() || opacity >= 1.0 {
+        return ALPHA_ONE;
+    }
+    (opacity.max(0.0) * ALPHA_ONE as f64).round() as u16
+}
 
 /// Wrap to a signed two's-complement value of `bits` bits.
 pub fn wrap(v: i64, bits: u32) -> i64 {
@@ -96,7 +110,7 @@ impl EdgeParams {
 
 /// Everything an object processor is loaded with (seed 002 §4.3: "registers which store the
 /// parameters which describe the stored object").
-#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct ObjectParams {
     pub id: u16,
     /// Bounding box: the pixels whose square meets the object's vertex extent (clamped to the screen).
@@ -109,6 +123,16 @@ pub struct ObjectParams {
     pub z: Interp,
     /// Eye-space normal components ([`NORMAL_ACC_FRAC`] fraction bits on Q1.14, [`ACC_BITS`] wide).
     pub n: [Interp; 3],
+    /// Opacity, Q1.8 ([`ALPHA_ONE`] = opaque). Only an opaque full entry ends a pixel's list; the filter
+    /// blends the others (golden model only so far: the RTL backends refuse transparent objects).
+    pub alpha: u16,
+}
+
+impl Default for ObjectParams {
+    /// An empty, opaque object (what an unloaded OP holds).
+    fn default() -> Self {
+        ObjectParams { id: 0, x0: 0, x1: 0, y0: 0, y1: 0, edges: Default::default(), z: Default::default(), n: Default::default(), alpha: ALPHA_ONE }
+    }
 }
 
 /// Coverage of a pixel by an object (seed 002 §4.5), ternary.
@@ -173,7 +197,7 @@ pub fn own_entry(p: &ObjectParams, d: [i64; 3], z: i64, n: [i64; 3]) -> Option<E
     Some(Entry {
         id: p.id,
         depth: (z >> DEPTH_FRAC).clamp(0, DEPTH_MAX as i64) as u32,
-        full: cov == Coverage::Full,
+        full: cov == Coverage::Full && p.alpha >= ALPHA_ONE,
         normal: n.map(|v| sat(v >> NORMAL_ACC_FRAC, 16) as i16),
         dist: d.map(|v| sat(v >> (EDGE_FRAC - DIR_FRAC), 16) as i16),
     })

@@ -8,8 +8,8 @@
 //! 3. Shading stage: one colour per list entry ([`shade_entry`]).
 //! 4. Filter stage: subpixel masks and weighted colours ([`super::filter`]).
 
-use super::filter::{box2, combine, quadrant_sums, visible_masks, FilterArea};
-use super::format::{Entry, ObjectParams};
+use super::filter::{blend_subpixels, box2, box2_q, combine, combine_blended, quadrant_sums, quadrant_sums_blended, visible_masks, FilterArea};
+use super::format::{Entry, ObjectParams, ALPHA_ONE};
 use super::setup::{scene_setup, ProofScene, SetupStats};
 use super::shade::shade_entry;
 use crate::format::Screen;
@@ -50,7 +50,9 @@ pub struct ProofFrame {
     pub stats: ProofStats,
 }
 
-/// The OPP's result, algorithmically: the object list of every pixel, raster order.
+/// The OPP's result, algorithmically: the object list of every pixel, raster order. A list ends at its
+/// first full entry; a transparent object's entry is never full ([`super::format::own_entry`]), so it
+/// keeps what lies behind it (issue 22).
 pub fn object_lists(screen: Screen, objects: &[ObjectParams]) -> Vec<Vec<Entry>> {
     let w = screen.width as usize;
     let mut lists: Vec<Vec<Entry>> = vec![Vec::new(); screen.pixels()];
@@ -108,6 +110,9 @@ pub fn shade_and_filter(scene: &ProofScene, lists: &[Vec<Entry>], area: FilterAr
 pub fn filter_lists(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8; 3]>], area: FilterArea) -> (Vec<u8>, Vec<u8>) {
     let s = scene.screen;
     let dirs = |id: u16| dirs_of(scene, id);
+    if scene.objects.iter().any(|o| o.alpha < ALPHA_ONE) {
+        return filter_lists_blended(scene, lists, colours, area);
+    }
     let mut rgb = Vec::with_capacity(s.pixels() * 3);
     let mut quads = Vec::new();
     let mut covered = Vec::with_capacity(s.pixels());
@@ -121,6 +126,29 @@ pub fn filter_lists(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8
     }
     if area == FilterArea::Box2 {
         rgb = box2(s.width, s.height, &quads);
+    }
+    (rgb, covered)
+}
+
+/// [`filter_lists`] with front-to-back blending per subpixel ([`blend_subpixels`]): the frame's form
+/// when it has a transparent object (on opaque lists it gives the same bytes as the unblended form).
+pub fn filter_lists_blended(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8; 3]>], area: FilterArea) -> (Vec<u8>, Vec<u8>) {
+    let s = scene.screen;
+    let dirs = |id: u16| dirs_of(scene, id);
+    let alpha = |id: u16| scene.objects[id as usize].alpha;
+    let mut rgb = Vec::with_capacity(s.pixels() * 3);
+    let mut quads = Vec::new();
+    let mut covered = Vec::with_capacity(s.pixels());
+    for (l, colours) in lists.iter().zip(colours) {
+        let (acc, taken) = blend_subpixels(l, &dirs, &alpha, colours, scene.background);
+        covered.push(taken.count_ones() as u8);
+        match area {
+            FilterArea::Box1 => rgb.extend_from_slice(&combine_blended(&acc)),
+            FilterArea::Box2 => quads.push(quadrant_sums_blended(&acc)),
+        }
+    }
+    if area == FilterArea::Box2 {
+        rgb = box2_q(s.width, s.height, &quads, 16);
     }
     (rgb, covered)
 }

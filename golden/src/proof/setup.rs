@@ -14,7 +14,7 @@
 //! * the depth plane and the three normal planes from [`Plane::setup`] (one reciprocal per triangle),
 //!   rescaled to the accumulators' fraction bits and evaluated at the box's first pixel.
 
-use super::format::{sat, wrap, EdgeParams, Interp, ObjectParams, ACC_BITS, DEPTH_FRAC, EDGE_BITS, ID_BITS, NORMAL_ACC_FRAC};
+use super::format::{alpha_q8, sat, wrap, EdgeParams, ALPHA_ONE, Interp, ObjectParams, ACC_BITS, DEPTH_FRAC, EDGE_BITS, ID_BITS, NORMAL_ACC_FRAC};
 use crate::format::{reciprocal, round_shift, Plane, Screen, WinVertex, PLANE_FRAC, SUBPIXEL_BITS};
 use crate::host::{eye_normals, normalize, upper_pipeline, Vec3};
 use crate::raster::{canonical_order, det, is_culled, Culled};
@@ -35,6 +35,8 @@ pub struct SetupStats {
     pub off_screen: u64,
     /// Objects loaded into the OPP.
     pub objects: u64,
+    /// Of those, objects whose opacity is below 1 (issue 22).
+    pub transparent_objects: u64,
 }
 
 /// A frame's worth of objects and tables, ready for the OPP and the later stages.
@@ -138,11 +140,12 @@ pub fn object_setup(tri: &[WinVertex; 3], normals: [[i64; 3]; 3], id: u16, scree
         edges: edge_setup(&v, bbox),
         z: plane_interp(&zp, x0, y0, DEPTH_FRAC),
         n,
+        alpha: ALPHA_ONE,
     })
 }
 
 /// The whole frame's object setup: upper pipeline, culling, lower pipeline (normals only: lighting is
-/// the shading stage's job), object parameters and tables.
+/// the shading stage's job), object parameters (with each material's opacity, Q1.8) and tables.
 pub fn scene_setup(mesh: &Mesh, opts: &RenderOptions) -> Result<ProofScene, String> {
     mesh.validate()?;
     opts.camera.validate()?;
@@ -181,7 +184,9 @@ pub fn scene_setup(mesh: &Mesh, opts: &RenderOptions) -> Result<ProofScene, Stri
             ));
         }
         match object_setup(&t.v, normals, objects.len() as u16, opts.screen) {
-            Some(p) => {
+            Some(mut p) => {
+                p.alpha = alpha_q8(mesh.materials[tri.material as usize].opacity);
+                stats.transparent_objects += (p.alpha < ALPHA_ONE) as u64;
                 objects.push(p);
                 material.push(tri.material as u16);
                 source.push(t.source);

@@ -15,6 +15,10 @@ use super::{Material, Mesh, Triangle, Winding};
 /// Names accepted by [`scene`], in the order a user interface should list them.
 pub const SCENES: &[&str] = &["polyhedron", "teapot", "castle", "dolphins"];
 
+/// Built-in scenes with transparent materials (issue 22), for PROOF only: the index-rendering chipset
+/// keeps one triangle per pixel and refuses them (render them there with `--opacity 1`).
+pub const TRANSPARENT_SCENES: &[&str] = &["glass"];
+
 /// The teapot's grid as GLUT 3.7's glutSolidTeapot draws it (`teapot_glut.md`).
 pub const TEAPOT_GRID: u32 = 14;
 
@@ -25,7 +29,8 @@ pub fn scene(name: &str) -> Result<Mesh, String> {
         "teapot" => Ok(teapot(TEAPOT_GRID)),
         "castle" => Ok(castle()),
         "dolphins" => Ok(dolphins()),
-        _ => Err(format!("unknown scene '{}'; the built-in scenes are: {}", name, SCENES.join(", "))),
+        "glass" => Ok(glass()),
+        _ => Err(format!("unknown scene '{}'; the built-in scenes are: {}, {}", name, SCENES.join(", "), TRANSPARENT_SCENES.join(", "))),
     }
 }
 
@@ -278,7 +283,7 @@ pub fn teapot(grid: u32) -> Mesh {
         }
     }
     // Glazed: a white specular strong enough that per-pixel (Phong) highlights show plainly.
-    let teapot_colour = Material { ambient: [0.75, 0.5, 0.22], diffuse: [0.75, 0.5, 0.22], specular: [0.9, 0.9, 0.9], gloss: 16 };
+    let teapot_colour = Material { ambient: [0.75, 0.5, 0.22], diffuse: [0.75, 0.5, 0.22], specular: [0.9, 0.9, 0.9], gloss: 16, opacity: 1.0 };
     Mesh { name: "teapot".into(), positions, normals, materials: vec![teapot_colour], triangles, front_face: Winding::Cw }
 }
 
@@ -470,7 +475,7 @@ impl MeshBuilder {
 
 /// A material with its own specular level and gloss (ambient = diffuse, as [`Material::plastic`]).
 fn material(diffuse: V3, specular: f64, gloss: u32) -> Material {
-    Material { ambient: diffuse, diffuse, specular: [specular; 3], gloss }
+    Material { ambient: diffuse, diffuse, specular: [specular; 3], gloss, opacity: 1.0 }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -922,4 +927,52 @@ mod tests {
             assert_eq!(degenerate, 0, "{name}");
         }
     }
+}
+
+// ---------------------------------------------------------------------------------------------
+// glass (issue 22: PROOF's transparency)
+
+/// Three tinted panes of glass crossing each other in a star on the left, and a translucent teapot
+/// in front of an opaque block on the right, on an opaque floor. Opacities (MTL `d`): red pane 0.5,
+/// green 0.4, blue 0.6, teapot 0.45; floor and block 1. Panes are thin closed boxes, so from any side
+/// one face of each is drawn; the teapot is GLUT's at grid 6, its back faces culled as everywhere.
+pub fn glass() -> Mesh {
+    let tinted = |c: V3, d: f64| Material { opacity: d, ..material(c, 0.6, 16) };
+    let materials = vec![
+        material([0.55, 0.55, 0.58], 0.05, 1), // floor
+        material([0.85, 0.62, 0.12], 0.3, 8),  // block behind the teapot
+        tinted([0.9, 0.15, 0.12], 0.5),        // red pane
+        tinted([0.15, 0.8, 0.2], 0.4),         // green pane
+        tinted([0.15, 0.3, 0.95], 0.6),        // blue pane
+        tinted([0.6, 0.85, 0.9], 0.45),        // glass teapot
+    ];
+    let mut b = MeshBuilder::new("glass", materials);
+    let mut floor = Part::default();
+    floor.cuboid([-2.5, -0.1, -1.9], [2.6, 0.0, 1.0]);
+    b.add(floor, 0, true);
+    let mut block = Part::default();
+    block.cuboid([0.5, 0.0, -1.85], [1.9, 1.3, -1.3]);
+    b.add(block, 1, true);
+    // The panes: 1.9 wide, 1.5 high, 0.04 thick, about a vertical axis through (-1.3, _, -0.4),
+    // turned by -25, 20 and 65 degrees.
+    for (k, turn) in [-25.0f64, 20.0, 65.0].iter().enumerate() {
+        let mut pane = Part::default();
+        pane.cuboid([-0.95, 0.0, -0.02], [0.95, 1.5, 0.02]);
+        let (c, s) = (turn.to_radians().cos(), turn.to_radians().sin());
+        for p in &mut pane.positions {
+            *p = [-1.3 + c * p[0] + s * p[2], p[1], -0.4 - s * p[0] + c * p[2]];
+        }
+        b.add(pane, 2 + k as u32, true);
+    }
+    // The teapot (wound clockwise as GLUT draws it: flipped to the builder's counter-clockwise), its
+    // base on the floor in front of the block, with its own normals.
+    let pot = teapot(6);
+    let lowest = pot.positions.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
+    let (base, nbase) = (b.mesh.positions.len() as u32, b.mesh.normals.len() as u32);
+    b.mesh.positions.extend(pot.positions.iter().map(|p| [1.3 + p[0], p[1] - lowest, -0.2 + p[2]]));
+    b.mesh.normals.extend_from_slice(&pot.normals);
+    for t in &pot.triangles {
+        b.mesh.triangles.push(Triangle { v: [t.v[0], t.v[2], t.v[1]].map(|i| base + i), n: [t.n[0], t.n[2], t.n[1]].map(|i| nbase + i), material: 5 });
+    }
+    b.centred()
 }

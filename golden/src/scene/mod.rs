@@ -8,19 +8,27 @@ pub mod builtin;
 pub mod obj;
 
 /// A material in the Phong model of seed 001 eq. 4: ambient, diffuse and specular reflectances (0..1)
-/// and the gloss n, a power of two 1..=16.
+/// and the gloss n, a power of two 1..=16; and the opacity (MTL's dissolve `d`, or 1 - `Tr`), 0..=1
+/// with 1 = opaque, which only PROOF uses (issue 22; the index-rendering chipset keeps one triangle per
+/// pixel and refuses transparent materials).
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Material {
     pub ambient: [f64; 3],
     pub diffuse: [f64; 3],
     pub specular: [f64; 3],
     pub gloss: u32,
+    pub opacity: f64,
 }
 
 impl Material {
+    /// Opaque (the chipset's only case; PROOF blends the others).
+    pub fn is_opaque(&self) -> bool {
+        self.opacity >= 1.0
+    }
+
     /// A plastic-like material of the given diffuse colour.
     pub fn plastic(diffuse: [f64; 3]) -> Material {
-        Material { ambient: diffuse, diffuse, specular: [0.4, 0.4, 0.4], gloss: 16 }
+        Material { ambient: diffuse, diffuse, specular: [0.4, 0.4, 0.4], gloss: 16, opacity: 1.0 }
     }
 }
 
@@ -100,6 +108,9 @@ impl Mesh {
         for m in &self.materials {
             if !(m.gloss.is_power_of_two() && m.gloss <= 16) {
                 return Err(format!("scene '{}': gloss {} is not a power of two in 1..=16", self.name, m.gloss));
+            }
+            if !(0.0..=1.0).contains(&m.opacity) {
+                return Err(format!("scene '{}': opacity {} is not in 0..=1 (1 = opaque)", self.name, m.opacity));
             }
         }
         Ok(())

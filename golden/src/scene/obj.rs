@@ -164,10 +164,15 @@ fn check_mtl(path: &Path) -> Result<String, String> {
         let numbers_ok = |n: usize| args.len() >= n && args[..n].iter().all(|w| w.parse::<f64>().is_ok());
         let ok = match keyword {
             "Ka" | "Kd" | "Ks" | "Ke" => numbers_ok(3),
-            "Ns" | "Ni" | "d" => numbers_ok(1),
+            "Ns" | "Ni" => numbers_ok(1),
+            // Opacity: a number in 0..=1 (a NaN or 1.5 would otherwise reach the blend as garbage).
+            "d" | "Tr" => numbers_ok(1) && args[0].parse::<f64>().is_ok_and(|v| (0.0..=1.0).contains(&v)),
             _ => true,
         };
         if !ok {
+            if keyword == "d" || keyword == "Tr" {
+                return Err(format!("line {}: `{keyword}` needs one number in 0..=1 (the opacity d, or Tr = 1 - d)", number + 1));
+            }
             return Err(format!("line {}: `{keyword}` needs {} numbers", number + 1, if keyword.starts_with('K') { 3 } else { 1 }));
         }
     }
@@ -175,7 +180,8 @@ fn check_mtl(path: &Path) -> Result<String, String> {
 }
 
 /// An MTL material in our Phong model: Kd, Ka (Kd when missing or black, since a black ambient
-/// would leave unlit sides invisible), Ks and Ns rounded to a power of two in 1..=16.
+/// would leave unlit sides invisible), Ks, Ns rounded to a power of two in 1..=16, and the opacity:
+/// `d`, else 1 - `Tr` (tobj keeps `Tr` among its unknown parameters), else 1 (opaque).
 fn convert_material(m: &tobj::Material) -> Material {
     let colour = |c: Option<[f64; 3]>| -> Option<V3> { c.filter(|c| c.iter().all(|x| x.is_finite())).map(|c| c.map(|x| x.clamp(0.0, 1.0))) };
     let diffuse = colour(m.diffuse).unwrap_or([0.7, 0.7, 0.7]);
@@ -185,7 +191,9 @@ fn convert_material(m: &tobj::Material) -> Material {
         Some(ns) if ns.is_finite() => gloss_from_ns(ns),
         _ => 16,
     };
-    Material { ambient, diffuse, specular, gloss }
+    let tr = m.unknown_param.get("Tr").and_then(|t| t.trim().parse::<f64>().ok()).map(|t| 1.0 - t);
+    let opacity = m.dissolve.or(tr).filter(|d| d.is_finite()).unwrap_or(1.0).clamp(0.0, 1.0);
+    Material { ambient, diffuse, specular, gloss, opacity }
 }
 
 /// The power of two in 1..=16 nearest to Ns on a log scale (MTL's Ns runs 0..1000; the chip's
