@@ -49,7 +49,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     if args.backend != BackendArg::Golden && scene.stats.transparent_objects > 0 {
         // Before any output: the RTL OP, shading and filter stages are opaque-only so far (issue 22).
         return Err(format!(
-            "{}: {} of {} objects are transparent, and PROOF's RTL (OP, filter) does not blend yet: use --backend golden, or --opacity 1",
+            "{}: {} of {} objects are transparent, and PROOF's RTL filter does not blend yet: use --backend golden, or --opacity 1",
             mesh.name, scene.stats.transparent_objects, scene.stats.objects
         ));
     }

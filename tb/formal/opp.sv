@@ -25,7 +25,7 @@ module opp_formal #(
     input wire clock,
     input wire load,
     input wire [15:0] load_op,
-    input wire [730:0] load_params,
+    input wire [731:0] load_params,
     input wire [158:0] up_data,
     input wire up_valid,
     input wire down_ready

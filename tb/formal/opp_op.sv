@@ -20,7 +20,7 @@ module opp_op_formal #(
 ) (
     input wire clock,
     input wire load,
-    input wire [730:0] load_params,
+    input wire [731:0] load_params,
     input wire [158:0] up_data,
     input wire up_valid,
     input wire down_ready

@@ -123,7 +123,8 @@ fn rc3_target(dir: &Path) -> Result<Target, String> {
 }
 
 /// `opp` (eight OPs, FIFO depth 1): random frames of 14, 20 and 20 objects at 24x16, 25% gaps on both
-/// sides (the third with 60% output stalls).
+/// sides (the third with 60% output stalls), and a fourth of 20 with every other object transparent
+/// (issue 22's `opaque` bit).
 fn opp_target(dir: &Path) -> Result<Target, String> {
     use crate::proof::bench::{opp_ports, random_objects, run_frame};
     use golden::proof::cycle_opp::Gaps;
@@ -133,14 +134,22 @@ fn opp_target(dir: &Path) -> Result<Target, String> {
     // Frames 0 and 1 as in the first cover run; frame 2 (added for its survivors) holds the output
     // back 60 % of the time. (Random 16-bit ids are not possible: an id is the object's position in
     // the frame's list in every model.)
-    for (i, count) in [14, 20, 20].into_iter().enumerate() {
-        let objs = random_objects(&mut rng, s, count, 8);
+    for (i, count) in [14, 20, 20, 20].into_iter().enumerate() {
+        let mut objs = random_objects(&mut rng, s, count, 8);
+        if i == 3 {
+            for o in objs.iter_mut().step_by(2) {
+                o.alpha = 128;
+            }
+        }
         let sink_gap_percent = if i == 2 { 60 } else { 25 };
         let gaps = Gaps { seed: rng.next_u64(), source_gap_percent: 25, sink_gap_percent };
         let (_, rec) = run_frame(s, &objs, 8, 1, Some(gaps), None, Some(dir.join(format!("opp{i}.vec"))))?;
         recs.push(rec.ok_or("the OPP bench wrote no vectors")?);
     }
-    let stimulus = format!("{} cycles: three random frames (14, 20 and 20 objects, the last with 60% output stalls) at 24x16, 25% gaps", recs.iter().map(|r| r.1).sum::<u64>());
+    let stimulus = format!(
+        "{} cycles: four random frames (14, 20, 20 and 20 objects, the third with 60% output stalls, the fourth with every other object transparent) at 24x16, 25% gaps",
+        recs.iter().map(|r| r.1).sum::<u64>()
+    );
     let replay: Replay = Box::new(move |v, d| {
         for (path, cycles) in &recs {
             crate::proof::replay::replay("iverilog", d, "opp", &opp_ports(), v, path, *cycles)?;

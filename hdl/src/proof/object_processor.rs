@@ -18,7 +18,8 @@
 //!   `cur` accumulator (the current box pixel). When a box pixel's list has left, `cur` steps by the
 //!   per-pixel increment, or at the box's right edge `row` steps by the per-line increment and `cur`
 //!   takes it. Adds only; no multiplier.
-//! * Coverage: none if `d_i + t_none_i <= 0` for some edge, full if `d_i >= t_full_i` for all three.
+//! * Coverage: none if `d_i + t_none_i <= 0` for some edge, full if `d_i >= t_full_i` for all three
+//!   and the object is `opaque` (a transparent object's entry stays partial: issue 22).
 //! * Comparator: own entry before the head if (depth, id) is smaller; a full own entry ends the list
 //!   (the rest is dropped, one slot per cycle, without output); a full head drops the own entry.
 
@@ -267,14 +268,15 @@ impl Logic for ObjectProcessor {
         self.tf0.next = signed_cast(bit_cast::<27, 18>(self.p.val().e0_tf));
         self.tf1.next = signed_cast(bit_cast::<27, 18>(self.p.val().e1_tf));
         self.tf2.next = signed_cast(bit_cast::<27, 18>(self.p.val().e2_tf));
-        // Coverage (seed 002 §4.5): none if d + r <= 0 for an edge, full if d >= r + delta for all.
+        // Coverage (seed 002 §4.5): none if d + r <= 0 for an edge, full if d >= r + delta for all and
+        // the object is opaque (a transparent object's entry never ends the list: issue 22).
         self.m0.next = self.cur_d0.q.val() + self.tn0.val();
         self.m1.next = self.cur_d1.q.val() + self.tn1.val();
         self.m2.next = self.cur_d2.q.val() + self.tn2.val();
         self.cov_none.next =
             (self.m0.val() <= self.zero27.val()) | (self.m1.val() <= self.zero27.val()) | (self.m2.val() <= self.zero27.val());
         self.cov_full.next =
-            (self.tf0.val() <= self.cur_d0.q.val()) & (self.tf1.val() <= self.cur_d1.q.val()) & (self.tf2.val() <= self.cur_d2.q.val());
+            (self.tf0.val() <= self.cur_d0.q.val()) & (self.tf1.val() <= self.cur_d1.q.val()) & (self.tf2.val() <= self.cur_d2.q.val()) & self.p.val().opaque;
         // Own entry: depth clamped to 24 bits, normals and distances saturated to 16 bits.
         self.zb.next = unsigned_cast(self.cur_z.q.val());
         self.nxb.next = unsigned_cast(self.cur_nx.q.val());

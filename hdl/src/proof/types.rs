@@ -72,6 +72,9 @@ pub struct ObjParams {
     pub nz_v: Bits<32>,
     pub nz_dx: Bits<32>,
     pub nz_dy: Bits<32>,
+    /// The object is opaque (issue 22): only then is its own entry full (covers the pixel and ends the
+    /// list); a transparent object's entry is partial even where it covers the pixel completely.
+    pub opaque: Bit,
 }
 
 /// A shaded time slot (shading stage -> filter): the slot without depth and normal, with the entry's

@@ -84,6 +84,7 @@ pub fn params_to_rtl(p: &ObjectParams) -> ObjParams {
         nz_v: b(p.n[2].v0),
         nz_dx: b(p.n[2].dx),
         nz_dy: b(p.n[2].dy),
+        opaque: p.alpha >= golden::proof::format::ALPHA_ONE,
     }
 }
 
