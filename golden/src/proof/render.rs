@@ -8,7 +8,7 @@
 //! 3. Shading stage: one colour per list entry ([`shade_entry`]).
 //! 4. Filter stage: subpixel masks and weighted colours ([`super::filter`]).
 
-use super::filter::{blend_subpixels, box2, box2_q, combine, combine_blended, quadrant_sums, quadrant_sums_blended, visible_masks, FilterArea};
+use super::filter::{blend_subpixels, box2_q, combine, combine_blended, quadrant_sums, quadrant_sums_blended, visible_masks, FilterArea};
 use super::format::{Entry, ObjectParams, ALPHA_ONE};
 use super::setup::{scene_setup, ProofScene, SetupStats};
 use super::shade::shade_entry;
@@ -108,31 +108,18 @@ pub fn shade_and_filter(scene: &ProofScene, lists: &[Vec<Entry>], area: FilterAr
 /// The filter stage over object lists whose entries are already shaded (`colours[p][k]` is the colour
 /// of entry k of pixel p, from the golden shading or the RTL shading stage).
 pub fn filter_lists(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8; 3]>], area: FilterArea) -> (Vec<u8>, Vec<u8>) {
-    let s = scene.screen;
-    let dirs = |id: u16| dirs_of(scene, id);
-    if scene.objects.iter().any(|o| o.alpha < ALPHA_ONE) {
-        return filter_lists_blended(scene, lists, colours, area);
-    }
-    let mut rgb = Vec::with_capacity(s.pixels() * 3);
-    let mut quads = Vec::new();
-    let mut covered = Vec::with_capacity(s.pixels());
-    for (l, colours) in lists.iter().zip(colours) {
-        let (owners, taken) = visible_masks(l, &dirs);
-        covered.push(taken.count_ones() as u8);
-        match area {
-            FilterArea::Box1 => rgb.extend_from_slice(&combine(&owners, colours, taken, scene.background)),
-            FilterArea::Box2 => quads.push(quadrant_sums(&owners, colours, taken, scene.background)),
-        }
-    }
-    if area == FilterArea::Box2 {
-        rgb = box2(s.width, s.height, &quads);
-    }
-    (rgb, covered)
+    filter_lists_as(scene, lists, colours, area, scene.objects.iter().any(|o| o.alpha < ALPHA_ONE))
 }
 
 /// [`filter_lists`] with front-to-back blending per subpixel ([`blend_subpixels`]): the frame's form
 /// when it has a transparent object (on opaque lists it gives the same bytes as the unblended form).
 pub fn filter_lists_blended(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8; 3]>], area: FilterArea) -> (Vec<u8>, Vec<u8>) {
+    filter_lists_as(scene, lists, colours, area, true)
+}
+
+/// The filter stage, unblended (subpixels to their nearest entry) or blended; the 2x2 area's quadrant
+/// sums carry 8 more fraction bits when blended.
+fn filter_lists_as(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8; 3]>], area: FilterArea, blended: bool) -> (Vec<u8>, Vec<u8>) {
     let s = scene.screen;
     let dirs = |id: u16| dirs_of(scene, id);
     let alpha = |id: u16| scene.objects[id as usize].alpha;
@@ -140,15 +127,22 @@ pub fn filter_lists_blended(scene: &ProofScene, lists: &[Vec<Entry>], colours: &
     let mut quads = Vec::new();
     let mut covered = Vec::with_capacity(s.pixels());
     for (l, colours) in lists.iter().zip(colours) {
-        let (acc, taken) = blend_subpixels(l, &dirs, &alpha, colours, scene.background);
+        let bg = scene.background;
+        let (pixel, quad, taken) = if blended {
+            let (acc, taken) = blend_subpixels(l, &dirs, &alpha, colours, bg);
+            (combine_blended(&acc), quadrant_sums_blended(&acc), taken)
+        } else {
+            let (owners, taken) = visible_masks(l, &dirs);
+            (combine(&owners, colours, taken, bg), quadrant_sums(&owners, colours, taken, bg), taken)
+        };
         covered.push(taken.count_ones() as u8);
         match area {
-            FilterArea::Box1 => rgb.extend_from_slice(&combine_blended(&acc)),
-            FilterArea::Box2 => quads.push(quadrant_sums_blended(&acc)),
+            FilterArea::Box1 => rgb.extend_from_slice(&pixel),
+            FilterArea::Box2 => quads.push(quad),
         }
     }
     if area == FilterArea::Box2 {
-        rgb = box2_q(s.width, s.height, &quads, 16);
+        rgb = box2_q(s.width, s.height, &quads, if blended { 16 } else { 8 });
     }
     (rgb, covered)
 }
