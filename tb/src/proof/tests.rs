@@ -172,7 +172,7 @@ fn transparent_objects_keep_the_lists_behind_them_through_the_rtl_opp_every_cycl
     println!("glass {w}x{h}: {} objects ({} transparent), {longer} pixels with a longer list than opaque", sc.objects.len(), sc.stats.transparent_objects);
     assert!(longer > 50, "the stimulus must have transparent full coverage in front of other entries ({longer} pixels)");
     let need = ops_needed(sc.screen, &sc.objects) as usize;
-    let mut rng = Rng::new(0x61a55);
+    let rng = Rng::new(0x61a55);
     let seed = rng.seed();
     frame_matches("opp_glass_transparent", seed, sc.screen, &sc.objects, need, 1, Some(Gaps { seed, source_gap_percent: 20, sink_gap_percent: 30 }));
 }
