@@ -128,18 +128,22 @@ fn filter_lists_as(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8;
     let mut covered = Vec::with_capacity(s.pixels());
     for (l, colours) in lists.iter().zip(colours) {
         let bg = scene.background;
-        let (pixel, quad, taken) = if blended {
+        let taken = if blended {
             let (acc, taken) = blend_subpixels(l, &dirs, &alpha, colours, bg);
-            (combine_blended(&acc), quadrant_sums_blended(&acc), taken)
+            match area {
+                FilterArea::Box1 => rgb.extend_from_slice(&combine_blended(&acc)),
+                FilterArea::Box2 => quads.push(quadrant_sums_blended(&acc)),
+            }
+            taken
         } else {
             let (owners, taken) = visible_masks(l, &dirs);
-            (combine(&owners, colours, taken, bg), quadrant_sums(&owners, colours, taken, bg), taken)
+            match area {
+                FilterArea::Box1 => rgb.extend_from_slice(&combine(&owners, colours, taken, bg)),
+                FilterArea::Box2 => quads.push(quadrant_sums(&owners, colours, taken, bg)),
+            }
+            taken
         };
         covered.push(taken.count_ones() as u8);
-        match area {
-            FilterArea::Box1 => rgb.extend_from_slice(&pixel),
-            FilterArea::Box2 => quads.push(quad),
-        }
     }
     if area == FilterArea::Box2 {
         rgb = box2_q(s.width, s.height, &quads, if blended { 16 } else { 8 });
