@@ -4,7 +4,7 @@
 
 use golden::format::Screen;
 use golden::proof::filter::{blend_reference, blend_subpixels, combine_blended, subpixel_mask, FilterArea};
-use golden::proof::format::{alpha_q8, Coverage, ALPHA_ONE};
+use golden::proof::format::{alpha_q, Coverage, ALPHA_ONE};
 use golden::proof::render::{dirs_of, filter_lists, filter_lists_blended, object_lists, render_scene};
 use golden::proof::setup::{scene_setup, ProofScene};
 use golden::proof::shade::shade_entry;
@@ -44,12 +44,15 @@ fn the_blended_filter_gives_the_unblended_bytes_on_every_opaque_scene_at_both_ar
 }
 
 #[test]
-fn opacity_is_quantised_to_q1_8_with_one_meaning_opaque() {
-    assert_eq!(alpha_q8(1.0), ALPHA_ONE);
-    assert_eq!(alpha_q8(0.0), 0);
-    assert_eq!(alpha_q8(0.5), 128);
-    assert_eq!(alpha_q8(0.999), 256, "0.999 rounds to 1.0 in Q1.8");
-    assert_eq!(alpha_q8(0.997), 255);
+fn opacity_is_quantised_to_sixteenths_and_only_an_opacity_of_one_is_opaque() {
+    assert_eq!(ALPHA_ONE, 16);
+    assert_eq!(alpha_q(1.0), ALPHA_ONE);
+    assert_eq!(alpha_q(0.0), 0);
+    assert_eq!(alpha_q(0.5), 8);
+    assert_eq!(alpha_q(0.4), 6, "0.4 x 16 = 6.4");
+    assert_eq!(alpha_q(0.6), 10, "0.6 x 16 = 9.6");
+    assert_eq!(alpha_q(0.999), 15, "below 1 stays transparent, though 15.98 rounds to 16");
+    assert_eq!(alpha_q(0.03), 0, "0.48 rounds to 0: invisible");
 }
 
 /// A transparent object's fully covered pixel gives a partial entry (so the list goes on behind it),
@@ -88,36 +91,43 @@ fn a_transparent_object_covering_a_pixel_fully_keeps_the_list_behind_it_and_cove
     }
 }
 
-/// The fixed-point blend against the f64 composite with the unquantised opacities over the same
-/// masks and colours, on `glass` and on the teapot at opacity 0.5 (1x1 area).
+/// The fixed-point blend against two f64 composites of the same masks and colours (1x1 area), on
+/// `glass` and on the teapot at opacity 0.5: with the opacities as quantised (sixteenths), where only the
+/// weights' rounding differs, within 1 LSB; and with the materials' own opacities, where the
+/// quantisation to sixteenths adds up to 1/32 of an opacity per layer (measured and printed; held
+/// within 255/32 LSB, one layer's worst case).
 #[test]
-fn the_fixed_point_blend_is_within_one_lsb_of_an_f64_composite_on_glass_and_a_half_opaque_teapot() {
+fn the_fixed_point_blend_is_within_one_lsb_of_an_f64_composite_of_the_same_opacities() {
     let cases = [("glass", builtin::scene("glass").unwrap()), ("teapot at 0.5", with_opacity(builtin::scene("teapot").unwrap(), 0.5))];
     for (name, mesh) in cases {
         let scene = setup(&mesh, 320, 200);
-        let opacity: Vec<f64> = scene.objects.iter().map(|o| mesh.materials[scene.material[o.id as usize] as usize].opacity).collect();
+        let own: Vec<f64> = scene.objects.iter().map(|o| mesh.materials[scene.material[o.id as usize] as usize].opacity).collect();
+        let quantised: Vec<f64> = scene.objects.iter().map(|o| o.alpha as f64 / ALPHA_ONE as f64).collect();
         let lists = object_lists(scene.screen, &scene.objects);
         let colours = shaded(&scene, &lists);
         let dirs = |id: u16| dirs_of(&scene, id);
         let alpha = |id: u16| scene.objects[id as usize].alpha;
-        let (mut worst, mut sum, mut n, mut over_half) = (0f64, 0f64, 0u64, 0u64);
-        for (l, c) in lists.iter().zip(&colours) {
-            if l.is_empty() {
-                continue;
+        for (what, opacity) in [("quantised opacities", &quantised), ("the materials' opacities", &own)] {
+            let (mut worst, mut sum, mut n, mut over_half) = (0f64, 0f64, 0u64, 0u64);
+            for (l, c) in lists.iter().zip(&colours) {
+                if l.is_empty() {
+                    continue;
+                }
+                let (acc, _) = blend_subpixels(l, &dirs, &alpha, c, scene.background);
+                let got = combine_blended(&acc);
+                let want = blend_reference(l, &dirs, &|id| opacity[id as usize], c, scene.background);
+                for k in 0..3 {
+                    let e = (got[k] as f64 - want[k]).abs();
+                    worst = worst.max(e);
+                    sum += e;
+                    n += 1;
+                    over_half += (e > 0.5) as u64;
+                }
             }
-            let (acc, _) = blend_subpixels(l, &dirs, &alpha, c, scene.background);
-            let got = combine_blended(&acc);
-            let want = blend_reference(l, &dirs, &|id| opacity[id as usize], c, scene.background);
-            for k in 0..3 {
-                let e = (got[k] as f64 - want[k]).abs();
-                worst = worst.max(e);
-                sum += e;
-                n += 1;
-                over_half += (e > 0.5) as u64;
-            }
+            eprintln!("{name}, {what}: {n} channel values, error against f64: max {worst:.3} LSB, mean {:.3} LSB, {over_half} above 0.5 LSB", sum / n as f64);
+            let bound = if opacity == &quantised { 1.0 } else { 255.0 / 32.0 };
+            assert!(worst <= bound, "{name}: the blend is {worst:.3} LSB from the f64 composite with {what}");
         }
-        eprintln!("{name}: {n} channel values, error against f64: max {worst:.3} LSB, mean {:.3} LSB, {over_half} above 0.5 LSB", sum / n as f64);
-        assert!(worst <= 1.0, "{name}: the blend is {worst:.3} LSB from the f64 composite");
     }
 }
 

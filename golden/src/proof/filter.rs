@@ -15,8 +15,9 @@
 //!
 //! Transparency (issue 22, seed 002 §6 "both opaque and transparent objects"): when the frame has a
 //! transparent object, each subpixel is composited front to back ([`blend_subpixels`]). Its
-//! transmittance `T` starts at [`T_ONE`] (1.0 in Q1.8); an entry of opacity `a` (Q1.8) covering the
-//! subpixel adds its colour with the weight `w = (T a + 128) >> 8` and leaves `T - w`, so the weights
+//! transmittance `T` starts at [`T_ONE`] (1.0 in Q1.8); an entry of opacity `a` (Q1.4, sixteenths:
+//! [`super::format::ALPHA_FRAC`]) covering the subpixel adds its colour with the weight
+//! `w = (T a + 8) >> 4` and leaves `T - w`, so the weights
 //! and the final `T` (the background's weight) always sum to exactly 256 per subpixel. An opaque entry
 //! takes `w = T`: on lists of opaque entries this is the unblended filter scaled by 256, and the
 //! result is the same byte for byte (tested), so frames without transparency do not change.
@@ -26,7 +27,7 @@
 //! edge neighbour's and a quarter of each corner neighbour's; pixels beyond the screen edge repeat the
 //! edge pixel), computed from per-quadrant sums of 4x4 subpixels.
 
-use super::format::{Entry, SUBPIXELS};
+use super::format::{Entry, ALPHA_FRAC, ALPHA_ONE, SUBPIXELS};
 
 /// Filter area.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
@@ -127,7 +128,7 @@ pub const T_ONE: u32 = 256;
 
 /// Front-to-back compositing per subpixel (module doc): for each of the 64 subpixels, the sum of
 /// `weight x colour` over the entries covering it and the background (weights in 1/256, summing to
-/// 256), and the union of the entries' masks. `alpha(id)` is the object's opacity, Q1.8.
+/// 256), and the union of the entries' masks. `alpha(id)` is the object's opacity, Q1.4.
 pub fn blend_subpixels(
     list: &[Entry],
     dirs: &dyn Fn(u16) -> [(i16, i16); 3],
@@ -141,10 +142,10 @@ pub fn blend_subpixels(
     for (e, c) in list.iter().zip(colours) {
         let m = subpixel_mask(e, &dirs(e.id));
         taken |= m;
-        let a = alpha(e.id).min(T_ONE as u16) as u32;
+        let a = alpha(e.id).min(ALPHA_ONE) as u32;
         for i in 0..64 {
             if m >> i & 1 == 1 && t[i] > 0 {
-                let w = (t[i] * a + 128) >> 8;
+                let w = (t[i] * a + (1 << (ALPHA_FRAC - 1))) >> ALPHA_FRAC;
                 for k in 0..3 {
                     acc[i][k] += w * c[k] as u32;
                 }

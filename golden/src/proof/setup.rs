@@ -14,7 +14,7 @@
 //! * the depth plane and the three normal planes from [`Plane::setup`] (one reciprocal per triangle),
 //!   rescaled to the accumulators' fraction bits and evaluated at the box's first pixel.
 
-use super::format::{alpha_q8, sat, wrap, EdgeParams, ALPHA_ONE, Interp, ObjectParams, ACC_BITS, DEPTH_FRAC, EDGE_BITS, ID_BITS, NORMAL_ACC_FRAC};
+use super::format::{alpha_q, sat, wrap, EdgeParams, ALPHA_ONE, Interp, ObjectParams, ACC_BITS, DEPTH_FRAC, EDGE_BITS, ID_BITS, NORMAL_ACC_FRAC};
 use crate::format::{reciprocal, round_shift, Plane, Screen, WinVertex, PLANE_FRAC, SUBPIXEL_BITS};
 use crate::host::{eye_normals, normalize, upper_pipeline, Vec3};
 use crate::raster::{canonical_order, det, is_culled, Culled};
@@ -145,7 +145,7 @@ pub fn object_setup(tri: &[WinVertex; 3], normals: [[i64; 3]; 3], id: u16, scree
 }
 
 /// The whole frame's object setup: upper pipeline, culling, lower pipeline (normals only: lighting is
-/// the shading stage's job), object parameters (with each material's opacity, Q1.8) and tables.
+/// the shading stage's job), object parameters (with each material's opacity, Q1.4) and tables.
 pub fn scene_setup(mesh: &Mesh, opts: &RenderOptions) -> Result<ProofScene, String> {
     mesh.validate()?;
     opts.camera.validate()?;
@@ -185,7 +185,7 @@ pub fn scene_setup(mesh: &Mesh, opts: &RenderOptions) -> Result<ProofScene, Stri
         }
         match object_setup(&t.v, normals, objects.len() as u16, opts.screen) {
             Some(mut p) => {
-                p.alpha = alpha_q8(mesh.materials[tri.material as usize].opacity);
+                p.alpha = alpha_q(mesh.materials[tri.material as usize].opacity);
                 stats.transparent_objects += (p.alpha < ALPHA_ONE) as u64;
                 objects.push(p);
                 material.push(tri.material as u16);
