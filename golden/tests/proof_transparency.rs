@@ -107,7 +107,7 @@ fn the_fixed_point_blend_is_within_one_lsb_of_an_f64_composite_of_the_same_opaci
         let colours = shaded(&scene, &lists);
         let dirs = |id: u16| dirs_of(&scene, id);
         let alpha = |id: u16| scene.objects[id as usize].alpha;
-        for (what, opacity) in [("quantised opacities", &quantised), ("the materials' opacities", &own)] {
+        for (what, opacity, bound) in [("quantised opacities", &quantised, 1.0), ("the materials' opacities", &own, 255.0 / 32.0)] {
             let (mut worst, mut sum, mut n, mut over_half) = (0f64, 0f64, 0u64, 0u64);
             for (l, c) in lists.iter().zip(&colours) {
                 if l.is_empty() {
@@ -125,7 +125,6 @@ fn the_fixed_point_blend_is_within_one_lsb_of_an_f64_composite_of_the_same_opaci
                 }
             }
             eprintln!("{name}, {what}: {n} channel values, error against f64: max {worst:.3} LSB, mean {:.3} LSB, {over_half} above 0.5 LSB", sum / n as f64);
-            let bound = if opacity == &quantised { 1.0 } else { 255.0 / 32.0 };
             assert!(worst <= bound, "{name}: the blend is {worst:.3} LSB from the f64 composite with {what}");
         }
     }

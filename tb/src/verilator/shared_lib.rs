@@ -142,7 +142,7 @@ pub fn build_lib(name: &str, top: &str, verilog: &str, ports: &[Port], trace: bo
     let version = verilator_version()?;
     let cpp = wrapper_cpp(top, ports, trace);
     // The model's C++ at -O1 (Verilator's default is -Os): the 256-OP OPP's Verilator build took 296 s
-    // at -O1 on the 2-core VM (about 16 min at -Os), and tb/tests/proof_verilator.rs, that build and
+    // at -O1 on the 2-core VM (at -Os it had not finished after 12 min; about 16 min measured before), and tb/tests/proof_verilator.rs, that build and
     // its frames, 855 s against about 23 min.
     let mut flags: Vec<String> =
         ["--cc", "--build", "-O3", "-j", "2", "-CFLAGS", "-fPIC", "-MAKEFLAGS", "OPT_FAST=-O1 OPT_SLOW=-O1", "--top-module", top].iter().map(|s| s.to_string()).collect();
