@@ -46,10 +46,10 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     }
     let t0 = std::time::Instant::now();
     let scene = scene_setup(mesh, opts)?;
-    if args.backend != BackendArg::Golden && scene.stats.transparent_objects > 0 {
-        // Before any output: the RTL OP, shading and filter stages are opaque-only so far (issue 22).
+    if args.backend != BackendArg::Golden && area == FilterArea::Box2 && scene.stats.transparent_objects > 0 {
+        // Before any output: the RTL 2x2 filter does not blend yet (issue 22); the 1x1 filter does.
         return Err(format!(
-            "{}: {} of {} objects are transparent, and PROOF's RTL filter does not blend yet: use --backend golden, or --opacity 1",
+            "{}: {} of {} objects are transparent, and PROOF's RTL 2x2 filter does not blend yet: use --filter 1x1, --backend golden, or --opacity 1",
             mesh.name, scene.stats.transparent_objects, scene.stats.objects
         ));
     }

@@ -2,12 +2,13 @@
 //! `hdl::proof::filter::FilterStage` must match [`FilterModel`] on every port in every cycle.
 //!
 //! ```text
-//!   cfg_write cfg_sel cfg_addr cfg_data   (0: edge-direction table, 1: background colour)
+//!   cfg_write cfg_sel cfg_addr cfg_data   (0: edge-direction table, 1: background colour, 2: opacity table)
 //!        │
-//!   up ─▶ F0 ─▶ F1 ─────▶ F2 ───────▶ F3 ────▶ F4 ──────▶ F5 ──────▶ F6 ─────────▶ OUT ─▶ down
-//!  (shaded │dir  base,     rows: tree   masks:   visible   weights:   sums:         colour, covered
-//!   slots) │table 2cos,    of multiples tree of  = mask &   popcounts  Σ w c         (one per pixel)
-//!          │     2sin      of 2 sin     2 cos    ~taken
+//!   up ─▶ F0 ─▶ F1 ─────▶ F2 ───────▶ F3 ────▶ F4 ──────────▶ F5 ──────▶ F6 ──────▶ OUT ─▶ down
+//!  (shaded │dir, base,     rows: tree   masks:   weights per    W = Σ w_i  sums:      colour, covered
+//!   slots) │alpha 2cos,    of multiples tree of  subpixel:      covered    Σ W c, Σ W (one per pixel)
+//!          │tables 2sin,   of 2 sin     2 cos    w_i = T_i a
+//!          │      alpha
 //! ```
 //!
 //! The stage takes one list entry (time slot) per clock and gives one pixel per list: every register
@@ -15,19 +16,29 @@
 //! in the shading stage). Latency from a pixel's last slot to its output: 8 clocks.
 //!
 //! Per edge k of an entry (16 times the subpixel distance, in units of 2^-14 px, exact):
-//! * F0: the slot; the direction table (object id -> cos a, sin a of the three edges, Q1.14) is read
-//!   at the same edge with enable `adv`;
+//! * F0: the slot; the direction table (object id -> cos a, sin a of the three edges, Q1.14) and the
+//!   opacity table (id -> opacity, Q1.4; the host writes both for every object) are read at the same
+//!   edge with enable `adv`;
 //! * F1: `base = 16 d - 7 cos - 7 sin` (the distance at subpixel (0, 0)), `sx = 2 cos`, `sy = 2 sin`;
+//!   the entry's opacity `a` (a table value above 16 counts as 16);
 //! * F2: the eight row values `base + j sy`, j = 0..7, from the paper's tree of multiples (level 2
 //!   adds 4 sy on the right branch, level 1 adds 2 sy, level 0 adds sy);
 //! * F3: per row the same tree in x with `sx`; a subpixel is inside the edge if its leaf is >= 0.
 //!   The entry's mask is the AND of the three edges' masks (all 64 for a full entry, none for an
 //!   empty slot), computed as F3 is read;
-//! * F4: `visible = mask & !taken`, `union = taken | mask`; the pixel state `taken` becomes `union`,
-//!   or 0 after the pixel's last slot (each entry owns the subpixels no nearer entry took);
-//! * F5: `w = popcount(visible)`, `covered = popcount(union)`;
-//! * F6: `acc = sum + w c` per channel; the pixel state `sum` becomes `acc`, or 0 after the last slot;
-//! * OUT: for a pixel's last slot, `colour = (acc + (64 - covered) bg + 32) >> 6`.
+//! * F4: front-to-back blending per subpixel (`golden::proof::filter::blend_subpixels`): for each
+//!   subpixel i of the mask, `w_i = (T_i a + 8) >> 4` with `T_i = 256 - spent_i`, the transmittance
+//!   the nearer entries left; the pixel state `spent_i` grows by `w_i` and `taken` (the union of the
+//!   masks) by the mask, both back to 0 after the pixel's last slot. An opaque entry (a = 16) takes
+//!   `w_i = T_i`: all of a subpixel no nearer entry covered, nothing of one it did;
+//! * F5: `W = Σ w_i` (0..=16384, per quadrant for the 2x2 area), `covered = popcount(union)`;
+//! * F6: `acc = sum + W c` per channel and `wacc = wsum + W`; the pixel states `sum`, `wsum` become
+//!   `acc`, `wacc`, or 0 after the last slot;
+//! * OUT: for a pixel's last slot, `colour = (acc + (16384 - wacc) bg + 2^13) >> 14`, the background
+//!   weighted by what is left of the 64 subpixels' transmittance.
+//!
+//! On lists of opaque entries every `w_i` is 0 or 256, and the output is the unblended filter's
+//! (each subpixel to its nearest entry) byte for byte.
 //!
 //! Data of a register whose valid bit is 0 is don't-care; the pixel states change only when a valid
 //! slot passes. The values never need more than 22 bits signed for any 16-bit inputs (|16 d| < 2^19,
@@ -36,10 +47,17 @@
 
 use super::cycle_shade::{CfgWrite, ShadedSlot};
 use super::filter::multiples_tree;
+use super::format::{ALPHA_FRAC, ALPHA_ONE};
 
 /// Configuration targets of the filter's `cfg` write port.
 pub const CFG_DIRS: u8 = 0;
 pub const CFG_BACKGROUND: u8 = 1;
+/// The opacity table: object id -> opacity in sixteenths, Q1.4 (5 bits; 16 is opaque, a value above
+/// 16 counts as 16). The host writes it for every object, as the direction table.
+pub const CFG_ALPHA: u8 = 2;
+
+/// A subpixel's whole weight, 1.0 in Q1.8 (the transmittance of an uncovered subpixel).
+pub const W_ONE: u32 = super::filter::T_ONE;
 
 /// Registers from a pixel's last slot at the input to its pixel at the output.
 pub const FILTER_LATENCY: usize = 8;
@@ -55,13 +73,20 @@ pub struct FilteredPixel {
 }
 
 /// The configuration writes that load the edge-direction table (`dirs[id]` = (cos, sin) of the three
-/// edges, Q1.14) and the background colour.
+/// edges, Q1.14) and the opacity table of opaque objects, and the background colour.
+/// [`filter_config_alpha`] gives the opacities.
 pub fn filter_config(dirs: &[[(i16, i16); 3]], background: [u8; 3], obj_addr_bits: u32) -> Result<Vec<CfgWrite>, String> {
+    filter_config_alpha(dirs, &[], background, obj_addr_bits)
+}
+
+/// [`filter_config`] with the opacity `alphas[id]` (Q1.4, `format::alpha_q`) of each object;
+/// objects past the end of `alphas` are opaque.
+pub fn filter_config_alpha(dirs: &[[(i16, i16); 3]], alphas: &[u16], background: [u8; 3], obj_addr_bits: u32) -> Result<Vec<CfgWrite>, String> {
     check_filter_params(obj_addr_bits)?;
     if dirs.len() > 1usize << obj_addr_bits {
         return Err(format!("{} objects do not fit the filter's direction table of {} entries", dirs.len(), 1u64 << obj_addr_bits));
     }
-    let mut w = Vec::with_capacity(dirs.len() + 1);
+    let mut w = Vec::with_capacity(2 * dirs.len() + 1);
     for (id, d) in dirs.iter().enumerate() {
         let mut data = 0u128;
         for k in 0..3 {
@@ -69,6 +94,8 @@ pub fn filter_config(dirs: &[[(i16, i16); 3]], background: [u8; 3], obj_addr_bit
             data |= (d[k].1 as u16 as u128) << (32 * k + 16);
         }
         w.push(CfgWrite { sel: CFG_DIRS, addr: id as u16, data });
+        let a = alphas.get(id).copied().unwrap_or(ALPHA_ONE).min(ALPHA_ONE);
+        w.push(CfgWrite { sel: CFG_ALPHA, addr: id as u16, data: a as u128 });
     }
     let bg = background[0] as u128 | (background[1] as u128) << 8 | (background[2] as u128) << 16;
     w.push(CfgWrite { sel: CFG_BACKGROUND, addr: 0, data: bg });
@@ -120,29 +147,55 @@ pub struct EdgeF2 {
 pub struct Tag {
     pub valid: bool,
     pub slot: ShadedSlot,
+    /// The entry's opacity, Q1.4 (0..=16), from the opacity table (set from F1 on).
+    pub alpha: u8,
 }
 
-/// F4: the entry's visible subpixels and the pixel's union so far.
-#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+/// F4: the entry's weight in each subpixel (in 1/256 of a subpixel, bit order `8 j + i`) and the
+/// pixel's union of masks so far.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub struct VisReg {
     pub tag: Tag,
-    pub visible: u64,
+    pub w: [u16; 64],
     pub union: u64,
 }
 
-/// F5: weights.
+impl Default for VisReg {
+    fn default() -> VisReg {
+        VisReg { tag: Tag::default(), w: [0; 64], union: 0 }
+    }
+}
+
+impl VisReg {
+    /// The weights summed per quadrant of 4x4 subpixels (q = 2 qy + qx; 0..=4096 each).
+    pub fn quadrant_weights(&self) -> [u32; 4] {
+        let mut q = [0u32; 4];
+        for (i, &w) in self.w.iter().enumerate() {
+            q[2 * (i / 32) + (i % 8) / 4] += w as u32;
+        }
+        q
+    }
+
+    /// The entry's whole weight in the pixel (0..=16384: 256 per subpixel).
+    pub fn weight(&self) -> u32 {
+        self.quadrant_weights().iter().sum()
+    }
+}
+
+/// F5: the entry's weight (0..=16384) and the pixel's covered subpixels so far.
 #[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
 pub struct WeightReg {
     pub tag: Tag,
-    pub w: u8,
+    pub w: u16,
     pub covered: u8,
 }
 
-/// F6: the pixel's colour sums including this entry.
+/// F6: the pixel's colour sums and weight sum including this entry.
 #[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
 pub struct SumReg {
     pub tag: Tag,
     pub acc: [u32; 3],
+    pub wacc: u32,
     pub covered: u8,
 }
 
@@ -155,13 +208,19 @@ pub struct FilterFront {
     /// Direction table: (cos, sin) of the three edges per object, and its output register.
     pub dir_table: Vec<[i16; 6]>,
     pub dir_q: [i16; 6],
+    /// Opacity table ([`CFG_ALPHA`]), read with the direction table, and its output register.
+    pub alpha_table: Vec<u8>,
+    pub alpha_q: u8,
     pub f0: Tag,
     pub f1: (Tag, [EdgeF1; 3]),
     pub f2: (Tag, [EdgeF2; 3]),
     /// F3: each edge's half-plane mask.
     pub f3: (Tag, [u64; 3]),
-    /// Pixel state: subpixels taken by nearer entries.
+    /// Pixel state: subpixels covered by nearer entries.
     pub taken: u64,
+    /// Pixel state: per subpixel (bit order), the part of its 256 that nearer entries took
+    /// (256 - transmittance; 0..=256).
+    pub spent: [u16; 64],
     pub f4: VisReg,
 }
 
@@ -171,8 +230,10 @@ pub struct FilterModel {
     pub front: FilterFront,
     pub background: [u8; 3],
     pub f5: WeightReg,
-    /// Pixel state: colour sums of the entries so far.
+    /// Pixel state: colour sums of the entries so far (weights in 1/256 of a subpixel).
     pub sum: [u32; 3],
+    /// Pixel state: the weights of the entries so far (0..=16384).
+    pub wsum: u32,
     pub f6: SumReg,
     pub out_valid: bool,
     pub out: FilteredPixel,
@@ -211,11 +272,14 @@ impl FilterFront {
             obj_addr_bits,
             dir_table: vec![[0; 6]; 1 << obj_addr_bits],
             dir_q: [0; 6],
+            alpha_table: vec![0; 1 << obj_addr_bits],
+            alpha_q: 0,
             f0: Tag::default(),
             f1: Default::default(),
             f2: Default::default(),
             f3: Default::default(),
             taken: 0,
+            spent: [0; 64],
             f4: VisReg::default(),
         })
     }
@@ -240,27 +304,53 @@ impl FilterFront {
     /// One edge with the global stall open: F4 ← F3 ← F2 ← F1 ← F0 ← the input slot. The back end
     /// must read F4 before calling this.
     pub fn advance(&mut self, up_valid: bool, up_data: &ShadedSlot) {
-        // F4: visibility against the nearer entries of the pixel.
+        // F4: per covered subpixel, the weight w = (T a + 8) >> 4 of what the nearer entries left,
+        // T = 256 - spent (an opaque entry, a = 16, takes all of it).
         let mask = self.entry_mask();
         let t3 = self.f3.0;
-        self.f4 = VisReg { tag: t3, visible: mask & !self.taken, union: self.taken | mask };
+        let a = t3.alpha as u32;
+        let mut w = [0u16; 64];
+        for (i, wi) in w.iter_mut().enumerate() {
+            if mask >> i & 1 == 1 {
+                let t = W_ONE - self.spent[i] as u32;
+                *wi = ((t * a + (1 << (ALPHA_FRAC - 1))) >> ALPHA_FRAC) as u16;
+            }
+        }
+        self.f4 = VisReg { tag: t3, w, union: self.taken | mask };
         if t3.valid {
-            self.taken = if t3.slot.last { 0 } else { self.taken | mask };
+            if t3.slot.last {
+                self.taken = 0;
+                self.spent = [0; 64];
+            } else {
+                self.taken |= mask;
+                for i in 0..64 {
+                    self.spent[i] += w[i];
+                }
+            }
         }
         // F3, F2, F1: the trees.
         self.f3 = (self.f2.0, self.f2.1.map(|e| edge_f3(&e)));
         self.f2 = (self.f1.0, self.f1.1.map(|e| edge_f2(&e)));
         let (s, q) = (self.f0.slot, self.dir_q);
-        self.f1 = (self.f0, [0, 1, 2].map(|k| edge_f1(s.dist[k], q[2 * k], q[2 * k + 1])));
-        // F0: the slot; read the direction table.
-        self.f0 = Tag { valid: up_valid, slot: *up_data };
-        self.dir_q = self.dir_table[up_data.id as usize & ((1usize << self.obj_addr_bits) - 1)];
+        let alpha = self.alpha_q.min(ALPHA_ONE as u8);
+        self.f1 = (Tag { alpha, ..self.f0 }, [0, 1, 2].map(|k| edge_f1(s.dist[k], q[2 * k], q[2 * k + 1])));
+        // F0: the slot; read the direction and opacity tables.
+        self.f0 = Tag { valid: up_valid, slot: *up_data, alpha: 0 };
+        let id = up_data.id as usize & ((1usize << self.obj_addr_bits) - 1);
+        self.dir_q = self.dir_table[id];
+        self.alpha_q = self.alpha_table[id];
     }
 
     /// A host write to the direction table (cfg target [`CFG_DIRS`]).
     pub fn write_dirs(&mut self, c: &CfgWrite) {
         let a = c.addr as usize & ((1usize << self.obj_addr_bits) - 1);
         self.dir_table[a] = [0, 1, 2, 3, 4, 5].map(|k| ((c.data >> (16 * k)) & 0xffff) as u16 as i16);
+    }
+
+    /// A host write to the opacity table (cfg target [`CFG_ALPHA`]): the low 5 bits.
+    pub fn write_alpha(&mut self, c: &CfgWrite) {
+        let a = c.addr as usize & ((1usize << self.obj_addr_bits) - 1);
+        self.alpha_table[a] = (c.data & 0x1f) as u8;
     }
 }
 
@@ -269,7 +359,8 @@ pub fn filter_write(front: &mut FilterFront, background: &mut [u8; 3], c: &CfgWr
     match c.sel {
         CFG_DIRS => front.write_dirs(c),
         CFG_BACKGROUND => *background = [0, 1, 2].map(|k| ((c.data >> (8 * k)) & 0xff) as u8),
-        s => return Err(format!("cfg_sel {s} is not a filter-stage target (0: directions, 1: background)")),
+        CFG_ALPHA => front.write_alpha(c),
+        s => return Err(format!("cfg_sel {s} is not a filter-stage target (0: directions, 1: background, 2: opacities)")),
     }
     Ok(())
 }
@@ -282,6 +373,7 @@ impl FilterModel {
             background: [0; 3],
             f5: WeightReg::default(),
             sum: [0; 3],
+            wsum: 0,
             f6: SumReg::default(),
             out_valid: false,
             out: FilteredPixel::default(),
@@ -313,23 +405,30 @@ impl FilterModel {
         // OUT: one pixel per list.
         let f6 = self.f6;
         self.out_valid = f6.tag.valid && f6.tag.slot.last;
-        let wbg = 64 - f6.covered as u32;
+        let wbg = 64 * W_ONE - f6.wacc;
         self.out = FilteredPixel {
             x: f6.tag.slot.x,
             y: f6.tag.slot.y,
-            rgb: [0, 1, 2].map(|k| ((f6.acc[k] + wbg * self.background[k] as u32 + 32) >> 6) as u8),
+            rgb: [0, 1, 2].map(|k| ((f6.acc[k] + wbg * self.background[k] as u32 + (1 << 13)) >> 14) as u8),
             covered: f6.covered,
         };
         // F6: multiply-add into the pixel's sums.
         let f5 = self.f5;
         let acc = [0, 1, 2].map(|k| self.sum[k] + f5.w as u32 * f5.tag.slot.rgb[k] as u32);
-        self.f6 = SumReg { tag: f5.tag, acc, covered: f5.covered };
+        let wacc = self.wsum + f5.w as u32;
+        self.f6 = SumReg { tag: f5.tag, acc, wacc, covered: f5.covered };
         if f5.tag.valid {
-            self.sum = if f5.tag.slot.last { [0; 3] } else { acc };
+            if f5.tag.slot.last {
+                self.sum = [0; 3];
+                self.wsum = 0;
+            } else {
+                self.sum = acc;
+                self.wsum = wacc;
+            }
         }
         // F5: weights.
         let f4 = self.front.f4;
-        self.f5 = WeightReg { tag: f4.tag, w: f4.visible.count_ones() as u8, covered: f4.union.count_ones() as u8 };
+        self.f5 = WeightReg { tag: f4.tag, w: f4.weight() as u16, covered: f4.union.count_ones() as u8 };
         // F4..F0.
         self.front.advance(inp.up_valid, &inp.up_data);
     }
@@ -404,8 +503,11 @@ pub(crate) mod fixtures {
     use crate::proof::shade::shade_entry;
     use crate::scene::Mesh;
 
+    /// The fixtures' object-address bits (`glass` has over 1024 objects).
+    pub const FIXTURE_BITS: u32 = 11;
+
     /// A scene at w x h with the CLI's options: its object lists, their shaded colours, the slot stream
-    /// and the filter's configuration writes (10 object-address bits).
+    /// and the filter's configuration writes ([`FIXTURE_BITS`] object-address bits).
     pub struct RealFrame {
         pub sc: ProofScene,
         pub lists: Vec<Vec<Entry>>,
@@ -422,7 +524,8 @@ pub(crate) mod fixtures {
             lists.iter().map(|l| l.iter().map(|e| shade_entry(&sc.lights, e.normal, sc.material[e.id as usize])).collect()).collect();
         let slots = shaded_slots(w, &lists, &colours);
         let dirs: Vec<_> = (0..sc.objects.len()).map(|i| dirs_of(&sc, i as u16)).collect();
-        let cfg = filter_config(&dirs, sc.background, 10).unwrap();
+        let alphas: Vec<u16> = sc.objects.iter().map(|o| o.alpha).collect();
+        let cfg = filter_config_alpha(&dirs, &alphas, sc.background, FIXTURE_BITS).unwrap();
         RealFrame { sc, lists, colours, slots, cfg }
     }
 
@@ -453,7 +556,7 @@ pub(crate) mod fixtures {
 
 #[cfg(test)]
 mod tests {
-    use super::fixtures::{real_frame, run_with_gaps, RealFrame};
+    use super::fixtures::{real_frame, run_with_gaps, RealFrame, FIXTURE_BITS};
     use super::*;
     use crate::proof::cycle_opp::GapRng;
     use crate::proof::filter::{subpixel_mask, FilterArea};
@@ -468,7 +571,7 @@ mod tests {
             let RealFrame { sc, lists, colours, slots, cfg } = real_frame(&mesh, w, h);
             let (want_rgb, want_cov) = filter_lists(&sc, &lists, &colours, FilterArea::Box1);
             for (seed, gin, gout) in [(1, 0, 0), (3, 30, 30), (17, 5, 60)] {
-                let mut m = FilterModel::new(10).unwrap();
+                let mut m = FilterModel::new(FIXTURE_BITS).unwrap();
                 let out = run_with_gaps(&mut m, &cfg, &slots, seed, gin, gout);
                 assert_eq!(out.len(), (w * h) as usize);
                 for (p, o) in out.iter().enumerate() {
@@ -482,6 +585,48 @@ mod tests {
             let multi = lists.iter().filter(|l| l.len() > 1).count();
             assert!(partial > 20 && multi > 10, "{}: the lists should exercise the filter ({partial} partial, {multi} multi)", mesh.name);
         }
+    }
+
+    #[test]
+    fn the_filter_cycle_model_blends_transparent_lists_as_the_algorithmic_filter_with_gaps() {
+        let mut half = builtin::teapot(2);
+        for m in half.materials.iter_mut() {
+            m.opacity = 0.5;
+        }
+        for (mesh, w, h) in [(builtin::glass(), 64, 40), (half, 48, 30)] {
+            let RealFrame { sc, lists, colours, slots, cfg } = real_frame(&mesh, w, h);
+            assert!(cfg.iter().any(|c| c.sel == CFG_ALPHA && c.data < ALPHA_ONE as u128), "{}: the frame should have transparent objects", mesh.name);
+            let (want_rgb, want_cov) = filter_lists(&sc, &lists, &colours, FilterArea::Box1);
+            // The same lists with every object taken as opaque differ: the blend is exercised.
+            let (opaque_rgb, _) = crate::proof::render::filter_lists_opaque(&sc, &lists, &colours, FilterArea::Box1);
+            assert_ne!(want_rgb, opaque_rgb, "{}", mesh.name);
+            for (seed, gin, gout) in [(2, 0, 0), (5, 30, 30)] {
+                let mut m = FilterModel::new(FIXTURE_BITS).unwrap();
+                let out = run_with_gaps(&mut m, &cfg, &slots, seed, gin, gout);
+                for (p, o) in out.iter().enumerate() {
+                    assert_eq!(o.rgb[..], want_rgb[3 * p..3 * p + 3], "{} pixel {p} seed {seed}", mesh.name);
+                    assert_eq!(o.covered, want_cov[p], "{} pixel {p} covered", mesh.name);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn three_full_entries_of_opacity_nine_sixteenths_take_144_63_and_28_of_each_subpixel() {
+        // By hand: 256 x 9/16 = 144 leaves 112; 112 x 9/16 = 63 leaves 49; 49 x 9/16 = 27.56, rounded
+        // to 28, leaves 21 for the background.
+        let mut f = FilterFront::new(2).unwrap();
+        f.write_alpha(&CfgWrite { sel: CFG_ALPHA, addr: 1, data: 9 });
+        let slot = |last| ShadedSlot { x: 3, y: 4, last, has_entry: true, id: 1, full: true, ..Default::default() };
+        let mut seen = Vec::new();
+        for n in 0..10 {
+            if f.f4.tag.valid {
+                seen.push((f.f4.tag.alpha, f.f4.weight(), f.f4.quadrant_weights()));
+            }
+            f.advance(n < 3, &slot(n == 2));
+        }
+        assert_eq!(seen, [(9, 144 * 64, [144 * 16; 4]), (9, 63 * 64, [63 * 16; 4]), (9, 28 * 64, [28 * 16; 4])]);
+        assert_eq!((f.taken, f.spent), (0, [0; 64]), "the pixel state returns to 0 after the last slot");
     }
 
     #[test]

@@ -4,10 +4,10 @@
 //! match [`BoxModel`].
 //!
 //! ```text
-//!   cfg (0: directions, 1: background)
+//!   cfg (0: directions, 1: background, 2: opacities)
 //!     │
 //!   up ─▶ FilterFront F0..F4 ─▶ Q5 ─────────▶ Q6 ──────────────▶ box: A ─▶ H ─▶ V ─▶ OUT ─▶ down
-//!  (shaded  (masks, visible,   quadrant       quadrant sums          line buffer     (one pixel per
+//!  (shaded  (masks, weights,   quadrant       quadrant sums          line buffer     (one pixel per
 //!   slots)   union)            weights,       += w_q c (pixel        of column sums   list, raster
 //!                              coverage       state), out on last                      order)
 //! ```
@@ -19,8 +19,10 @@
 //!
 //! Back end after the front's F4 (every register loads when `adv = !(Q6 holds a last slot) ||
 //! box_up_ready`, a global stall; `up_ready = adv`):
-//! * Q5: per quadrant q the weight `w_q` = owned subpixels in q and the coverage `c_q` = covered
-//!   subpixels in q (popcounts of F4's visible and union masks);
+//! * Q5: per quadrant q the weight `w_q` = F4's quadrant weight >> 8, the subpixels of q the entry
+//!   owns (exact when every object is opaque; this area does not blend transparent objects yet, and
+//!   the backends refuse such frames with it) and the coverage `c_q` = covered subpixels in q (the
+//!   popcounts of F4's union mask);
 //! * Q6: `acc_qk = sum_qk + w_q c_k` per quadrant and channel; the pixel state `sum` becomes `acc`,
 //!   or 0 after the pixel's last slot. Q6 holding a valid last slot *is* the box's input word.
 //!
@@ -369,10 +371,13 @@ impl Filter2x2Model {
             if q5.tag.valid {
                 self.qsum = if q5.tag.slot.last { [[0; 3]; 4] } else { acc };
             }
-            // Q5: quadrant popcounts of F4's masks.
+            // Q5: F4's quadrant weights in whole subpixels (exact for opaque entries, whose weights
+            // are 0 or 256 per subpixel: the 2x2 area does not blend yet) and the quadrant popcounts
+            // of its union mask.
             let f4 = self.front.f4;
             let ones = |m: u64| [0, 1, 2, 3].map(|q| (m & quadrant_mask(q)).count_ones() as u8);
-            self.q5 = QuadWeightReg { tag: f4.tag, w: ones(f4.visible), cov: ones(f4.union) };
+            let wq = f4.quadrant_weights().map(|w| (w >> 8) as u8);
+            self.q5 = QuadWeightReg { tag: f4.tag, w: wq, cov: ones(f4.union) };
             self.front.advance(inp.up_valid, &inp.up_data);
         }
         if let Some(c) = inp.cfg {
@@ -429,7 +434,7 @@ pub fn box2_of_quads(width: u32, height: u32, quads: &[QuadPixel], background: [
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::proof::cycle_filter::fixtures::{real_frame, run_with_gaps, RealFrame};
+    use crate::proof::cycle_filter::fixtures::{real_frame, run_with_gaps, RealFrame, FIXTURE_BITS};
     use crate::proof::filter::FilterArea;
     use crate::proof::render::filter_lists;
     use crate::scene::builtin;
@@ -486,7 +491,7 @@ mod tests {
             let (rgb1, _) = filter_lists(&sc, &lists, &colours, FilterArea::Box1);
             assert_ne!(want_rgb, rgb1, "{}: the 2x2 image should differ from the 1x1 one", mesh.name);
             for (seed, gin, gout) in [(1u64, 0u64, 0u64), (3, 30, 30), (17, 5, 60)] {
-                let mut m = Filter2x2Model::new(10, w, h).unwrap();
+                let mut m = Filter2x2Model::new(FIXTURE_BITS, w, h).unwrap();
                 let out = run_with_gaps(&mut m, &cfg, &slots, seed, gin, gout);
                 assert_eq!(out.len(), (w * h) as usize);
                 for (p, o) in out.iter().enumerate() {
@@ -498,7 +503,7 @@ mod tests {
             }
             // Without gaps: the frame takes its slots, the front's and Q's registers, the row of
             // lag and the flush.
-            let mut m = Filter2x2Model::new(10, w, h).unwrap();
+            let mut m = Filter2x2Model::new(FIXTURE_BITS, w, h).unwrap();
             let (px, cycles) = super::super::cycle_filter::filter_slots(&mut m, &cfg, &slots, 4000).unwrap();
             assert_eq!(px.len(), (w * h) as usize);
             assert_eq!(cycles, filter2x2_frame_cycles(slots.len(), w), "{}: {} slots", mesh.name, slots.len());

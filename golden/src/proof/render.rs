@@ -111,6 +111,11 @@ pub fn filter_lists(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8
     filter_lists_as(scene, lists, colours, area, scene.objects.iter().any(|o| o.alpha < ALPHA_ONE))
 }
 
+/// [`filter_lists`] with every object taken as opaque (each subpixel to its nearest entry).
+pub fn filter_lists_opaque(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8; 3]>], area: FilterArea) -> (Vec<u8>, Vec<u8>) {
+    filter_lists_as(scene, lists, colours, area, false)
+}
+
 /// [`filter_lists`] with front-to-back blending per subpixel ([`blend_subpixels`]): the frame's form
 /// when it has a transparent object (on opaque lists it gives the same bytes as the unblended form).
 pub fn filter_lists_blended(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8; 3]>], area: FilterArea) -> (Vec<u8>, Vec<u8>) {

@@ -5,6 +5,7 @@
 //! on the most negative value, so [`signed_bit_cast_safe`] replaces it; hdl_gen matches cast functions
 //! by name prefix, so it still emits `$signed(x)` in Verilog.
 
+pub mod add;
 pub mod div_step;
 pub mod fast_ram;
 pub mod leading_one;
@@ -12,6 +13,7 @@ pub mod merge_modules;
 pub mod mul;
 pub mod stream;
 
+pub use add::AddU;
 pub use div_step::DivStep;
 pub use fast_ram::FastRAM;
 pub use leading_one::LeadingOne36;

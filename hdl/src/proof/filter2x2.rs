@@ -7,7 +7,7 @@
 //! `golden::proof::cycle_filter2x2::Filter2x2Model`, which the bench compares every cycle.
 //!
 //! ```text
-//!          cfg_write cfg_sel cfg_addr cfg_data   (0: direction table, 1: background)
+//!          cfg_write cfg_sel cfg_addr cfg_data   (0: direction table, 1: background, 2: opacity table)
 //!              │
 //!            +─┴──────────────────────────────────────────────────────────────────────+
 //! upstream ─▶| F0..F4 (FilterFront) ─▶ Q5 quadrant ─▶ Q6 quadrant sums ─▶ Box2x2        |─▶ downstream
@@ -18,8 +18,10 @@
 //!            +────────────────────────────────────────────────────────────────────────+
 //! ```
 //!
-//! * **Q5**: per quadrant q the weight `w_q` (subpixels of q the entry owns) and `c_q` (subpixels of
-//!   q covered so far), from F4's visible and union masks ([`QuadrantPopcount`]).
+//! * **Q5**: per quadrant q the weight `w_q` (subpixels of q the entry owns: the front's quadrant
+//!   weight >> 8, exact for opaque entries; this area does not blend transparent ones yet, and the
+//!   backends refuse such frames with it) and `c_q` (subpixels of
+//!   q covered so far, from F4's union mask through a [`QuadrantPopcount`]).
 //! * **Q6**: `acc_qk = sum_qk + w_q c_k`, 12 multipliers of 5x8 bits; the pixel state `sum`
 //!   becomes `acc`, or 0 after the pixel's last slot. When Q6 holds a pixel's last slot, it is the
 //!   box's input word (entry sums without the background, and the coverage per quadrant): the box
@@ -65,7 +67,6 @@ pub struct Filter2x2Stage {
     // Registers and sub-blocks (pub: the bench compares them with the model).
     pub front: FilterFront,
     pub background: DFF<Bits<24>>,
-    pub pc_visible: QuadrantPopcount,
     pub pc_union: QuadrantPopcount,
     pub q5: DFF<FilterTag>,
     /// Per quadrant q: weight and coverage (Q5).
@@ -87,6 +88,7 @@ pub struct Filter2x2Stage {
     zero12: Constant<Bits<12>>,
     sel_dirs: Constant<Bits<4>>,
     sel_bg: Constant<Bits<4>>,
+    sel_alpha: Constant<Bits<4>>,
 }
 
 impl Filter2x2Stage {
@@ -106,7 +108,6 @@ impl Filter2x2Stage {
             downstream: Default::default(),
             front: FilterFront::new(obj_addr_bits)?,
             background: Default::default(),
-            pc_visible: Default::default(),
             pc_union: Default::default(),
             q5: Default::default(),
             q5_w: regs(4),
@@ -123,6 +124,7 @@ impl Filter2x2Stage {
             zero12: Constant::new(0u64.into()),
             sel_dirs: Constant::new(0u64.into()),
             sel_bg: Constant::new(1u64.into()),
+            sel_alpha: Constant::new(2u64.into()),
         })
     }
 }
@@ -156,8 +158,10 @@ impl Logic for Filter2x2Stage {
 
         // ---- Host writes: the direction table and the background colour.
         self.front.dir_write.next = self.cfg_write.val() & (self.cfg_sel.val() == self.sel_dirs.val());
-        self.front.dir_addr.next = self.cfg_addr.val();
+        self.front.cfg_addr.next = self.cfg_addr.val();
         self.front.dir_data.next = self.cfg_data.val();
+        self.front.alpha_write.next = self.cfg_write.val() & (self.cfg_sel.val() == self.sel_alpha.val());
+        self.front.alpha_data.next = self.cfg_data.val().get_bits::<5>(0);
         if self.cfg_write.val() & (self.cfg_sel.val() == self.sel_bg.val()) {
             self.background.d.next = self.cfg_data.val().get_bits::<24>(0);
         }
@@ -167,8 +171,9 @@ impl Logic for Filter2x2Stage {
         self.front.slot.next = self.upstream.data.val();
         self.front.slot_valid.next = self.upstream.valid.val();
 
-        // ---- Q5: quadrant weights and coverage.
-        self.pc_visible.x.next = self.front.visible.val();
+        // ---- Q5: quadrant weights in whole subpixels (the front's quadrant sums >> 8: exact for
+        // opaque entries, whose weights are 0 or 256 per subpixel; this area does not blend yet) and
+        // coverage.
         self.pc_union.x.next = self.front.union_mask.val();
 
         // ---- Q6: quadrant sums += w_q c.
@@ -208,10 +213,10 @@ impl Logic for Filter2x2Stage {
 
         if self.adv.val() {
             self.q5.d.next = self.front.tag.val();
-            self.q5_w[0].d.next = self.pc_visible.q0.val();
-            self.q5_w[1].d.next = self.pc_visible.q1.val();
-            self.q5_w[2].d.next = self.pc_visible.q2.val();
-            self.q5_w[3].d.next = self.pc_visible.q3.val();
+            self.q5_w[0].d.next = self.front.wq0.val().get_bits::<5>(8);
+            self.q5_w[1].d.next = self.front.wq1.val().get_bits::<5>(8);
+            self.q5_w[2].d.next = self.front.wq2.val().get_bits::<5>(8);
+            self.q5_w[3].d.next = self.front.wq3.val().get_bits::<5>(8);
             self.q5_c[0].d.next = self.pc_union.q0.val();
             self.q5_c[1].d.next = self.pc_union.q1.val();
             self.q5_c[2].d.next = self.pc_union.q2.val();

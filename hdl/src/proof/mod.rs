@@ -1,10 +1,11 @@
 //! PROOF's blocks (seed 002): the object processor and its FIFO, the object-processor pipeline, the
 //! shading stage (light-source processors, look-up table RAMs), the filter stage (edge masks by the tree
-//! of multiples, popcounts) with the 1x1 area and with the paper's 2x2 area (quadrant sums, a streaming
+//! of multiples, blending cells per subpixel, popcounts) with the 1x1 area and with the paper's 2x2 area (quadrant sums, a streaming
 //! box with a line buffer).
 //! Payload formats in [`types`]; cycle behaviour specified by `golden::proof::cycle_op` and
 //! `golden::proof::cycle_opp`, `cycle_shade`, `cycle_filter` and `cycle_filter2x2`.
 
+pub mod blend_cell;
 pub mod box2x2;
 pub mod edge_mask;
 pub mod filter;

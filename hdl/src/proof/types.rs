@@ -143,6 +143,8 @@ pub struct FilterTag {
     pub r: Bits<8>,
     pub g: Bits<8>,
     pub b: Bits<8>,
+    /// The entry's opacity, Q1.4 (0..=16), from the opacity table (from F1 on).
+    pub alpha: Bits<5>,
 }
 
 /// One anti-aliased pixel leaving the filter stage (one per object list).

@@ -81,7 +81,7 @@ fn filter2x2_stage_on_random_lists_with_entries_on_the_screen_border_matches_its
     let seed = rng.seed();
     println!("seed {seed} (SEED=n replays)");
     let (w, h) = (24u32, 12u32);
-    let r = random_lists(&mut rng, w, h);
+    let r = random_lists(&mut rng, w, h, false);
     let quads: Vec<[[u32; 3]; 4]> = r.owners.iter().map(|(o, c, t)| quadrant_sums(o, c, *t, r.bg)).collect();
     let rgb = box2(w, h, &quads);
     let cov: Vec<u8> = r.owners.iter().map(|(_, _, t)| t.count_ones() as u8).collect();

@@ -1,8 +1,9 @@
 //! Level 1 for PROOF's filter stage: the RustHDL `FilterStage` (direct drive) beside
 //! `golden::proof::cycle_filter::FilterModel`, same inputs every cycle; compared before every rising
 //! edge: `upstream.ready`, `downstream.valid`, `downstream.data` (when valid), the pixel states
-//! (`taken`, the colour sums), and every pipeline register's valid bit and, when valid, its contents
-//! (F0's slot, each edge's base/steps, tree rows and mask, the visible and union masks, the weights,
+//! (`taken`, each subpixel's `spent`, the colour and weight sums), and every pipeline register's
+//! valid bit and, when valid, its contents (F0's slot, the tables' outputs, each edge's base/steps,
+//! tree rows and mask, the opacity, the 64 subpixel weights and the union mask, the entry's weight,
 //! the sums). The first difference stops the run with the cycle, the port or register, both values
 //! and the VCD path.
 
@@ -42,8 +43,8 @@ pub fn pixel_to_rtl(p: &FilteredPixel) -> RtlPixel {
     }
 }
 
-/// (valid, x, y, last, has_entry, full, rgb) of a register's tag.
-type TagKey = (bool, u16, u16, bool, bool, bool, [u8; 3]);
+/// (valid, x, y, last, has_entry, full, rgb, alpha) of a register's tag.
+type TagKey = (bool, u16, u16, bool, bool, bool, [u8; 3], u8);
 
 fn tag_rtl(t: &FilterTag) -> TagKey {
     (
@@ -54,11 +55,12 @@ fn tag_rtl(t: &FilterTag) -> TagKey {
         t.has_entry,
         t.full,
         [t.r.to_u64() as u8, t.g.to_u64() as u8, t.b.to_u64() as u8],
+        t.alpha.to_u64() as u8,
     )
 }
 fn tag_model(t: &Tag) -> TagKey {
     let s = &t.slot;
-    (t.valid, s.x, s.y, s.last, s.has_entry, s.full, s.rgb)
+    (t.valid, s.x, s.y, s.last, s.has_entry, s.full, s.rgb, t.alpha)
 }
 
 fn f1_rtl(e: &EdgeMask) -> EdgeF1 {
@@ -72,7 +74,7 @@ fn f2_rtl(e: &EdgeMask) -> EdgeF2 {
     EdgeF2 { rows, sx: sext(e.sx2.q.val().to_u64(), 22) }
 }
 
-/// The front end's registers (F0..F4, `taken`, the direction table's output) against the model's:
+/// The front end's registers (F0..F4, `taken`, `spent`, the tables' outputs) against the model's:
 /// every valid bit and, when valid, the contents. Shared by the 1x1 and 2x2 benches.
 pub fn compare_front(u: &FilterFront, m: &FrontModel) -> Result<(), String> {
     let diff = |what: &str, r: String, e: String| -> Result<(), String> {
@@ -90,6 +92,7 @@ pub fn compare_front(u: &FilterFront, m: &FrontModel) -> Result<(), String> {
         let q = u.dir_table.read_data.val();
         let dq: [i16; 6] = [0, 1, 2, 3, 4, 5].map(|k| sext(q.get_bits::<16>(16 * k).to_u64(), 16) as i16);
         diff("direction table output", format!("{dq:?}"), format!("{:?}", m.dir_q))?;
+        diff("opacity table output", format!("{}", u.alpha_table.read_data.val().to_u64()), format!("{}", m.alpha_q))?;
     }
     let edges = [&u.e0, &u.e1, &u.e2];
     let tags = [(&u.f1, &m.f1.0, "F1"), (&u.f2, &m.f2.0, "F2"), (&u.f3, &m.f3.0, "F3"), (&u.f4, &m.f4.tag, "F4")];
@@ -108,12 +111,12 @@ pub fn compare_front(u: &FilterFront, m: &FrontModel) -> Result<(), String> {
         }
     }
     diff("taken", format!("{:#018x}", u.taken.q.val().to_u64()), format!("{:#018x}", m.taken))?;
+    let spent: Vec<u16> = u.cells.iter().map(|c| c.spent.q.val().to_u64() as u16).collect();
+    diff("spent", format!("{spent:?}"), format!("{:?}", m.spent))?;
     if m.f4.tag.valid {
-        diff(
-            "F4 visible/union",
-            format!("{:#018x}/{:#018x}", u.f4_visible.q.val().to_u64(), u.f4_union.q.val().to_u64()),
-            format!("{:#018x}/{:#018x}", m.f4.visible, m.f4.union),
-        )?;
+        let w: Vec<u16> = u.cells.iter().map(|c| c.f4_w.q.val().to_u64() as u16).collect();
+        diff("F4 weights", format!("{w:?}"), format!("{:?}", m.f4.w))?;
+        diff("F4 union", format!("{:#018x}", u.f4_union.q.val().to_u64()), format!("{:#018x}", m.f4.union))?;
     }
     Ok(())
 }
@@ -122,7 +125,7 @@ pub fn compare_front(u: &FilterFront, m: &FrontModel) -> Result<(), String> {
 pub fn check_tag(name: &str, r: &FilterTag, m: &Tag) -> Result<(), String> {
     let (kr, km) = (tag_rtl(r), tag_model(m));
     if kr.0 != km.0 || (km.0 && kr != km) {
-        return Err(format!("register {name} tag rtl {kr:?} model {km:?} (valid, x, y, last, has_entry, full, rgb)"));
+        return Err(format!("register {name} tag rtl {kr:?} model {km:?} (valid, x, y, last, has_entry, full, rgb, alpha)"));
     }
     Ok(())
 }
@@ -203,11 +206,15 @@ impl FilterBench {
             )?;
         }
         let sums = [u.sum_r.q.val().to_u64() as u32, u.sum_g.q.val().to_u64() as u32, u.sum_b.q.val().to_u64() as u32];
-        diff("sum", format!("{sums:?}"), format!("{:?}", m.sum))?;
+        diff("sum/wsum", format!("{sums:?}/{}", u.wsum.q.val().to_u64()), format!("{:?}/{}", m.sum, m.wsum))?;
         check_tag("F6", &u.f6.q.val(), &m.f6.tag).map_err(|e| self.fail(e))?;
         if m.f6.tag.valid {
             let acc = [u.f6_r.q.val().to_u64() as u32, u.f6_g.q.val().to_u64() as u32, u.f6_b.q.val().to_u64() as u32];
-            diff("F6 sums/covered", format!("{acc:?}/{}", u.f6_covered.q.val().to_u64()), format!("{:?}/{}", m.f6.acc, m.f6.covered))?;
+            diff(
+                "F6 sums/weight/covered",
+                format!("{acc:?}/{}/{}", u.f6_w.q.val().to_u64(), u.f6_covered.q.val().to_u64()),
+                format!("{:?}/{}/{}", m.f6.acc, m.f6.wacc, m.f6.covered),
+            )?;
         }
         Ok(())
     }
