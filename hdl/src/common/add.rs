@@ -1,6 +1,6 @@
 //! A widening adder as a leaf block: `s = a + b` with `s` wider than the operands, so that a tree of
-//! them can be wired in `for` loops (hdl_gen's `bit_cast` cannot take a loop variable's element, and a
-//! Local cannot accumulate across iterations). In Verilog each is `s = a + b`, where the operands are
+//! them can be wired in `for` loops (hdl_gen rejected `bit_cast` of an indexed element inside a `for`
+//! loop, "cannot find value `k`", and a Local cannot accumulate across iterations). In Verilog each is `s = a + b`, where the operands are
 //! extended to `s`'s width before the addition, so the carry is kept.
 
 use super::bits_from_u128;
