@@ -65,6 +65,11 @@ impl Watchdog {
     pub fn new(limit: u64) -> Watchdog {
         Watchdog { limit, last: 0 }
     }
+    /// A watchdog that counts from `cycle` (a run whose streaming starts after configuration writes:
+    /// those cycles are not a stall).
+    pub fn from_cycle(limit: u64, cycle: u64) -> Watchdog {
+        Watchdog { limit, last: cycle }
+    }
     /// Call once per cycle: `progress` says whether anything moved in `cycle`. The error says what
     /// stopped (`phase`) and names the waveform through `trace` when there is one.
     pub fn check(&mut self, cycle: u64, progress: bool, phase: impl FnOnce() -> String, trace: Option<&Trace>) -> Result<(), String> {

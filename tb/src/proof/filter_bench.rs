@@ -302,7 +302,7 @@ pub fn run_filter_top<B: super::StageTop<FilterIn, FilterOut>>(b: &mut B, cfg: &
     let start = b.cycles();
     let pixels = slots.iter().filter(|s| s.last).count();
     let mut i = 0usize;
-    let mut watchdog = Watchdog::new(super::bench::PROGRESS_LIMIT);
+    let mut watchdog = Watchdog::from_cycle(super::bench::PROGRESS_LIMIT, start);
     let mut outs = Vec::with_capacity(pixels);
     while outs.len() < pixels {
         let go = i < slots.len() && gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);

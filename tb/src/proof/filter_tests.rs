@@ -111,6 +111,22 @@ fn filter_stage_blends_glass_and_a_half_transparent_teapot_as_its_model_and_the_
     }
 }
 
+/// The configuration writes are not a stall: a table load longer than the watchdog's limit (two
+/// writes per object since the opacity table, so 5876 objects, the teapot's, already exceed it) is
+/// followed by the frame. Failed before the watchdog counted from the first slot: "no progress for
+/// 10000 cycles in the filter stage (0 of 1 pixels out ...)".
+#[test]
+fn a_filter_table_load_longer_than_the_watchdog_limit_is_not_a_stall() {
+    let n = super::bench::PROGRESS_LIMIT as usize / 2 + 100;
+    let dirs = vec![[(16384i16, 0i16); 3]; n];
+    let cfg = filter_config(&dirs, [1, 2, 3], 14).unwrap();
+    assert!(cfg.len() as u64 > super::bench::PROGRESS_LIMIT);
+    let slots = vec![ShadedSlot { x: 0, y: 0, last: true, has_entry: true, id: (n - 1) as u16, full: true, rgb: [200, 100, 50], ..Default::default() }];
+    let run = run_filter(14, &cfg, &slots, None, None, None).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(run.pixels.len(), 1);
+    assert_eq!(run.pixels[0].rgb, [200, 100, 50]);
+}
+
 /// A random frame for the filter benches: per pixel a list of up to 4 entries with distances and
 /// directions over the whole 16-bit range (saturated distances, non-unit directions), full entries,
 /// empty pixels, random colours, on a random background; every pixel of the screen's border too.

@@ -219,7 +219,7 @@ pub fn run_shade_top<B: super::StageTop<ShadeIn, ShadeOut>>(
         b.cycle(&ShadeIn { cfg: Some(*c), down_ready: true, ..Default::default() })?;
     }
     let mut i = 0usize;
-    let mut watchdog = Watchdog::new(super::bench::PROGRESS_LIMIT);
+    let mut watchdog = Watchdog::from_cycle(super::bench::PROGRESS_LIMIT, b.cycles());
     let mut outs = Vec::with_capacity(slots.len());
     while outs.len() < slots.len() {
         let go = i < slots.len() && gaps.map(|g| !rng.percent(g.source_gap_percent)).unwrap_or(true);
