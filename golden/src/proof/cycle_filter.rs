@@ -102,6 +102,14 @@ pub fn filter_config_alpha(dirs: &[[(i16, i16); 3]], alphas: &[u16], background:
     Ok(w)
 }
 
+/// A scene's filter configuration: every object's edge directions and opacity, and the background
+/// ([`filter_config_alpha`] of the scene's objects).
+pub fn scene_filter_config(scene: &super::setup::ProofScene, obj_addr_bits: u32) -> Result<Vec<CfgWrite>, String> {
+    let dirs: Vec<_> = (0..scene.objects.len()).map(|i| super::render::dirs_of(scene, i as u16)).collect();
+    let alphas: Vec<u16> = scene.objects.iter().map(|o| o.alpha).collect();
+    filter_config_alpha(&dirs, &alphas, scene.background, obj_addr_bits)
+}
+
 /// The constructor parameter both the model and the RTL accept.
 pub fn check_filter_params(obj_addr_bits: u32) -> Result<(), String> {
     if !(1..=16).contains(&obj_addr_bits) {
@@ -498,7 +506,7 @@ pub(crate) mod fixtures {
     use super::*;
     use crate::proof::cycle_opp::GapRng;
     use crate::proof::format::Entry;
-    use crate::proof::render::{dirs_of, object_lists};
+    use crate::proof::render::object_lists;
     use crate::proof::setup::{scene_setup, ProofScene};
     use crate::proof::shade::shade_entry;
     use crate::scene::Mesh;
@@ -523,9 +531,7 @@ pub(crate) mod fixtures {
         let colours: Vec<Vec<[u8; 3]>> =
             lists.iter().map(|l| l.iter().map(|e| shade_entry(&sc.lights, e.normal, sc.material[e.id as usize])).collect()).collect();
         let slots = shaded_slots(w, &lists, &colours);
-        let dirs: Vec<_> = (0..sc.objects.len()).map(|i| dirs_of(&sc, i as u16)).collect();
-        let alphas: Vec<u16> = sc.objects.iter().map(|o| o.alpha).collect();
-        let cfg = filter_config_alpha(&dirs, &alphas, sc.background, FIXTURE_BITS).unwrap();
+        let cfg = scene_filter_config(&sc, FIXTURE_BITS).unwrap();
         RealFrame { sc, lists, colours, slots, cfg }
     }
 

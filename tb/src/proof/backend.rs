@@ -11,9 +11,8 @@ use super::filter2x2_bench::run_filter2x2;
 use super::filter_bench::{run_filter, FilterRun};
 use super::shade_bench::run_shade;
 use golden::proof::cycle_opp::OppRun;
-use golden::proof::cycle_filter::filter_config_alpha;
+use golden::proof::cycle_filter::scene_filter_config;
 use golden::proof::cycle_shade::{shade_config, slots_of_lists, ShadedSlot};
-use golden::proof::render::dirs_of;
 use golden::proof::format::Entry;
 use golden::proof::setup::ProofScene;
 use std::path::Path;
@@ -74,9 +73,7 @@ pub fn filter2x2_rtl(scene: &ProofScene, slots: &[ShadedSlot], vcd: Option<&Path
 /// The configuration writes of the filter stage: the scene's edge directions, opacities and
 /// background.
 fn filter_cfg(scene: &ProofScene, bits: usize) -> Result<Vec<golden::proof::cycle_shade::CfgWrite>, String> {
-    let dirs: Vec<_> = (0..scene.objects.len()).map(|i| dirs_of(scene, i as u16)).collect();
-    let alphas: Vec<u16> = scene.objects.iter().map(|o| o.alpha).collect();
-    filter_config_alpha(&dirs, &alphas, scene.background, bits as u32)
+    scene_filter_config(scene, bits as u32)
 }
 
 /// The image and coverage of a filter run, checking that it is the whole frame in raster order.

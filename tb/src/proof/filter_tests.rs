@@ -4,7 +4,7 @@ use super::filter_bench::{filter_ports, run_filter, FilterRun};
 use super::shade_bench::StageGaps;
 use super::stage_tests::{scene, synth_without_latches};
 use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted, Rng};
-use golden::proof::cycle_filter::{filter_config, filter_config_alpha, shaded_slots};
+use golden::proof::cycle_filter::{filter_config, filter_config_alpha, scene_filter_config, shaded_slots};
 use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};
 use golden::proof::filter::{blend_subpixels, combine, combine_blended, visible_masks, FilterArea};
 use golden::proof::format::{Entry, ALPHA_ONE};
@@ -41,8 +41,7 @@ pub(super) fn scene_dirs(sc: &ProofScene) -> Vec<[(i16, i16); 3]> {
 
 /// A scene's filter configuration: directions, opacities and background.
 pub(super) fn scene_cfg(sc: &ProofScene, bits: u32) -> Vec<CfgWrite> {
-    let alphas: Vec<u16> = sc.objects.iter().map(|o| o.alpha).collect();
-    filter_config_alpha(&scene_dirs(sc), &alphas, sc.background, bits).unwrap()
+    scene_filter_config(sc, bits).unwrap()
 }
 
 /// `glass` (panes of several opacities over each other) or the teapot with every material at
