@@ -46,13 +46,6 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     }
     let t0 = std::time::Instant::now();
     let scene = scene_setup(mesh, opts)?;
-    if args.backend != BackendArg::Golden && area == FilterArea::Box2 && scene.stats.transparent_objects > 0 {
-        // Before any output: the RTL 2x2 filter does not blend yet (issue 22); the 1x1 filter does.
-        return Err(format!(
-            "{}: {} of {} objects are transparent, and PROOF's RTL 2x2 filter does not blend yet: use --filter 1x1, --backend golden, or --opacity 1",
-            mesh.name, scene.stats.transparent_objects, scene.stats.objects
-        ));
-    }
     let od = crate::output::OutputDir::begin(&args.out)?;
     let needed = ops_needed(scene.screen, &scene.objects) as usize;
     let n_ops = args.ops.unwrap_or(needed.max(1));

@@ -19,12 +19,17 @@
 //!
 //! Back end after the front's F4 (every register loads when `adv = !(Q6 holds a last slot) ||
 //! box_up_ready`, a global stall; `up_ready = adv`):
-//! * Q5: per quadrant q the weight `w_q` = F4's quadrant weight >> 8, the subpixels of q the entry
-//!   owns (exact when every object is opaque; this area does not blend transparent objects yet, and
-//!   the backends refuse such frames with it) and the coverage `c_q` = covered subpixels in q (the
-//!   popcounts of F4's union mask);
-//! * Q6: `acc_qk = sum_qk + w_q c_k` per quadrant and channel; the pixel state `sum` becomes `acc`,
-//!   or 0 after the pixel's last slot. Q6 holding a valid last slot *is* the box's input word.
+//! * Q5: per quadrant q the weight `w_q` = F4's quadrant weight, the sum of the entry's blend
+//!   weights over the quadrant's 16 subpixels in 1/256 (0..=4096; 256 per owned subpixel when the
+//!   entry is opaque), and the coverage `c_q` = covered subpixels in q (the popcounts of F4's union
+//!   mask);
+//! * Q6: `acc_qk = sum_qk + w_q c_k` per quadrant and channel and `wacc_q = wsum_q + w_q` (the
+//!   pixel state `sum`, `wsum` becomes `acc`, `wacc`, or 0 after the pixel's last slot). Q6 holds the
+//!   word `(acc_qk + (256 c_q - wacc_q) bg_k + 128) >> 8`: the quadrant's blended sum with the
+//!   background's share in its covered subpixels (their remaining transmittance), rounded to whole
+//!   units, which is `filter::quadrant_sums_blended` less the `(16 - c_q) bg_k` of its uncovered
+//!   subpixels (the box adds those). For an opaque list `wacc_q = 256 c_q` and the word is the
+//!   unblended `Σ owned x colour`. Q6 holding a valid last slot *is* the box's input word.
 //!
 //! The box (register A, H, the line buffer's read register, V, OUT; same stall rule with
 //! `adv = !out_valid || down_ready`, `up_ready = adv && !flushing`):
@@ -286,15 +291,15 @@ impl BoxModel {
     }
 }
 
-/// Q5: per quadrant the owned subpixels (weights) and the covered ones.
+/// Q5: per quadrant the entry's weight (1/256 subpixels) and the covered subpixels.
 #[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
 pub struct QuadWeightReg {
     pub tag: Tag,
-    pub w: [u8; 4],
+    pub w: [u16; 4],
     pub cov: [u8; 4],
 }
 
-/// Q6: the pixel's quadrant sums including this entry.
+/// Q6: the pixel's quadrant words including this entry (module doc).
 #[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
 pub struct QuadSumReg {
     pub tag: Tag,
@@ -324,8 +329,9 @@ pub struct Filter2x2Model {
     pub front: FilterFront,
     pub background: [u8; 3],
     pub q5: QuadWeightReg,
-    /// Pixel state: quadrant sums of the entries so far.
-    pub qsum: [[u16; 3]; 4],
+    /// Pixel state: quadrant sums of the entries so far (weight x colour, 1/256) and their weights.
+    pub qsum: [[u32; 3]; 4],
+    pub wsum: [u16; 4],
     pub q6: QuadSumReg,
     pub boxm: BoxModel,
 }
@@ -338,6 +344,7 @@ impl Filter2x2Model {
             background: [0; 3],
             q5: QuadWeightReg::default(),
             qsum: [[0; 3]; 4],
+            wsum: [0; 4],
             q6: QuadSumReg::default(),
             boxm: BoxModel::new(width, height)?,
         })
@@ -366,17 +373,21 @@ impl Filter2x2Model {
             // Q6: multiply-add into the pixel's quadrant sums.
             let q5 = self.q5;
             let c = q5.tag.slot.rgb;
-            let acc = [0, 1, 2, 3].map(|q| [0, 1, 2].map(|k| self.qsum[q][k] + q5.w[q] as u16 * c[k] as u16));
-            self.q6 = QuadSumReg { tag: q5.tag, acc, cov: q5.cov };
+            let acc = [0, 1, 2, 3].map(|q| [0, 1, 2].map(|k| self.qsum[q][k] + q5.w[q] as u32 * c[k] as u32));
+            let wacc = [0, 1, 2, 3].map(|q| self.wsum[q] + q5.w[q]);
+            // The background's weight in the covered subpixels (13 bits as in the RTL; never
+            // negative: each covered subpixel's weights sum to at most 256).
+            let rem = [0, 1, 2, 3].map(|q| ((q5.cov[q] as u32) << 8).wrapping_sub(wacc[q] as u32) & 0x1fff);
+            let bg = self.background;
+            let word = [0, 1, 2, 3].map(|q| [0, 1, 2].map(|k| (((acc[q][k] + rem[q] * bg[k] as u32 + 128) >> 8) & 0xfff) as u16));
+            self.q6 = QuadSumReg { tag: q5.tag, acc: word, cov: q5.cov };
             if q5.tag.valid {
-                self.qsum = if q5.tag.slot.last { [[0; 3]; 4] } else { acc };
+                (self.qsum, self.wsum) = if q5.tag.slot.last { ([[0; 3]; 4], [0; 4]) } else { (acc, wacc) };
             }
-            // Q5: F4's quadrant weights in whole subpixels (exact for opaque entries, whose weights
-            // are 0 or 256 per subpixel: the 2x2 area does not blend yet) and the quadrant popcounts
-            // of its union mask.
+            // Q5: F4's quadrant weights (1/256 subpixels) and the quadrant popcounts of its union mask.
             let f4 = self.front.f4;
             let ones = |m: u64| [0, 1, 2, 3].map(|q| (m & quadrant_mask(q)).count_ones() as u8);
-            let wq = f4.quadrant_weights().map(|w| (w >> 8) as u8);
+            let wq = f4.quadrant_weights().map(|w| w as u16);
             self.q5 = QuadWeightReg { tag: f4.tag, w: wq, cov: ones(f4.union) };
             self.front.advance(inp.up_valid, &inp.up_data);
         }
@@ -507,6 +518,31 @@ mod tests {
             let (px, cycles) = super::super::cycle_filter::filter_slots(&mut m, &cfg, &slots, 4000).unwrap();
             assert_eq!(px.len(), (w * h) as usize);
             assert_eq!(cycles, filter2x2_frame_cycles(slots.len(), w), "{}: {} slots", mesh.name, slots.len());
+        }
+    }
+
+    #[test]
+    fn the_2x2_cycle_model_blends_transparent_lists_as_the_algorithmic_2x2_filter_with_gaps() {
+        let mut half = builtin::teapot(2);
+        for m in half.materials.iter_mut() {
+            m.opacity = 0.5;
+        }
+        for (mesh, w, h) in [(builtin::glass(), 64, 40), (half, 48, 30)] {
+            let RealFrame { sc, lists, colours, slots, cfg } = real_frame(&mesh, w, h);
+            assert!(sc.objects.iter().any(|o| o.alpha < crate::proof::format::ALPHA_ONE), "{}: the frame should have transparent objects", mesh.name);
+            let (want_rgb, want_cov) = filter_lists(&sc, &lists, &colours, FilterArea::Box2);
+            // The same lists taken as opaque give another image: the blend is exercised.
+            let (opaque_rgb, _) = crate::proof::render::filter_lists_opaque(&sc, &lists, &colours, FilterArea::Box2);
+            assert_ne!(want_rgb, opaque_rgb, "{}", mesh.name);
+            for (seed, gin, gout) in [(2u64, 0u64, 0u64), (5, 30, 30)] {
+                let mut m = Filter2x2Model::new(FIXTURE_BITS, w, h).unwrap();
+                let out = run_with_gaps(&mut m, &cfg, &slots, seed, gin, gout);
+                assert_eq!(out.len(), (w * h) as usize);
+                for (p, o) in out.iter().enumerate() {
+                    assert_eq!(o.rgb[..], want_rgb[3 * p..3 * p + 3], "{} pixel {p} seed {seed}", mesh.name);
+                    assert_eq!(o.covered, want_cov[p], "{} pixel {p} covered", mesh.name);
+                }
+            }
         }
     }
 

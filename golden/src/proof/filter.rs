@@ -25,7 +25,11 @@
 //! Filter area: [`FilterArea::Box1`] averages the pixel's 64 subpixels; [`FilterArea::Box2`] is the
 //! paper's 2x2 area: a 2x2-pixel box centred on the pixel centre (its own 64 subpixels, half of each
 //! edge neighbour's and a quarter of each corner neighbour's; pixels beyond the screen edge repeat the
-//! edge pixel), computed from per-quadrant sums of 4x4 subpixels.
+//! edge pixel), computed from per-quadrant sums of 4x4 subpixels. Blended, each quadrant's sum of
+//! its 16 composited subpixels (in 1/256) is rounded to whole units before the box
+//! ([`quadrant_sums_blended`]), so the hardware's box and line buffer keep their opaque widths; the
+//! box then adds 16 such sums, so this rounding moves a pixel by at most 16 x 0.5 / 256 of a unit
+//! before the box's own rounding.
 
 use super::format::{Entry, ALPHA_FRAC, ALPHA_ONE, SUBPIXELS};
 
@@ -166,7 +170,10 @@ pub fn combine_blended(acc: &[[u32; 3]; 64]) -> [u8; 3] {
     [0, 1, 2].map(|k| ((acc.iter().map(|a| a[k]).sum::<u32>() + (1 << 13)) >> 14) as u8)
 }
 
-/// Per-quadrant sums of blended subpixels, in 1/256 (for [`box2_q`] with shift 16).
+/// Per-quadrant sums of blended subpixels (background included), rounded to whole units:
+/// `(Σ_{i in q} acc_i + 128) >> 8`, so that the 2x2 box ([`box2`]) takes the same 12-bit quadrant
+/// sums as for opaque lists. This rounding is the 2x2 area's one simplification of the blend (module
+/// doc); on opaque lists every subpixel's value is a multiple of 256 and the sums are exact.
 pub fn quadrant_sums_blended(acc: &[[u32; 3]; 64]) -> [[u32; 3]; 4] {
     let mut out = [[0u32; 3]; 4];
     for (i, a) in acc.iter().enumerate() {
@@ -175,11 +182,12 @@ pub fn quadrant_sums_blended(acc: &[[u32; 3]; 64]) -> [[u32; 3]; 4] {
             out[q][k] += a[k];
         }
     }
-    out
+    out.map(|q| q.map(|v| (v + 128) >> 8))
 }
 
 /// The same compositing in f64 with the unquantised opacities: the reference that the fixed-point
-/// form's error is measured against (the same subpixel masks; colours as given).
+/// form's error is measured against (the same subpixel masks; colours as given). The pixel's mean of
+/// [`blend_reference_subpixels`].
 pub fn blend_reference(
     list: &[Entry],
     dirs: &dyn Fn(u16) -> [(i16, i16); 3],
@@ -187,33 +195,40 @@ pub fn blend_reference(
     colours: &[[u8; 3]],
     bg: [u8; 3],
 ) -> [f64; 3] {
-    let mut out = [0f64; 3];
+    let sub = blend_reference_subpixels(list, dirs, opacity, colours, bg);
+    [0, 1, 2].map(|k| sub.iter().map(|s| s[k]).sum::<f64>() / 64.0)
+}
+
+/// The f64 composite of each of the 64 subpixels (bit order of [`subpixel_mask`]).
+pub fn blend_reference_subpixels(
+    list: &[Entry],
+    dirs: &dyn Fn(u16) -> [(i16, i16); 3],
+    opacity: &dyn Fn(u16) -> f64,
+    colours: &[[u8; 3]],
+    bg: [u8; 3],
+) -> [[f64; 3]; 64] {
+    let mut out = [[0f64; 3]; 64];
     let masks: Vec<u64> = list.iter().map(|e| subpixel_mask(e, &dirs(e.id))).collect();
-    for i in 0..64 {
+    for (i, o) in out.iter_mut().enumerate() {
         let mut t = 1.0f64;
         for ((e, c), m) in list.iter().zip(colours).zip(&masks) {
             if m >> i & 1 == 1 {
                 let a = opacity(e.id);
                 for k in 0..3 {
-                    out[k] += t * a * c[k] as f64;
+                    o[k] += t * a * c[k] as f64;
                 }
                 t *= 1.0 - a;
             }
         }
         for k in 0..3 {
-            out[k] += t * bg[k] as f64;
+            o[k] += t * bg[k] as f64;
         }
     }
-    out.map(|v| v / 64.0)
+    out
 }
 
 /// The 2x2 filter over a whole image of quadrant sums (row-major pixels).
 pub fn box2(width: u32, height: u32, quads: &[[[u32; 3]; 4]]) -> Vec<u8> {
-    box2_q(width, height, quads, 8)
-}
-
-/// [`box2`] for quadrant sums with `shift - 8` more fraction bits (16 for blended sums).
-pub fn box2_q(width: u32, height: u32, quads: &[[[u32; 3]; 4]], shift: u32) -> Vec<u8> {
     let (w, h) = (width as i64, height as i64);
     let at = |qx: i64, qy: i64, k: usize| -> u32 {
         // Quadrant coordinates; beyond the screen, the edge pixel's nearest quadrant repeats.
@@ -231,7 +246,7 @@ pub fn box2_q(width: u32, height: u32, quads: &[[[u32; 3]; 4]], shift: u32) -> V
                         s += at(qx, qy, k) as u64;
                     }
                 }
-                out.push(((s + (1 << (shift - 1))) >> shift) as u8);
+                out.push(((s + 128) >> 8) as u8);
             }
         }
     }

@@ -8,7 +8,7 @@
 //! 3. Shading stage: one colour per list entry ([`shade_entry`]).
 //! 4. Filter stage: subpixel masks and weighted colours ([`super::filter`]).
 
-use super::filter::{blend_subpixels, box2_q, combine, combine_blended, quadrant_sums, quadrant_sums_blended, visible_masks, FilterArea};
+use super::filter::{blend_subpixels, box2, combine, combine_blended, quadrant_sums, quadrant_sums_blended, visible_masks, FilterArea};
 use super::format::{Entry, ObjectParams, ALPHA_ONE};
 use super::setup::{scene_setup, ProofScene, SetupStats};
 use super::shade::shade_entry;
@@ -122,8 +122,8 @@ pub fn filter_lists_blended(scene: &ProofScene, lists: &[Vec<Entry>], colours: &
     filter_lists_as(scene, lists, colours, area, true)
 }
 
-/// The filter stage, unblended (subpixels to their nearest entry) or blended; the 2x2 area's quadrant
-/// sums carry 8 more fraction bits when blended.
+/// The filter stage, unblended (subpixels to their nearest entry) or blended; the 2x2 area's blended
+/// quadrant sums are rounded to whole units ([`quadrant_sums_blended`]).
 fn filter_lists_as(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8; 3]>], area: FilterArea, blended: bool) -> (Vec<u8>, Vec<u8>) {
     let s = scene.screen;
     let dirs = |id: u16| dirs_of(scene, id);
@@ -151,7 +151,7 @@ fn filter_lists_as(scene: &ProofScene, lists: &[Vec<Entry>], colours: &[Vec<[u8;
         covered.push(taken.count_ones() as u8);
     }
     if area == FilterArea::Box2 {
-        rgb = box2_q(s.width, s.height, &quads, if blended { 16 } else { 8 });
+        rgb = box2(s.width, s.height, &quads);
     }
     (rgb, covered)
 }

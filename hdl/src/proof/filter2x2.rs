@@ -18,14 +18,19 @@
 //!            +────────────────────────────────────────────────────────────────────────+
 //! ```
 //!
-//! * **Q5**: per quadrant q the weight `w_q` (subpixels of q the entry owns: the front's quadrant
-//!   weight >> 8, exact for opaque entries; this area does not blend transparent ones yet, and the
-//!   backends refuse such frames with it) and `c_q` (subpixels of
-//!   q covered so far, from F4's union mask through a [`QuadrantPopcount`]).
-//! * **Q6**: `acc_qk = sum_qk + w_q c_k`, 12 multipliers of 5x8 bits; the pixel state `sum`
-//!   becomes `acc`, or 0 after the pixel's last slot. When Q6 holds a pixel's last slot, it is the
-//!   box's input word (entry sums without the background, and the coverage per quadrant): the box
-//!   adds the background once per box, `(256 - covered) bg`, instead of 12 multipliers per pixel.
+//! * **Q5**: per quadrant q the weight `w_q` (the front's quadrant weight: the entry's blend weights
+//!   over the quadrant's 16 subpixels, in 1/256, 0..=4096; 256 per owned subpixel for an opaque
+//!   entry) and `c_q` (subpixels of q covered so far, from F4's union mask through a
+//!   [`QuadrantPopcount`]).
+//! * **Q6**: `acc_qk = sum_qk + w_q c_k` (12 multipliers of 13x8 bits) and `wacc_q = wsum_q + w_q`;
+//!   the pixel state `sum`, `wsum` becomes `acc`, `wacc`, or 0 after the pixel's last slot. The Q6
+//!   register holds the word `(acc_qk + (256 c_q - wacc_q) bg_k + 128) >> 8` (12 more 13x8
+//!   multipliers): the quadrant's blended colour sum with the background's share in its covered
+//!   subpixels (their remaining transmittance), rounded to whole units, 12 bits as for opaque lists
+//!   (`golden::proof::filter::quadrant_sums_blended`). For an opaque list `wacc_q = 256 c_q` and the
+//!   word is exactly the unblended `Σ owned x colour`. When Q6 holds a pixel's last slot, it is the
+//!   box's input word: the box adds the background of the uncovered subpixels once per box,
+//!   `(256 - covered) bg`, instead of per pixel.
 //!
 //! Cycle behaviour: the front, Q5 and Q6 load when `adv = !(Q6 valid and last) | box.upstream.ready`
 //! (a global stall, `upstream.ready = adv`, combinational as in the 1x1 stage); the box has its own
@@ -35,10 +40,11 @@
 //! flushes the last row (W clocks, input held off).
 //!
 //! **Why a separate top and not a mode port.** The 2x2 area costs a line buffer of W words of 112
-//! bits and 12 quadrant multipliers that a 1x1 build does not need, and the line buffer's size fixes
+//! bits and 24 quadrant multipliers that a 1x1 build does not need, and the line buffer's size fixes
 //! the screen width at synthesis; so the area is chosen when the FPGA is built, as the screen size is
 //! for the `rc` top: `proof_filter` is the 1x1 stage, `proof_filter2x2` this one for 320x200.
 
+use super::background_share::BackgroundShare;
 use super::box2x2::Box2x2;
 use super::filter_front::FilterFront;
 use super::quadrant_popcount::QuadrantPopcount;
@@ -69,23 +75,32 @@ pub struct Filter2x2Stage {
     pub background: DFF<Bits<24>>,
     pub pc_union: QuadrantPopcount,
     pub q5: DFF<FilterTag>,
-    /// Per quadrant q: weight and coverage (Q5).
-    pub q5_w: Vec<DFF<Bits<5>>>,
+    /// Per quadrant q: weight (1/256 subpixels) and coverage (Q5).
+    pub q5_w: Vec<DFF<Bits<13>>>,
     pub q5_c: Vec<DFF<Bits<5>>>,
-    /// Pixel state: per quadrant q and channel k, index 3 q + k, the entries' colour sums so far.
-    pub qsum: Vec<DFF<Bits<12>>>,
+    /// Pixel state: per quadrant q and channel k, index 3 q + k, the entries' weight x colour sums
+    /// so far (1/256), and per quadrant their weights.
+    pub qsum: Vec<DFF<Bits<20>>>,
+    pub wsum: Vec<DFF<Bits<13>>>,
     pub q6: DFF<FilterTag>,
-    /// Q6: the sums including this entry (index 3 q + k) and the coverage per quadrant.
+    /// Q6: the words including this entry (index 3 q + k) and the coverage per quadrant.
     pub q6_acc: Vec<DFF<Bits<12>>>,
     pub q6_c: Vec<DFF<Bits<5>>>,
     pub box2: Box2x2,
-    // Weights times colours, index 3 q + k.
-    wc: Vec<MulU<5, 8, 12>>,
+    // Weights times colours, and the background's weights times the background, index 3 q + k.
+    wc: Vec<MulU<13, 8, 20>>,
+    bgm: Vec<BackgroundShare>,
 
     adv: Signal<Local, Bit>,
     col: Vec<Signal<Local, Bits<8>>>,
-    acc: Vec<Signal<Local, Bits<12>>>,
-    zero12: Constant<Bits<12>>,
+    bgc: Vec<Signal<Local, Bits<8>>>,
+    acc: Vec<Signal<Local, Bits<20>>>,
+    wacc: Vec<Signal<Local, Bits<13>>>,
+    word20: Vec<Signal<Local, Bits<20>>>,
+    word_sh: Vec<Signal<Local, Bits<20>>>,
+    zero20: Constant<Bits<20>>,
+    zero13: Constant<Bits<13>>,
+    half20: Constant<Bits<20>>,
     sel_dirs: Constant<Bits<4>>,
     sel_bg: Constant<Bits<4>>,
     sel_alpha: Constant<Bits<4>>,
@@ -113,15 +128,23 @@ impl Filter2x2Stage {
             q5_w: regs(4),
             q5_c: regs(4),
             qsum: regs(12),
+            wsum: regs(4),
             q6: Default::default(),
             q6_acc: regs(12),
             q6_c: regs(4),
             box2: Box2x2::new(width, height)?,
             wc: (0..12).map(|_| MulU::default()).collect(),
+            bgm: (0..12).map(|_| BackgroundShare::default()).collect(),
             adv: Default::default(),
             col: (0..3).map(|_| Signal::default()).collect(),
+            bgc: (0..3).map(|_| Signal::default()).collect(),
             acc: (0..12).map(|_| Signal::default()).collect(),
-            zero12: Constant::new(0u64.into()),
+            wacc: (0..4).map(|_| Signal::default()).collect(),
+            word20: (0..12).map(|_| Signal::default()).collect(),
+            word_sh: (0..12).map(|_| Signal::default()).collect(),
+            zero20: Constant::new(0u64.into()),
+            zero13: Constant::new(0u64.into()),
+            half20: Constant::new(128u64.into()),
             sel_dirs: Constant::new(0u64.into()),
             sel_bg: Constant::new(1u64.into()),
             sel_alpha: Constant::new(2u64.into()),
@@ -140,6 +163,8 @@ impl Logic for Filter2x2Stage {
             self.q5_c[q].d.next = self.q5_c[q].q.val();
             self.q6_c[q].clock.next = self.clock.val();
             self.q6_c[q].d.next = self.q6_c[q].q.val();
+            self.wsum[q].clock.next = self.clock.val();
+            self.wsum[q].d.next = self.wsum[q].q.val();
         }
         for i in 0..12 {
             self.qsum[i].clock.next = self.clock.val();
@@ -171,20 +196,29 @@ impl Logic for Filter2x2Stage {
         self.front.slot.next = self.upstream.data.val();
         self.front.slot_valid.next = self.upstream.valid.val();
 
-        // ---- Q5: quadrant weights in whole subpixels (the front's quadrant sums >> 8: exact for
-        // opaque entries, whose weights are 0 or 256 per subpixel; this area does not blend yet) and
-        // coverage.
+        // ---- Q5: quadrant weights (1/256 subpixels) and coverage.
         self.pc_union.x.next = self.front.union_mask.val();
 
-        // ---- Q6: quadrant sums += w_q c.
+        // ---- Q6: quadrant sums += w_q c, weights += w_q; the word adds the background's share in
+        // the covered subpixels, (256 c_q - wacc_q) bg, and rounds to whole units.
         self.col[0].next = self.q5.q.val().r;
         self.col[1].next = self.q5.q.val().g;
         self.col[2].next = self.q5.q.val().b;
+        self.bgc[0].next = self.background.q.val().get_bits::<8>(0);
+        self.bgc[1].next = self.background.q.val().get_bits::<8>(8);
+        self.bgc[2].next = self.background.q.val().get_bits::<8>(16);
         for q in 0..4 {
+            self.wacc[q].next = self.wsum[q].q.val() + self.q5_w[q].q.val();
             for k in 0..3 {
                 self.wc[3 * q + k].a.next = self.q5_w[q].q.val();
                 self.wc[3 * q + k].b.next = self.col[k].val();
                 self.acc[3 * q + k].next = self.qsum[3 * q + k].q.val() + self.wc[3 * q + k].p.val();
+                self.bgm[3 * q + k].cov.next = self.q5_c[q].q.val();
+                self.bgm[3 * q + k].wsum.next = self.wsum[q].q.val();
+                self.bgm[3 * q + k].w.next = self.q5_w[q].q.val();
+                self.bgm[3 * q + k].bg.next = self.bgc[k].val();
+                self.word20[3 * q + k].next = self.acc[3 * q + k].val() + self.bgm[3 * q + k].p.val() + self.half20.val();
+                self.word_sh[3 * q + k].next = self.word20[3 * q + k].val() >> 8;
             }
         }
 
@@ -213,10 +247,10 @@ impl Logic for Filter2x2Stage {
 
         if self.adv.val() {
             self.q5.d.next = self.front.tag.val();
-            self.q5_w[0].d.next = self.front.wq0.val().get_bits::<5>(8);
-            self.q5_w[1].d.next = self.front.wq1.val().get_bits::<5>(8);
-            self.q5_w[2].d.next = self.front.wq2.val().get_bits::<5>(8);
-            self.q5_w[3].d.next = self.front.wq3.val().get_bits::<5>(8);
+            self.q5_w[0].d.next = self.front.wq0.val();
+            self.q5_w[1].d.next = self.front.wq1.val();
+            self.q5_w[2].d.next = self.front.wq2.val();
+            self.q5_w[3].d.next = self.front.wq3.val();
             self.q5_c[0].d.next = self.pc_union.q0.val();
             self.q5_c[1].d.next = self.pc_union.q1.val();
             self.q5_c[2].d.next = self.pc_union.q2.val();
@@ -224,13 +258,19 @@ impl Logic for Filter2x2Stage {
             self.q6.d.next = self.q5.q.val();
             for q in 0..4 {
                 self.q6_c[q].d.next = self.q5_c[q].q.val();
+                if self.q5.q.val().valid {
+                    self.wsum[q].d.next = self.wacc[q].val();
+                    if self.q5.q.val().last {
+                        self.wsum[q].d.next = self.zero13.val();
+                    }
+                }
             }
             for i in 0..12 {
-                self.q6_acc[i].d.next = self.acc[i].val();
+                self.q6_acc[i].d.next = self.word_sh[i].val().get_bits::<12>(0);
                 if self.q5.q.val().valid {
                     self.qsum[i].d.next = self.acc[i].val();
                     if self.q5.q.val().last {
-                        self.qsum[i].d.next = self.zero12.val();
+                        self.qsum[i].d.next = self.zero20.val();
                     }
                 }
             }

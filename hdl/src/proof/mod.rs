@@ -5,6 +5,7 @@
 //! Payload formats in [`types`]; cycle behaviour specified by `golden::proof::cycle_op` and
 //! `golden::proof::cycle_opp`, `cycle_shade`, `cycle_filter` and `cycle_filter2x2`.
 
+pub mod background_share;
 pub mod blend_cell;
 pub mod box2x2;
 pub mod edge_mask;

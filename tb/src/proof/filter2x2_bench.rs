@@ -150,21 +150,23 @@ impl Filter2x2Bench {
         compare_front(&u.front, &m.front)?;
         check_tag("Q5", &u.q5.q.val(), &m.q5.tag)?;
         if m.q5.tag.valid {
-            let w = [0, 1, 2, 3].map(|q| u.q5_w[q].q.val().to_u64() as u8);
+            let w = [0, 1, 2, 3].map(|q| u.q5_w[q].q.val().to_u64() as u16);
             let c = [0, 1, 2, 3].map(|q| u.q5_c[q].q.val().to_u64() as u8);
             if (w, c) != (m.q5.w, m.q5.cov) {
                 return Err(format!("register Q5 weights/coverage rtl {w:?}/{c:?} model {:?}/{:?}", m.q5.w, m.q5.cov));
             }
         }
-        let sums = |v: &Vec<DFF<Bits<12>>>| [0, 1, 2, 3].map(|q| [0, 1, 2].map(|k| v[3 * q + k].q.val().to_u64() as u16));
-        if sums(&u.qsum) != m.qsum {
-            return Err(format!("quadrant sums (pixel state) rtl {:?} model {:?}", sums(&u.qsum), m.qsum));
+        let state = [0, 1, 2, 3].map(|q| [0, 1, 2].map(|k| u.qsum[3 * q + k].q.val().to_u64() as u32));
+        let wstate = [0, 1, 2, 3].map(|q| u.wsum[q].q.val().to_u64() as u16);
+        if (state, wstate) != (m.qsum, m.wsum) {
+            return Err(format!("quadrant sums/weights (pixel state) rtl {state:?}/{wstate:?} model {:?}/{:?}", m.qsum, m.wsum));
         }
+        let sums = |v: &Vec<DFF<Bits<12>>>| [0, 1, 2, 3].map(|q| [0, 1, 2].map(|k| v[3 * q + k].q.val().to_u64() as u16));
         check_tag("Q6", &u.q6.q.val(), &m.q6.tag)?;
         if m.q6.tag.valid {
             let c = [0, 1, 2, 3].map(|q| u.q6_c[q].q.val().to_u64() as u8);
             if (sums(&u.q6_acc), c) != (m.q6.acc, m.q6.cov) {
-                return Err(format!("register Q6 sums/coverage rtl {:?}/{c:?} model {:?}/{:?}", sums(&u.q6_acc), m.q6.acc, m.q6.cov));
+                return Err(format!("register Q6 words/coverage rtl {:?}/{c:?} model {:?}/{:?}", sums(&u.q6_acc), m.q6.acc, m.q6.cov));
             }
         }
         compare_box(&u.box2, &m.boxm)

@@ -3,15 +3,17 @@
 
 use super::filter2x2_bench::{box_ports, run_box, run_filter2x2};
 use super::filter_bench::{filter_ports, FilterRun};
-use super::filter_tests::{check_image, lint_clean, random_lists, scene_dirs, scene_slots};
+use super::filter_tests::{check_image, lint_clean, random_lists, scene_cfg, scene_dirs, scene_slots, transparent_scene};
 use super::shade_bench::StageGaps;
 use super::stage_tests::{scene, synth_without_latches};
 use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted, Rng};
-use golden::proof::cycle_filter::{filter_config, FilteredPixel};
+use golden::proof::cycle_filter::{filter_config, filter_config_alpha, FilteredPixel};
 use golden::proof::cycle_filter2x2::{box2_of_quads, random_quads, QuadPixel};
 use golden::proof::cycle_opp::GapRng;
 use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};
-use golden::proof::filter::{box2, quadrant_sums, FilterArea};
+use golden::proof::filter::{blend_subpixels, box2, quadrant_sums, quadrant_sums_blended, FilterArea};
+use golden::proof::format::ALPHA_ONE;
+use golden::proof::render::object_lists;
 
 /// Run the 2x2 stage bench; on a failure rerun it with a waveform and panic with the report.
 #[allow(clippy::too_many_arguments)]
@@ -93,6 +95,56 @@ fn filter2x2_stage_on_random_lists_with_entries_on_the_screen_border_matches_its
     assert!(border_covered > 20, "the stimulus should cover the border ({border_covered} border pixels covered)");
 }
 
+/// Transparency through the 2x2 area: `glass` and the teapot at opacity 0.5, the RTL against the model
+/// in every cycle (the 13-bit quadrant weights, the 20-bit pixel sums and the background's share in
+/// the word included), the pixels against the golden blended 2x2 filter; the same lists taken as
+/// opaque give other pixels (the blend is exercised).
+#[test]
+fn filter2x2_stage_blends_glass_and_a_half_transparent_teapot_as_its_model_and_the_golden_2x2_filter_with_random_gaps() {
+    let mut rng = Rng::new(0x2a1fa);
+    let seed = rng.seed();
+    println!("seed {seed} (SEED=n replays)");
+    for (name, w, h) in [("glass", 40, 25), ("teapot", 40, 25)] {
+        let sc = transparent_scene(name, w, h);
+        let (slots, rgb, cov) = scene_slots(&sc, FilterArea::Box2);
+        let lists = object_lists(sc.screen, &sc.objects);
+        let layered = lists.iter().filter(|l| l.iter().filter(|e| sc.objects[e.id as usize].alpha < ALPHA_ONE).count() >= 2).count();
+        assert!(layered > 20, "{name}: pixels with two transparent entries or more: {layered}");
+        let gaps = StageGaps { seed: rng.next_u64(), source_gap_percent: 20, sink_gap_percent: 30 };
+        let run = filter2x2_or_panic("filter2x2_blend_every_cycle", seed, 11, w, h, &scene_cfg(&sc, 11), &slots, gaps);
+        println!("{name} {w}x{h}: {} slots, {} pixels, {layered} with two transparent entries or more, {} cycles", slots.len(), run.pixels.len(), run.cycles);
+        check_image(name, w, &run, &rgb, &cov);
+        let opaque = filter2x2_or_panic("filter2x2_blend_as_opaque", seed, 11, w, h, &filter_config(&scene_dirs(&sc), sc.background, 11).unwrap(), &slots, gaps);
+        assert!(opaque.pixels.iter().zip(&run.pixels).any(|(a, b)| a.rgb != b.rgb), "{name}: opacities should change the picture");
+    }
+}
+
+/// Random lists with random opacities (0 and 15/16 often) on every pixel, the border included: the
+/// RTL against the model every cycle, the pixels against golden `blend_subpixels`,
+/// `quadrant_sums_blended` and `box2`.
+#[test]
+fn filter2x2_stage_on_random_lists_with_random_opacities_matches_its_model_and_the_golden_blend() {
+    let mut rng = Rng::new(0x2a1fb);
+    let seed = rng.seed();
+    println!("seed {seed} (SEED=n replays)");
+    let (w, h) = (24u32, 12u32);
+    let r = random_lists(&mut rng, w, h, true);
+    let dirs = |id: u16| r.dirs[id as usize];
+    let alpha = |id: u16| r.alphas[id as usize];
+    let mut quads = Vec::new();
+    let mut cov = Vec::new();
+    for (l, c) in &r.lists {
+        let (acc, taken) = blend_subpixels(l, &dirs, &alpha, c, r.bg);
+        quads.push(quadrant_sums_blended(&acc));
+        cov.push(taken.count_ones() as u8);
+    }
+    let rgb = box2(w, h, &quads);
+    let cfg = filter_config_alpha(&r.dirs, &r.alphas, r.bg, 6).unwrap();
+    let gaps = StageGaps { seed: rng.next_u64(), source_gap_percent: 30, sink_gap_percent: 40 };
+    let run = filter2x2_or_panic("filter2x2_random_opacities_every_cycle", seed, 6, w, h, &cfg, &r.slots, gaps);
+    check_image("random lists, random opacities, 2x2", w, &run, &rgb, &cov);
+}
+
 /// The box alone on random quadrant sums with the extremes (empty and fully covered quadrants, 255 per
 /// covered subpixel, black and white backgrounds), on screens down to 2x1 where every pixel is at an
 /// edge, two frames back to back so that the flush must leave the box ready for the next frame.
@@ -123,11 +175,11 @@ fn filter2x2_verilog_replays_the_recorded_vectors_lints_clean_and_synthesizes_wi
         return;
     }
     let dir = scratch_dir("proof_filter2x2_replay");
-    // The whole stage on a real frame.
+    // The whole stage on a real frame with transparency (the teapot at opacity 0.5).
     let (w, h) = (24, 16);
-    let sc = scene("teapot", 2, w, h);
+    let sc = transparent_scene("teapot", w, h);
     let (slots, rgb, cov) = scene_slots(&sc, FilterArea::Box2);
-    let cfg = filter_config(&scene_dirs(&sc), sc.background, 8).unwrap();
+    let cfg = scene_cfg(&sc, 8);
     let gaps = StageGaps { seed: 79, source_gap_percent: 25, sink_gap_percent: 25 };
     let run = run_filter2x2(8, w, h, &cfg, &slots, Some(gaps), None, Some(dir.join("filter2x2_vectors.txt"))).unwrap();
     check_image("replay stimulus", w, &run, &rgb, &cov);
