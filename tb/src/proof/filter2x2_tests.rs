@@ -11,7 +11,7 @@ use golden::proof::cycle_filter::{filter_config, filter_config_alpha, FilteredPi
 use golden::proof::cycle_filter2x2::{box2_of_quads, random_quads, QuadPixel};
 use golden::proof::cycle_opp::GapRng;
 use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};
-use golden::proof::filter::{blend_subpixels, box2, quadrant_sums, quadrant_sums_blended, FilterArea};
+use golden::proof::filter::{box2, quadrant_sums, quadrant_sums_blended, FilterArea};
 use golden::proof::format::ALPHA_ONE;
 use golden::proof::render::object_lists;
 
@@ -129,15 +129,9 @@ fn filter2x2_stage_on_random_lists_with_random_opacities_matches_its_model_and_t
     println!("seed {seed} (SEED=n replays)");
     let (w, h) = (24u32, 12u32);
     let r = random_lists(&mut rng, w, h, true);
-    let dirs = |id: u16| r.dirs[id as usize];
-    let alpha = |id: u16| r.alphas[id as usize];
-    let mut quads = Vec::new();
-    let mut cov = Vec::new();
-    for (l, c) in &r.lists {
-        let (acc, taken) = blend_subpixels(l, &dirs, &alpha, c, r.bg);
-        quads.push(quadrant_sums_blended(&acc));
-        cov.push(taken.count_ones() as u8);
-    }
+    let blended = r.blended();
+    let quads: Vec<[[u32; 3]; 4]> = blended.iter().map(|(acc, _)| quadrant_sums_blended(acc)).collect();
+    let cov: Vec<u8> = blended.iter().map(|(_, taken)| taken.count_ones() as u8).collect();
     let rgb = box2(w, h, &quads);
     let cfg = filter_config_alpha(&r.dirs, &r.alphas, r.bg, 6).unwrap();
     let gaps = StageGaps { seed: rng.next_u64(), source_gap_percent: 30, sink_gap_percent: 40 };

@@ -141,6 +141,15 @@ pub(super) struct RandomLists {
     pub owners: Vec<(Vec<u64>, Vec<[u8; 3]>, u64)>,
 }
 
+impl RandomLists {
+    /// Per pixel (raster order): the golden blend's 64 composited subpixels and the covered mask.
+    pub fn blended(&self) -> Vec<([[u32; 3]; 64], u64)> {
+        let dirs = |id: u16| self.dirs[id as usize];
+        let alpha = |id: u16| self.alphas[id as usize];
+        self.lists.iter().map(|(l, c)| blend_subpixels(l, &dirs, &alpha, c, self.bg)).collect()
+    }
+}
+
 pub(super) fn random_lists(rng: &mut Rng, w: u32, h: u32, transparent: bool) -> RandomLists {
     let extremes = [i16::MIN, i16::MAX, 0, 16384, -16384, 11585, -11585, 1, -1];
     let r16 = |rng: &mut Rng| if rng.chance(15) { extremes[rng.below(extremes.len() as u64) as usize] } else { rng.next_u64() as u16 as i16 };
@@ -207,15 +216,9 @@ fn filter_stage_on_random_lists_with_random_opacities_matches_its_model_and_the_
     println!("seed {seed} (SEED=n replays)");
     let (w, h) = (24u32, 12u32);
     let r = random_lists(&mut rng, w, h, true);
-    let dirs = |id: u16| r.dirs[id as usize];
-    let alpha = |id: u16| r.alphas[id as usize];
-    let mut rgb = Vec::new();
-    let mut cov = Vec::new();
-    for (l, c) in &r.lists {
-        let (acc, taken) = blend_subpixels(l, &dirs, &alpha, c, r.bg);
-        rgb.extend_from_slice(&combine_blended(&acc));
-        cov.push(taken.count_ones() as u8);
-    }
+    let blended = r.blended();
+    let rgb: Vec<u8> = blended.iter().flat_map(|(acc, _)| combine_blended(acc)).collect();
+    let cov: Vec<u8> = blended.iter().map(|(_, taken)| taken.count_ones() as u8).collect();
     let cfg = filter_config_alpha(&r.dirs, &r.alphas, r.bg, 6).unwrap();
     let gaps = StageGaps { seed: rng.next_u64(), source_gap_percent: 30, sink_gap_percent: 40 };
     let run = filter_or_panic("filter_random_opacities_every_cycle", seed, 6, &cfg, &r.slots, gaps);
