@@ -3,7 +3,7 @@
 //! fixed-point blend's error against an f64 composite of the same subpixel masks.
 
 use golden::format::Screen;
-use golden::proof::filter::{blend_reference, blend_reference_subpixels, blend_subpixels, combine_blended, subpixel_mask, FilterArea};
+use golden::proof::filter::{blend_reference, blend_reference_subpixels, blend_subpixels, combine_blended, quadrant_of, subpixel_mask, FilterArea};
 use golden::proof::format::{alpha_q, Coverage, ALPHA_ONE};
 use golden::proof::render::{dirs_of, filter_lists, filter_lists_blended, object_lists, render_scene};
 use golden::proof::setup::{scene_setup, ProofScene};
@@ -155,7 +155,7 @@ fn the_2x2_blend_with_rounded_quadrant_sums_is_within_one_lsb_of_an_f64_2x2_box(
                 let mut q = [[0f64; 3]; 4];
                 for (i, s) in sub.iter().enumerate() {
                     for k in 0..3 {
-                        q[2 * (i / 32) + (i % 8) / 4][k] += s[k];
+                        q[quadrant_of(i)][k] += s[k];
                     }
                 }
                 q

@@ -179,7 +179,7 @@ impl VisReg {
     pub fn quadrant_weights(&self) -> [u32; 4] {
         let mut q = [0u32; 4];
         for (i, &w) in self.w.iter().enumerate() {
-            q[2 * (i / 32) + (i % 8) / 4] += w as u32;
+            q[super::filter::quadrant_of(i)] += w as u32;
         }
         q
     }

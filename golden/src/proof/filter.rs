@@ -170,6 +170,11 @@ pub fn combine_blended(acc: &[[u32; 3]; 64]) -> [u8; 3] {
     [0, 1, 2].map(|k| ((acc.iter().map(|a| a[k]).sum::<u32>() + (1 << 13)) >> 14) as u8)
 }
 
+/// The quadrant (`q = 2 qy + qx`, 4x4 subpixels each) of subpixel bit `i = 8 j + i`.
+pub fn quadrant_of(i: usize) -> usize {
+    2 * (i / 32) + (i % 8) / 4
+}
+
 /// Per-quadrant sums of blended subpixels (background included), rounded to whole units:
 /// `(Σ_{i in q} acc_i + 128) >> 8`, so that the 2x2 box ([`box2`]) takes the same 12-bit quadrant
 /// sums as for opaque lists. This rounding is the 2x2 area's one simplification of the blend (module
@@ -177,9 +182,8 @@ pub fn combine_blended(acc: &[[u32; 3]; 64]) -> [u8; 3] {
 pub fn quadrant_sums_blended(acc: &[[u32; 3]; 64]) -> [[u32; 3]; 4] {
     let mut out = [[0u32; 3]; 4];
     for (i, a) in acc.iter().enumerate() {
-        let q = 2 * (i / 32) + (i % 8) / 4;
         for k in 0..3 {
-            out[q][k] += a[k];
+            out[quadrant_of(i)][k] += a[k];
         }
     }
     out.map(|q| q.map(|v| (v + 128) >> 8))

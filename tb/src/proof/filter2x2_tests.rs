@@ -3,7 +3,7 @@
 
 use super::filter2x2_bench::{box_ports, run_box, run_filter2x2};
 use super::filter_bench::{filter_ports, FilterRun};
-use super::filter_tests::{check_image, lint_clean, random_lists, scene_cfg, scene_dirs, scene_slots, transparent_scene};
+use super::filter_tests::{check_image, layered_pixels, lint_clean, random_lists, scene_cfg, scene_dirs, scene_slots, transparent_scene};
 use super::shade_bench::StageGaps;
 use super::stage_tests::{scene, synth_without_latches};
 use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted, Rng};
@@ -12,8 +12,6 @@ use golden::proof::cycle_filter2x2::{box2_of_quads, random_quads, QuadPixel};
 use golden::proof::cycle_opp::GapRng;
 use golden::proof::cycle_shade::{CfgWrite, ShadedSlot};
 use golden::proof::filter::{box2, quadrant_sums, quadrant_sums_blended, FilterArea};
-use golden::proof::format::ALPHA_ONE;
-use golden::proof::render::object_lists;
 
 /// Run the 2x2 stage bench; on a failure rerun it with a waveform and panic with the report.
 #[allow(clippy::too_many_arguments)]
@@ -107,8 +105,7 @@ fn filter2x2_stage_blends_glass_and_a_half_transparent_teapot_as_its_model_and_t
     for (name, w, h) in [("glass", 40, 25), ("teapot", 40, 25)] {
         let sc = transparent_scene(name, w, h);
         let (slots, rgb, cov) = scene_slots(&sc, FilterArea::Box2);
-        let lists = object_lists(sc.screen, &sc.objects);
-        let layered = lists.iter().filter(|l| l.iter().filter(|e| sc.objects[e.id as usize].alpha < ALPHA_ONE).count() >= 2).count();
+        let layered = layered_pixels(&sc);
         assert!(layered > 20, "{name}: pixels with two transparent entries or more: {layered}");
         let gaps = StageGaps { seed: rng.next_u64(), source_gap_percent: 20, sink_gap_percent: 30 };
         let run = filter2x2_or_panic("filter2x2_blend_every_cycle", seed, 11, w, h, &scene_cfg(&sc, 11), &slots, gaps);

@@ -59,6 +59,12 @@ pub(super) fn transparent_scene(name: &str, w: u32, h: u32) -> ProofScene {
     sc
 }
 
+/// Pixels of `sc` whose list holds two transparent entries or more (the stimulus must have many).
+pub(super) fn layered_pixels(sc: &ProofScene) -> usize {
+    let lists = object_lists(sc.screen, &sc.objects);
+    lists.iter().filter(|l| l.iter().filter(|e| sc.objects[e.id as usize].alpha < ALPHA_ONE).count() >= 2).count()
+}
+
 pub(super) fn check_image(what: &str, w: u32, run: &FilterRun, rgb: &[u8], cov: &[u8]) {
     assert_eq!(run.pixels.len(), cov.len(), "{what}: pixel count");
     for (p, o) in run.pixels.iter().enumerate() {
@@ -98,8 +104,7 @@ fn filter_stage_blends_glass_and_a_half_transparent_teapot_as_its_model_and_the_
     for (name, w, h) in [("glass", 40, 25), ("teapot", 40, 25)] {
         let sc = transparent_scene(name, w, h);
         let (slots, rgb, cov) = scene_slots(&sc, FilterArea::Box1);
-        let lists = object_lists(sc.screen, &sc.objects);
-        let layered = lists.iter().filter(|l| l.iter().filter(|e| sc.objects[e.id as usize].alpha < ALPHA_ONE).count() >= 2).count();
+        let layered = layered_pixels(&sc);
         assert!(layered > 20, "{name}: pixels with two transparent entries or more: {layered}");
         let gaps = StageGaps { seed: rng.next_u64(), source_gap_percent: 20, sink_gap_percent: 30 };
         let run = filter_or_panic("filter_blend_every_cycle", seed, 11, &scene_cfg(&sc, 11), &slots, gaps);
