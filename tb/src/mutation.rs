@@ -164,8 +164,8 @@ fn opp_target(dir: &Path) -> Result<Target, String> {
 pub enum Outcome {
     /// A port differed (the first mismatch), or the run did not end.
     Killed(String),
-    /// Proven equivalent to the original netlist.
-    Equivalent,
+    /// Proven equivalent to the original netlist, over the mutated module or over the whole top.
+    Equivalent(Scope),
     /// Passed the replay and not proven equivalent (Yosys's last words).
     Surviving(String),
     /// The mutant could not be built or run (a tool error, not a verdict).
@@ -176,7 +176,7 @@ impl Outcome {
     pub fn name(&self) -> &'static str {
         match self {
             Outcome::Killed(_) => "killed",
-            Outcome::Equivalent => "equivalent",
+            Outcome::Equivalent(_) => "equivalent",
             Outcome::Surviving(_) => "surviving",
             Outcome::Error(_) => "error",
         }
@@ -185,7 +185,9 @@ impl Outcome {
     pub fn detail(&self) -> &str {
         match self {
             Outcome::Killed(d) | Outcome::Surviving(d) | Outcome::Error(d) => d,
-            Outcome::Equivalent => "",
+            Outcome::Equivalent(Scope::Dead) => "the mutated cell reaches no port of the flattened top",
+            Outcome::Equivalent(Scope::Module) => "equiv_induct proves every equivalence of the mutated module",
+            Outcome::Equivalent(Scope::Top) => "equiv_induct proves every equivalence of the whole top, flattened",
         }
     }
 }
@@ -239,20 +241,80 @@ pub fn write_mutants(cmds: &[String], dir: &Path) -> Result<(), String> {
     Ok(())
 }
 
-/// Is the mutant `cmd` equivalent to the original? The mutated module alone (with its submodules
-/// flattened in, memories mapped to registers) against the same module unmutated: `equiv_make`,
-/// `equiv_simple -seq 4`, `equiv_induct -seq 4`, `equiv_status -assert`, within [`EQUIV_SECONDS`] (wall time). Equivalence of
-/// the module implies equivalence of the top; a failure may still be equivalent in the top's context
-/// (an input the module never receives there), so it counts as surviving, not as proven different.
-/// The wall-time limit of one equivalence check.
+/// The wall-time limit of the equivalence check over the mutated module.
 pub const EQUIV_SECONDS: u32 = 60;
+/// The wall-time limit of the equivalence check over the whole flattened top (colour setup's takes
+/// about 40 s on the 2-core VM).
+pub const TOP_EQUIV_SECONDS: u32 = 600;
 
-pub fn equivalent(cmd: &str, dir: &Path, i: usize) -> Result<(), String> {
+/// Where an equivalence was proven.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Scope {
+    /// The mutated cell drives nothing that reaches a port of the top: the flattened top without it
+    /// is the same circuit (any mutation of it, a clock's included).
+    Dead,
+    /// The mutated module alone, from any register values: equivalent in every context.
+    Module,
+    /// The whole top, flattened, from its initial values: the mutation cannot reach a port.
+    Top,
+}
+
+/// Is the mutant `cmd` equivalent to the original? First the mutated module alone, then the whole
+/// top. Each side is the module (or top) with its submodules flattened in and memories mapped to
+/// registers; Yosys's `equiv_make` pairs every signal of the same name, `equiv_simple -seq 4` and
+/// `equiv_induct -seq 4` prove the pairs, and `equiv_status -assert` demands that every pair be proven,
+/// within [`EQUIV_SECONDS`] (module) or [`TOP_EQUIV_SECONDS`] (top) of wall time.
+///
+/// `equiv_simple` proves a pair assuming the pairs in its input cone, so a single unproven pair leaves
+/// the others conditional: only "every pair proven" is a proof (an induction over all pairs together,
+/// whose base is the common initial state). A mutation inside a register's own module can never be
+/// proven there (the register's output differs by construction); over the top it is proven when the
+/// changed bit is never read, or never differs, in any reachable state that the pairs describe.
+/// Returns the scope of the proof, or the last failure.
+pub fn equivalent(cmd: &str, top: &str, dir: &Path, i: usize) -> Result<Scope, String> {
+    if cell_is_dead_in_top(cmd, top, dir, i)? {
+        return Ok(Scope::Dead);
+    }
     if touches_a_clock(cmd) {
         return Err(CLOCK_UNDECIDED.into());
     }
     let module = cmd.split_whitespace().skip_while(|w| *w != "-module").nth(1).ok_or(format!("no -module in '{cmd}'"))?;
-    let prepare = |name: &str| format!("hierarchy -top {module}\nflatten\nmemory_map\nopt_clean\nrename {module} {name}\ndesign -stash {name}\n");
+    let module_result = prove_equivalent(cmd, module, dir, &format!("equiv_{i}.ys"), EQUIV_SECONDS);
+    if module_result.is_ok() {
+        return Ok(Scope::Module);
+    }
+    if module == top {
+        return module_result.map(|_| Scope::Module);
+    }
+    prove_equivalent(cmd, top, dir, &format!("equiv_top_{i}.ys"), TOP_EQUIV_SECONDS).map(|_| Scope::Top)
+}
+
+/// Is the cell that `cmd` mutates removed when the unmutated top is flattened and everything that
+/// reaches no port is cleaned away (`splitnets`, `opt_clean -purge`)? A mutation changes only that
+/// cell's connections, so it cannot change a port then. The cell is marked with an attribute before
+/// flattening, as rust-hdl's module names do not spell the instance path unambiguously.
+pub fn cell_is_dead_in_top(cmd: &str, top: &str, dir: &Path, i: usize) -> Result<bool, String> {
+    let arg = |flag: &str| cmd.split_whitespace().skip_while(|w| *w != flag).nth(1).ok_or(format!("no {flag} in '{cmd}'"));
+    let (module, cell) = (arg("-module")?, arg("-cell")?);
+    let file = format!("dead_{i}.ys");
+    // The count before `hierarchy` checks that the names match; `hierarchy` drops a module that the
+    // top no longer instantiates (Yosys's `prep` removes an instance whose outputs nothing reads).
+    let ys = format!(
+        "read_rtlil orig.il\nsetattr -set mutation_target 1 {module}/{cell}\nselect -assert-count 1 a:mutation_target\n\
+         hierarchy -top {top}\nflatten\nmemory_map\nsplitnets\nopt_clean -purge\nselect -assert-none a:mutation_target\n"
+    );
+    std::fs::write(dir.join(&file), ys).map_err(|e| e.to_string())?;
+    match run(Command::new("timeout").current_dir(dir).args([TOP_EQUIV_SECONDS.to_string().as_str(), "yosys", "-q", "-s", &file]), "yosys dead-cell check") {
+        Ok(_) => Ok(true),
+        Err(e) if e.contains("Assertion failed: selection is not empty") => Ok(false),
+        Err(e) => Err(e),
+    }
+}
+
+/// `equiv_make`, `equiv_simple -seq 4`, `equiv_induct -seq 4`, `equiv_status -assert` of `module`
+/// (flattened) with and without the mutation `cmd`, on `orig.il` in `dir`, in at most `seconds`.
+fn prove_equivalent(cmd: &str, module: &str, dir: &Path, file: &str, seconds: u32) -> Result<(), String> {
+    let prepare = |name: &str| format!("hierarchy -top {module}\nflatten\nmemory_map\nsplitnets\nopt_clean -purge\nrename {module} {name}\ndesign -stash {name}\n");
     let ys = format!(
         "read_rtlil orig.il\ndesign -save orig\n{cmd}\n{}design -load orig\n{}\
          design -copy-from gold -as gold gold\ndesign -copy-from gate -as gate gate\n\
@@ -260,9 +322,8 @@ pub fn equivalent(cmd: &str, dir: &Path, i: usize) -> Result<(), String> {
         prepare("gate"),
         prepare("gold")
     );
-    let file = format!("equiv_{i}.ys");
-    std::fs::write(dir.join(&file), ys).map_err(|e| e.to_string())?;
-    run(Command::new("timeout").current_dir(dir).args([EQUIV_SECONDS.to_string().as_str(), "yosys", "-q", "-s", &file]), "yosys equiv").map(|_| ())
+    std::fs::write(dir.join(file), ys).map_err(|e| e.to_string())?;
+    run(Command::new("timeout").current_dir(dir).args([seconds.to_string().as_str(), "yosys", "-q", "-s", file]), "yosys equiv").map(|_| ())
 }
 
 /// Why a clock mutation is never called equivalent: Yosys's SAT model of a flip-flop steps it every
@@ -287,9 +348,9 @@ pub fn judge(t: &Target, cmd: &str, dir: &Path, i: usize, prove: bool) -> Outcom
         Err(e) if KILLED.iter().any(|k| e.contains(k)) => Outcome::Killed(first_line_about_the_failure(&e)),
         Err(e) => Outcome::Error(e.lines().take(3).collect::<Vec<_>>().join(" / ")),
         Ok(()) if !prove => Outcome::Surviving(EQUIVALENCE_NOT_TRIED.into()),
-        Ok(()) => match equivalent(cmd, dir, i) {
-            Ok(()) => Outcome::Equivalent,
-            Err(e) if e.contains("exit status: 124") => Outcome::Surviving(format!("equivalence not proven within {EQUIV_SECONDS} s")),
+        Ok(()) => match equivalent(cmd, t.top, dir, i) {
+            Ok(scope) => Outcome::Equivalent(scope),
+            Err(e) if e.contains("exit status: 124") => Outcome::Surviving(format!("equivalence not proven within {TOP_EQUIV_SECONDS} s (whole top)")),
             Err(e) => Outcome::Surviving(e.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("").trim().to_string()),
         },
     }
@@ -313,7 +374,55 @@ fn first_line_about_the_failure(e: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::touches_a_clock;
+    use super::{equivalent, run, touches_a_clock, Scope, CLOCK_UNDECIDED};
+    use crate::common::{require_tools, workspace_target};
+    use std::process::Command;
+
+    /// A top whose register module `held` keeps 8 bits of which the top reads only the low 4, and
+    /// whose register `idle` only holds its own value, as a stage register that no stage uses.
+    const TINY: &str = "module held(input wire clock, input wire [7:0] d, output reg [7:0] q);
+    initial q = 8'h0;
+    always @(posedge clock) q <= d;
+endmodule
+module idle(input wire clock, input wire [7:0] d, output reg [7:0] q);
+    initial q = 8'h0;
+    always @(posedge clock) q <= d;
+endmodule
+module tiny(input wire clock, input wire [7:0] a, output wire [3:0] y);
+    wire [7:0] q, s;
+    held r(.clock(clock), .d(a), .q(q));
+    idle k(.clock(clock), .d(s), .q(s));
+    assign y = q[3:0];
+endmodule
+";
+
+    #[test]
+    fn a_bit_the_top_never_reads_is_proven_equivalent_over_the_top_and_a_bit_it_reads_is_not() {
+        if !require_tools("a_bit_the_top_never_reads_is_proven_equivalent_over_the_top_and_a_bit_it_reads_is_not", &["yosys", "timeout"]) {
+            return;
+        }
+        let dir = workspace_target().join("mutation-test");
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("tiny.v"), TINY).unwrap();
+        run(Command::new("yosys").current_dir(&dir).args(["-q", "-p", "read_verilog tiny.v; prep -top tiny; write_rtlil orig.il; mutate -list 1000 -seed 1 -o m.ys"]), "yosys").unwrap();
+        let list = std::fs::read_to_string(dir.join("m.ys")).unwrap();
+        // Forcing the register's output bit 6 (never read) or bit 2 (read) to a constant.
+        let find = |mode: &str, module: &str, port: &str| {
+            list.lines()
+                .find(|l| l.starts_with(&format!("mutate -mode {mode} -module {module} ")) && l.contains(&format!(" -port {port} ")))
+                .unwrap_or_else(|| panic!("yosys drew no {mode} mutation of {module}'s port {port}:\n{list}"))
+                .to_string()
+        };
+        // Forcing the register's output bit 6 (never read) or bit 2 (read) to a constant.
+        let pick = |bit: &str| find("const1", "held", &format!("Q -portbit {bit}"));
+        assert_eq!(equivalent(&pick("6"), "tiny", &dir, 0), Ok(Scope::Top), "bit 6 of held.q never reaches a port of tiny");
+        let live = equivalent(&pick("2"), "tiny", &dir, 1);
+        assert!(live.as_ref().is_err_and(|e| e.contains("unproven")), "bit 2 of held.q is the port y[2], yet: {live:?}");
+        // A clock mutation: decided only where the register reaches no port.
+        assert_eq!(equivalent(&find("inv", "idle", "CLK"), "tiny", &dir, 2), Ok(Scope::Dead));
+        assert_eq!(equivalent(&find("inv", "held", "CLK"), "tiny", &dir, 3), Err(CLOCK_UNDECIDED.to_string()));
+    }
 
     #[test]
     fn mutations_of_a_clock_are_recognised_and_others_are_not() {

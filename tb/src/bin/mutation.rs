@@ -85,7 +85,7 @@ fn run() -> Result<(), String> {
                 }
                 let i = judged[k];
                 let o = judge(&t, &cmds[i], &dir, i, prove);
-                let detail = if o == Outcome::Equivalent { "equiv_induct proves every equivalence" } else { o.detail() };
+                let detail = o.detail();
                 println!("{top} mutant {i:4}: {:10} {} | {detail}", o.name(), short(&cmds[i]));
                 if !matches!(o, Outcome::Killed(_)) {
                     let _ = std::fs::remove_dir_all(dir.join(format!("run_{i}")));
