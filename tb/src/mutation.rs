@@ -289,6 +289,9 @@ pub fn equivalent(cmd: &str, top: &str, dir: &Path, i: usize) -> Result<Scope, S
     prove_equivalent(cmd, top, dir, &format!("equiv_top_{i}.ys"), TOP_EQUIV_SECONDS).map(|_| Scope::Top)
 }
 
+/// Yosys's selection of the marked cell if it is a primitive cell.
+const PRIMITIVE: &str = "a:mutation_target t:$* %i";
+
 /// Is the cell that `cmd` mutates removed when the unmutated top is flattened and everything that
 /// reaches no port is cleaned away (`splitnets`, `opt_clean -purge`: wires split into bits, so that a
 /// cell read only through unread bits goes too)? A mutation changes only that
@@ -298,16 +301,19 @@ pub fn cell_is_dead_in_top(cmd: &str, top: &str, dir: &Path, i: usize) -> Result
     let arg = |flag: &str| cmd.split_whitespace().skip_while(|w| *w != flag).nth(1).ok_or(format!("no {flag} in '{cmd}'"));
     let (module, cell) = (arg("-module")?, arg("-cell")?);
     let file = format!("dead_{i}.ys");
-    // The count before `hierarchy` checks that the names match; `hierarchy` drops a module that the
-    // top no longer instantiates (Yosys's `prep` removes an instance whose outputs nothing reads).
+    // The first count checks that the names match. The second, that the cell is a primitive (`$...`):
+    // an instance of a module disappears in `flatten` whether its contents are used or not (a rule
+    // without it called 6 killed colour-setup mutants dead). `hierarchy` drops a module that the top
+    // no longer instantiates (Yosys's `prep` removes an instance whose outputs nothing reads).
     let ys = format!(
         "read_rtlil orig.il\nsetattr -set mutation_target 1 {module}/{cell}\nselect -assert-count 1 a:mutation_target\n\
-         hierarchy -top {top}\nflatten\nmemory_map\nsplitnets\nopt_clean -purge\nselect -assert-none a:mutation_target\n"
+         select -assert-count 1 {PRIMITIVE}\nhierarchy -top {top}\nflatten\nmemory_map\nsplitnets\nopt_clean -purge\nselect -assert-none a:mutation_target\n"
     );
     std::fs::write(dir.join(&file), ys).map_err(|e| e.to_string())?;
     match run(Command::new("timeout").current_dir(dir).args([TOP_EQUIV_SECONDS.to_string().as_str(), "yosys", "-q", "-s", &file]), "yosys dead-cell check") {
         Ok(_) => Ok(true),
         Err(e) if e.contains("Assertion failed: selection is not empty") => Ok(false),
+        Err(e) if e.contains(&format!("instead of the asserted 1: {PRIMITIVE}")) => Ok(false),
         Err(e) => Err(e),
     }
 }
@@ -420,6 +426,9 @@ endmodule
         assert_eq!(equivalent(&pick("const0"), "tiny", &dir, 0), Ok(Scope::Top), "held.q[6] is always 0 in tiny");
         let live = equivalent(&pick("const1"), "tiny", &dir, 1);
         assert!(live.as_ref().is_err_and(|e| e.contains("unproven")), "held.q[6] forced to 1 is y[6] = 1, yet: {live:?}");
+        // An instance of a live module is not dead, though `flatten` removes the instance cell.
+        let instance = list.lines().find(|l| l.starts_with("mutate -mode inv -module tiny -cell r ")).unwrap_or_else(|| panic!("no mutation of the instance r:\n{list}"));
+        assert!(equivalent(instance, "tiny", &dir, 4).is_err(), "{instance}");
         // A clock mutation: decided only where the register reaches no port.
         assert_eq!(equivalent(&find("inv", "idle", "CLK"), "tiny", &dir, 2), Ok(Scope::Dead));
         assert_eq!(equivalent(&find("inv", "held", "CLK"), "tiny", &dir, 3), Err(CLOCK_UNDECIDED.to_string()));
