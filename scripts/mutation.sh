@@ -3,7 +3,8 @@
 #   bash scripts/mutation.sh TOP N [--seed S] [--jobs J] [--only I,J,...] [--replay-only]     TOP: rc, rc3, colour_setup, cs, opp
 # Yosys draws N mutations of the top's netlist; each mutant is replayed under Icarus on the recorded
 # stimulus and the cycle model's expected outputs (killed when any port differs in any cycle); a
-# survivor is tried for equivalence with Yosys's equiv_* passes. One line per mutant; the counts and
+# survivor is tried for equivalence (its cell dead in the flattened top, else Yosys's equiv_* passes over
+# the mutated module, then over the whole top). One line per mutant; the counts and
 # every mutant in target/mutation/TOP.json. See docs/verification.md, "Mutation cover".
 set -euo pipefail
 cd "$(dirname "$0")/.."
