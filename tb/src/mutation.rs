@@ -278,11 +278,16 @@ pub fn equivalent(cmd: &str, top: &str, dir: &Path, i: usize) -> Result<Scope, S
     if touches_a_clock(cmd) {
         return Err(CLOCK_UNDECIDED.into());
     }
-    let module = cmd.split_whitespace().skip_while(|w| *w != "-module").nth(1).ok_or(format!("no -module in '{cmd}'"))?;
+    let module = mutate_arg(cmd, "-module")?;
     if module != top && prove_equivalent(cmd, module, dir, &format!("equiv_{i}.ys"), EQUIV_SECONDS).is_ok() {
         return Ok(Scope::Module);
     }
     prove_equivalent(cmd, top, dir, &format!("equiv_top_{i}.ys"), TOP_EQUIV_SECONDS).map(|_| Scope::Top)
+}
+
+/// The word after `flag` in a `mutate` command.
+fn mutate_arg<'a>(cmd: &'a str, flag: &str) -> Result<&'a str, String> {
+    cmd.split_whitespace().skip_while(|w| *w != flag).nth(1).ok_or(format!("no {flag} in '{cmd}'"))
 }
 
 /// Yosys's selection of the marked cell if it is a primitive cell.
@@ -294,8 +299,7 @@ const PRIMITIVE: &str = "a:mutation_target t:$* %i";
 /// cell's connections, so it cannot change a port then. The cell is marked with an attribute before
 /// flattening, as rust-hdl's module names do not spell the instance path unambiguously.
 pub fn cell_is_dead_in_top(cmd: &str, top: &str, dir: &Path, i: usize) -> Result<bool, String> {
-    let arg = |flag: &str| cmd.split_whitespace().skip_while(|w| *w != flag).nth(1).ok_or(format!("no {flag} in '{cmd}'"));
-    let (module, cell) = (arg("-module")?, arg("-cell")?);
+    let (module, cell) = (mutate_arg(cmd, "-module")?, mutate_arg(cmd, "-cell")?);
     let file = format!("dead_{i}.ys");
     // The first count checks that the names match. The second, that the cell is a primitive (`$...`):
     // an instance of a module disappears in `flatten` whether its contents are used or not (a rule
