@@ -5,7 +5,8 @@
 //! A mutant that survives is checked for equivalence with the original: its cell dead in the flattened
 //! top, or Yosys's `equiv_make`, `equiv_simple` and `equiv_induct` (an induction proof over the mutated
 //! module, then over the whole top, submodules flattened in, memories mapped to registers):
-//! **equivalent** when every equivalence is proven, else **surviving**. A mutation of a clock is never called equivalent ([`CLOCK_UNDECIDED`]).
+//! **equivalent** when every equivalence is proven, else **surviving**. A mutation of a live clock is
+//! never called equivalent ([`CLOCK_UNDECIDED`]).
 //!
 //! Run by `bash scripts/mutation.sh TOP N` (`tb/src/bin/mutation.rs`); results in
 //! `target/mutation/TOP.json`. The tops: `rc`, `rc3`, `colour_setup`, `cs`, `opp`.
@@ -260,8 +261,8 @@ pub enum Scope {
 }
 
 /// Is the mutant `cmd` equivalent to the original? First whether the mutated cell is dead in the top
-/// ([`cell_is_dead_in_top`]), then the mutated module alone, then the whole top. Each side is the module (or top) with its submodules flattened in and memories mapped to
-/// registers; Yosys's `equiv_make` pairs every signal of the same name, `equiv_simple -seq 4` and
+/// ([`cell_is_dead_in_top`]), then the mutated module alone, then the whole top. Each side is the
+/// module (or top) with its submodules flattened in and memories mapped to registers; Yosys's `equiv_make` pairs every signal of the same name, `equiv_simple -seq 4` and
 /// `equiv_induct -seq 4` prove the pairs, and `equiv_status -assert` demands that every pair be proven,
 /// within [`EQUIV_SECONDS`] (module) or [`TOP_EQUIV_SECONDS`] (top) of wall time.
 ///
@@ -295,8 +296,8 @@ const PRIMITIVE: &str = "a:mutation_target t:$* %i";
 
 /// Is the cell that `cmd` mutates removed when the unmutated top is flattened and everything that
 /// reaches no port is cleaned away (`splitnets`, `opt_clean -purge`: wires split into bits, so that a
-/// cell read only through unread bits goes too)? A mutation changes only that
-/// cell's connections, so it cannot change a port then. The cell is marked with an attribute before
+/// cell read only through unread bits goes too)? A mutation changes only that cell's connections, so
+/// it cannot change a port then. The cell is marked with an attribute before
 /// flattening, as rust-hdl's module names do not spell the instance path unambiguously.
 pub fn cell_is_dead_in_top(cmd: &str, top: &str, dir: &Path, i: usize) -> Result<bool, String> {
     let (module, cell) = (mutate_arg(cmd, "-module")?, mutate_arg(cmd, "-cell")?);
@@ -414,7 +415,6 @@ endmodule
         std::fs::write(dir.join("tiny.v"), TINY).unwrap();
         run(Command::new("yosys").current_dir(&dir).args(["-q", "-p", "read_verilog tiny.v; prep -top tiny; write_rtlil orig.il; mutate -list 1000 -seed 1 -o m.ys"]), "yosys").unwrap();
         let list = std::fs::read_to_string(dir.join("m.ys")).unwrap();
-        // Forcing the register's output bit 6 (never read) or bit 2 (read) to a constant.
         let find = |mode: &str, module: &str, port: &str| {
             list.lines()
                 .find(|l| l.starts_with(&format!("mutate -mode {mode} -module {module} ")) && l.contains(&format!(" -port {port} ")))
