@@ -37,6 +37,7 @@
 // 3 result), covered 2, last 3, addr 23:4, x 33:24, y 43:34, z 67:44, index 83:68, eof 84,
 // culled 85, zero_area 86. RcResult: eof 0, index 16:1, culled 17, zero_area 18, visible 19.
 `include "stream.vh"
+`include "rc_result_queue.vh"
 
 module rc3_tdbv_test_formal #(
     // -1: check every assertion; n >= 0: check only that reach point n is unreachable, a run that
@@ -173,29 +174,8 @@ module rc3_tdbv_test_formal #(
         end
     end
 
-    // ---- Results: protocol, depth, order and content.
-    wire f4_pushes = f4_kind == RESULT || (f4_frag && f4_last);
-    reg vis = 1'b0;
-    always @(posedge clock) if (f4_frag) vis <= f4_last ? 1'b0 : (vis | i_we);
-    wire [19:0] expected = f4_frag
-        ? {vis | i_we, 2'b00, f4_index, 1'b0}
-        : {1'b0, f4[86], f4[85], f4_index, f4[84]};
-    reg [7:0] pushed = 8'd0;
-    reg [7:0] popped = 8'd0;
-    (* anyconst *) reg [7:0] tracked;
-    reg [19:0] tracked_result = 20'd0;
-    wire pop = result_valid && result_ready;
-    always @(posedge clock) begin
-        if (f4_pushes) pushed <= pushed + 8'd1;
-        if (pop) popped <= popped + 8'd1;
-        if (f4_pushes && pushed == tracked) tracked_result <= expected;
-    end
-    always @(*) begin
-        if (REACH < 0) assert (pushed - popped <= 8'd6);  // modulo 256: the counters may wrap
-        if (REACH < 0) assert (result_valid == (pushed != popped));
-        if (pop && popped == tracked) if (REACH < 0) assert (result_data == tracked_result);
-    end
-    `STREAM_OUT(result_valid, result_ready, result_data, REACH < 0)
+    // ---- Results: protocol, depth, order and content (rc_result_queue.vh).
+    `RC_RESULT_QUEUE(f4, i_we, 8'd6)
 
     // ---- Reach points.
     // w1..w4: a write to A one to four edges ago; the newest one is the one forwarded.

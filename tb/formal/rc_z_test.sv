@@ -25,6 +25,7 @@
 // 3 result), covered 2, last 3, addr 23:4, x 33:24, y 43:34, z 67:44, index 83:68, eof 84,
 // culled 85, zero_area 86. RcResult: eof 0, index 16:1, culled 17, zero_area 18, visible 19.
 `include "stream.vh"
+`include "rc_result_queue.vh"
 
 module rc_z_test_formal #(
     // -1: check every assertion; n >= 0: check only that reach point n is unreachable, a run that
@@ -114,29 +115,8 @@ module rc_z_test_formal #(
         end
     end
 
-    // ---- Results: protocol, depth, order and content.
-    wire f1_pushes = f1_kind == RESULT || (f1_frag && f1_last);
-    reg vis = 1'b0;
-    always @(posedge clock) if (f1_frag) vis <= f1_last ? 1'b0 : (vis | z_we);
-    wire [19:0] expected = f1_frag
-        ? {vis | z_we, 2'b00, f1_index, 1'b0}
-        : {1'b0, f1[86], f1[85], f1_index, f1[84]};
-    reg [7:0] pushed = 8'd0;
-    reg [7:0] popped = 8'd0;
-    (* anyconst *) reg [7:0] tracked;
-    reg [19:0] tracked_result = 20'd0;
-    wire pop = result_valid && result_ready;
-    always @(posedge clock) begin
-        if (f1_pushes) pushed <= pushed + 8'd1;
-        if (pop) popped <= popped + 8'd1;
-        if (f1_pushes && pushed == tracked) tracked_result <= expected;
-    end
-    always @(*) begin
-        if (REACH < 0) assert (pushed - popped <= 8'd3);  // modulo 256: the counters may wrap
-        if (REACH < 0) assert (result_valid == (pushed != popped));
-        if (pop && popped == tracked) if (REACH < 0) assert (result_data == tracked_result);
-    end
-    `STREAM_OUT(result_valid, result_ready, result_data, REACH < 0)
+    // ---- Results: protocol, depth, order and content (rc_result_queue.vh).
+    `RC_RESULT_QUEUE(f1, z_we, 8'd3)
 
     // ---- Reach points.
     reg prev_last = 1'b0;
