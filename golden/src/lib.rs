@@ -18,3 +18,4 @@ pub mod raster;
 pub mod render;
 pub mod scene;
 pub mod shade;
+pub mod texture;
