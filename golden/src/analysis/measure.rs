@@ -40,9 +40,11 @@ pub fn reorder(mesh: &Mesh, cam: &Camera, order: DrawOrder) -> Mesh {
         let c = [0, 1, 2].map(|k| t.v.iter().map(|&i| mesh.positions[i as usize][k]).sum::<f64>() / 3.0);
         -(v[2][0] * c[0] + v[2][1] * c[1] + v[2][2] * c[2] + v[2][3])
     };
-    let mut keyed: Vec<(f64, Triangle)> = mesh.triangles.iter().map(|t| (dist(t), *t)).collect();
+    let mut keyed: Vec<(f64, usize)> = mesh.triangles.iter().enumerate().map(|(i, t)| (dist(t), i)).collect();
     keyed.sort_by(|a, b| if order == DrawOrder::FrontToBack { a.0.total_cmp(&b.0) } else { b.0.total_cmp(&a.0) });
-    Mesh { triangles: keyed.into_iter().map(|k| k.1).collect(), ..mesh.clone() }
+    // Texture coordinates are per triangle too, so they move with their triangles.
+    let triangle_texcoords = if mesh.triangle_texcoords.is_empty() { Vec::new() } else { keyed.iter().map(|k| mesh.triangle_texcoords[k.1]).collect() };
+    Mesh { triangles: keyed.iter().map(|k| mesh.triangles[k.1]).collect(), triangle_texcoords, ..mesh.clone() }
 }
 
 /// What one shading method costs in lighting, as the golden frame counted it.

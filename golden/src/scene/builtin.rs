@@ -87,7 +87,7 @@ pub fn polyhedron() -> Mesh {
     let normals = vec![face_normal(0), face_normal(3)];
     let materials = vec![Material::plastic([0.9, 0.15, 0.1]), Material::plastic([0.1, 0.25, 0.9])];
     let triangles = vec![Triangle { v: [0, 1, 2], n: [0, 0, 0], material: 0 }, Triangle { v: [3, 4, 5], n: [1, 1, 1], material: 1 }];
-    Mesh { name: "polyhedron".into(), positions, normals, materials, triangles, front_face: Winding::Ccw }
+    Mesh { name: "polyhedron".into(), positions, normals, materials, triangles, front_face: Winding::Ccw, texcoords: Vec::new(), triangle_texcoords: Vec::new() }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -283,8 +283,8 @@ pub fn teapot(grid: u32) -> Mesh {
         }
     }
     // Glazed: a white specular strong enough that per-pixel (Phong) highlights show plainly.
-    let teapot_colour = Material { ambient: [0.75, 0.5, 0.22], diffuse: [0.75, 0.5, 0.22], specular: [0.9, 0.9, 0.9], gloss: 16, opacity: 1.0 };
-    Mesh { name: "teapot".into(), positions, normals, materials: vec![teapot_colour], triangles, front_face: Winding::Cw }
+    let teapot_colour = Material { ambient: [0.75, 0.5, 0.22], diffuse: [0.75, 0.5, 0.22], specular: [0.9, 0.9, 0.9], gloss: 16, opacity: 1.0, texture: None };
+    Mesh { name: "teapot".into(), positions, normals, materials: vec![teapot_colour], triangles, front_face: Winding::Cw, texcoords: Vec::new(), triangle_texcoords: Vec::new() }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -435,6 +435,8 @@ impl MeshBuilder {
                 materials,
                 triangles: Vec::new(),
                 front_face: Winding::Ccw,
+                texcoords: Vec::new(),
+                triangle_texcoords: Vec::new(),
             },
         }
     }
@@ -475,7 +477,7 @@ impl MeshBuilder {
 
 /// A material with its own specular level and gloss (ambient = diffuse, as [`Material::plastic`]).
 fn material(diffuse: V3, specular: f64, gloss: u32) -> Material {
-    Material { ambient: diffuse, diffuse, specular: [specular; 3], gloss, opacity: 1.0 }
+    Material { ambient: diffuse, diffuse, specular: [specular; 3], gloss, opacity: 1.0, texture: None }
 }
 
 // ---------------------------------------------------------------------------------------------

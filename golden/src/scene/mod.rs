@@ -18,6 +18,9 @@ pub struct Material {
     pub specular: [f64; 3],
     pub gloss: u32,
     pub opacity: f64,
+    /// The diffuse texture (MTL's `map_Kd`, resolved against the OBJ file's directory), not yet drawn:
+    /// texture mapping is issue 17's, in progress.
+    pub texture: Option<std::path::PathBuf>,
 }
 
 impl Material {
@@ -28,7 +31,7 @@ impl Material {
 
     /// A plastic-like material of the given diffuse colour.
     pub fn plastic(diffuse: [f64; 3]) -> Material {
-        Material { ambient: diffuse, diffuse, specular: [0.4, 0.4, 0.4], gloss: 16, opacity: 1.0 }
+        Material { ambient: diffuse, diffuse, specular: [0.4, 0.4, 0.4], gloss: 16, opacity: 1.0, texture: None }
     }
 }
 
@@ -60,6 +63,11 @@ pub struct Mesh {
     pub triangles: Vec<Triangle>,
     /// The winding of the outside faces: GLUT's teapot is `Cw`, OBJ files are `Ccw`.
     pub front_face: Winding,
+    /// Texture coordinates (u, v): OBJ's `vt`. Empty when the mesh has none.
+    pub texcoords: Vec<[f64; 2]>,
+    /// Per triangle (parallel to `triangles`), its corners' indices into `texcoords`; empty when the
+    /// mesh has no texture coordinates.
+    pub triangle_texcoords: Vec<[u32; 3]>,
 }
 
 impl Mesh {
@@ -103,6 +111,19 @@ impl Mesh {
                 || t.material as usize >= self.materials.len()
             {
                 return Err(format!("scene '{}': triangle {} refers to a vertex, normal or material that does not exist", self.name, i + 1));
+            }
+        }
+        if !self.triangle_texcoords.is_empty() && self.triangle_texcoords.len() != self.triangles.len() {
+            return Err(format!("scene '{}': {} triangles but {} with texture coordinates", self.name, self.triangles.len(), self.triangle_texcoords.len()));
+        }
+        for (i, t) in self.triangle_texcoords.iter().enumerate() {
+            if t.iter().any(|&k| k as usize >= self.texcoords.len()) {
+                return Err(format!("scene '{}': triangle {} refers to a texture coordinate that does not exist", self.name, i + 1));
+            }
+        }
+        for (i, c) in self.texcoords.iter().enumerate() {
+            if c.iter().any(|x| !x.is_finite()) {
+                return Err(format!("scene '{}': texture coordinate {} is not finite {:?}", self.name, i + 1, c));
             }
         }
         for m in &self.materials {

@@ -86,7 +86,7 @@ pub fn load_obj_with_warnings(path: &Path) -> Result<(Mesh, Vec<String>), String
     .map_err(|e| format!("{}: {}", path.display(), e))?;
     warnings.extend(mtl_problems.into_inner());
     // A missing MTL file leaves the faces without a material; they get the default below.
-    let file_materials: Vec<Material> = materials.unwrap_or_default().iter().map(convert_material).collect();
+    let file_materials: Vec<Material> = materials.unwrap_or_default().iter().map(|m| convert_material(&dir, m)).collect();
 
     let mut mesh = Mesh {
         name: path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "obj".into()),
@@ -95,6 +95,8 @@ pub fn load_obj_with_warnings(path: &Path) -> Result<(Mesh, Vec<String>), String
         materials: file_materials,
         triangles: Vec::new(),
         front_face: Winding::Ccw,
+        texcoords: Vec::new(),
+        triangle_texcoords: Vec::new(),
     };
     let mut default_material = None;
     for model in &models {
@@ -147,8 +149,41 @@ pub fn load_obj_with_warnings(path: &Path) -> Result<(Mesh, Vec<String>), String
     if mesh.triangles.is_empty() {
         return Err(format!("{}: OBJ file has no faces", path.display()));
     }
+    attach_texcoords(path, &mut mesh, checked.texcoords, &checked.triangle_texcoords, &mut warnings)?;
     mesh.validate().map_err(|e| format!("{}: {}", path.display(), e))?;
     Ok((mesh, warnings))
+}
+
+/// Give the mesh the file's texture coordinates when any face has them. tobj sees the faces in the
+/// prescan's order, one triangle each, so the n-th triangle is the prescan's n-th. Faces without
+/// texture coordinates in a file where others have them get (0, 0), with a warning.
+fn attach_texcoords(
+    path: &Path,
+    mesh: &mut Mesh,
+    texcoords: Vec<[f64; 2]>,
+    triangle_texcoords: &[Option<[u32; 3]>],
+    warnings: &mut Vec<String>,
+) -> Result<(), String> {
+    if triangle_texcoords.iter().all(Option::is_none) {
+        return Ok(());
+    }
+    if triangle_texcoords.len() != mesh.triangles.len() {
+        return Err(format!(
+            "{}: the OBJ reader returned {} triangles where the file has {}: texture coordinates cannot be matched",
+            path.display(),
+            mesh.triangles.len(),
+            triangle_texcoords.len()
+        ));
+    }
+    mesh.texcoords = texcoords;
+    let missing = triangle_texcoords.iter().filter(|t| t.is_none()).count();
+    if missing > 0 {
+        warnings.push(format!("{}: {} triangles have no texture coordinates where others have them: they get (0, 0)", path.display(), missing));
+        mesh.texcoords.push([0.0, 0.0]);
+    }
+    let origin = (mesh.texcoords.len() - 1) as u32;
+    mesh.triangle_texcoords = triangle_texcoords.iter().map(|t| t.unwrap_or([origin; 3])).collect();
+    Ok(())
 }
 
 /// The text of an MTL library whose colour and number statements tobj can parse, or why not (with
@@ -182,7 +217,7 @@ fn check_mtl(path: &Path) -> Result<String, String> {
 /// An MTL material in our Phong model: Kd, Ka (Kd when missing or black, since a black ambient
 /// would leave unlit sides invisible), Ks, Ns rounded to a power of two in 1..=16, and the opacity:
 /// `d`, else 1 - `Tr` (tobj keeps `Tr` among its unknown parameters), else 1 (opaque).
-fn convert_material(m: &tobj::Material) -> Material {
+fn convert_material(dir: &Path, m: &tobj::Material) -> Material {
     let colour = |c: Option<[f64; 3]>| -> Option<V3> { c.filter(|c| c.iter().all(|x| x.is_finite())).map(|c| c.map(|x| x.clamp(0.0, 1.0))) };
     let diffuse = colour(m.diffuse).unwrap_or([0.7, 0.7, 0.7]);
     let ambient = colour(m.ambient).filter(|a| a.iter().any(|&x| x > 0.0)).unwrap_or(diffuse);
@@ -193,7 +228,8 @@ fn convert_material(m: &tobj::Material) -> Material {
     };
     let tr = m.unknown_param.get("Tr").and_then(|t| t.trim().parse::<f64>().ok()).map(|t| 1.0 - t);
     let opacity = m.dissolve.or(tr).filter(|d| d.is_finite()).unwrap_or(1.0).clamp(0.0, 1.0);
-    Material { ambient, diffuse, specular, gloss, opacity }
+    let texture = m.diffuse_texture.as_ref().map(|t| dir.join(t.trim()));
+    Material { ambient, diffuse, specular, gloss, opacity, texture }
 }
 
 /// The power of two in 1..=16 nearest to Ns on a log scale (MTL's Ns runs 0..1000; the chip's
@@ -212,6 +248,10 @@ struct Checked {
     faces: usize,
     all_faces_have_normals: bool,
     warnings: Vec<String>,
+    /// The file's `vt` (u, v; v = 0 where a line gives only u), and per triangle passed to tobj, in
+    /// order, its corners' 0-based indices into them (None for a face without any).
+    texcoords: Vec<[f64; 2]>,
+    triangle_texcoords: Vec<Option<[u32; 3]>>,
 }
 
 /// Check every line of an OBJ file; return the text reduced to the statements tobj needs.
@@ -225,6 +265,8 @@ fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
     let mut all_faces_have_normals = true;
     let mut positions: Vec<V3> = Vec::new();
     let mut warnings = Vec::new();
+    let mut texcoords: Vec<[f64; 2]> = Vec::new();
+    let mut triangle_texcoords: Vec<Option<[u32; 3]>> = Vec::new();
     for (number, raw) in text.lines().enumerate() {
         let err = |msg: String| format!("{}:{}: {}", path.display(), number + 1, msg);
         let line = raw.split('#').next().unwrap_or("").trim();
@@ -270,7 +312,8 @@ fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
                     return Err(err(format!("texture coordinate needs 1 to 3 numbers, found {}", c.len())));
                 }
                 nvt += 1;
-                // Texture coordinates are not used; tobj is not given them (it would reject `vt u`).
+                texcoords.push([c[0], c.get(1).copied().unwrap_or(0.0)]);
+                // tobj is not given them (it would reject `vt u`): the prescan keeps them.
                 false
             }
             "f" => {
@@ -278,18 +321,26 @@ fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
                     return Err(err(format!("face needs at least 3 vertices, found {}", args.len())));
                 }
                 let mut refs = Vec::with_capacity(args.len());
+                let mut face_texcoords = Vec::with_capacity(args.len());
                 for word in &args {
                     let (v, vt, vn) =
                         parse_ref(word).ok_or_else(|| err(format!("malformed face vertex '{}' (expected i, i/j, i//k or i/j/k)", word)))?;
                     let v = resolve(v, nv, "vertex", "vertices").map_err(&err)?;
                     if let Some(t) = vt {
-                        resolve(t, nvt, "texture coordinate", "texture coordinates").map_err(&err)?;
+                        face_texcoords.push(resolve(t, nvt, "texture coordinate", "texture coordinates").map_err(&err)? as u32 - 1);
                     }
                     let vn = match vn {
                         Some(n) => Some(resolve(n, nvn, "normal", "normals").map_err(&err)?),
                         None => None,
                     };
                     refs.push((v, vn));
+                }
+                if !face_texcoords.is_empty() && face_texcoords.len() != refs.len() {
+                    return Err(err(format!(
+                        "face gives texture coordinates for {} of its {} vertices: give them for all or none",
+                        face_texcoords.len(),
+                        refs.len()
+                    )));
                 }
                 all_faces_have_normals &= refs.iter().all(|r| r.1.is_some());
                 faces += 1;
@@ -304,6 +355,7 @@ fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
                     }
                 };
                 for t in tris {
+                    triangle_texcoords.push((!face_texcoords.is_empty()).then(|| t.map(|k| face_texcoords[k])));
                     out.push('f');
                     for k in t {
                         match refs[k] {
@@ -329,7 +381,7 @@ fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
         }
         out.push('\n');
     }
-    Ok(Checked { text: out, faces, all_faces_have_normals, warnings })
+    Ok(Checked { text: out, faces, all_faces_have_normals, warnings, texcoords, triangle_texcoords })
 }
 
 /// Split a polygon (corners in order) into triangles by ear clipping, in the plane that its Newell
@@ -545,6 +597,72 @@ mod tests {
         let (m, w) = load_obj_with_warnings(&path).unwrap();
         assert_eq!(m.triangles.len(), 1);
         assert!(w.iter().any(|w| w.contains("line 2") && w.contains("`Kd` needs 3 numbers")), "{w:?}");
+    }
+
+    /// The texture coordinate of every triangle corner, looked up by the corner's position.
+    fn corner_uvs(m: &Mesh) -> Vec<([f64; 3], [f64; 2])> {
+        m.triangles
+            .iter()
+            .zip(&m.triangle_texcoords)
+            .flat_map(|(t, tc)| (0..3).map(move |k| (t.v[k], tc[k])))
+            .map(|(v, c)| (m.positions[v as usize], m.texcoords[c as usize]))
+            .collect()
+    }
+
+    #[test]
+    fn texture_coordinates_follow_their_corners_through_triangulation_groups_and_materials() {
+        // Two quads in two groups with two materials; the uv of a corner is (x / 2, y / 2 + 0.25),
+        // given in a scrambled vt order so that an index mix-up shows.
+        let text = "mtllib none.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\n\
+                    vt 0.5 0.75\nvt 0 0.25\nvt 0.5 0.25\nvt 0 0.75\nvt 1 0.25\nvt 1 0.75\n\
+                    g left\nusemtl a\nf 1/2 2/3 3/1 4/4\ng right\nusemtl b\nf 2/3 5/5 6/6 3/1\n";
+        let (_, m) = load_text("uv.obj", text);
+        let m = m.unwrap();
+        assert_eq!(m.triangles.len(), 4);
+        assert_eq!(m.triangle_texcoords.len(), 4);
+        for (p, uv) in corner_uvs(&m) {
+            assert_eq!(uv, [p[0] / 2.0, p[1] / 2.0 + 0.25], "corner {p:?}");
+        }
+    }
+
+    #[test]
+    fn a_texture_coordinate_with_only_u_has_v_zero_and_a_mesh_without_any_has_none() {
+        let (_, m) = load_text("u.obj", &format!("{SQUARE}vt 0.5\nf 1/1 2/1 3/1\n"));
+        assert_eq!(m.unwrap().texcoords, vec![[0.5, 0.0]]);
+        let (_, m) = load_text("none.obj", &format!("{SQUARE}vt 0.5 0.5\nf 1 2 3\n"));
+        let m = m.unwrap();
+        assert!(m.triangle_texcoords.is_empty() && m.texcoords.is_empty());
+    }
+
+    #[test]
+    fn texture_coordinates_on_some_corners_of_a_face_or_out_of_range_are_errors_naming_the_line() {
+        let (path, m) = load_text("mixed.obj", &format!("{SQUARE}vt 0 0\nf 1/1 2/1 3/1\nf 1/1 3 4/1\n"));
+        let e = m.unwrap_err();
+        assert!(e.contains(&format!("{}:7:", path.display())) && e.contains("2 of its 3 vertices"), "{e}");
+        let (path, m) = load_text("range.obj", &format!("{SQUARE}vt 0 0\nf 1/1 2/2 3/1\n"));
+        let e = m.unwrap_err();
+        assert!(e.contains(&format!("{}:6:", path.display())) && e.contains("texture coordinate 2"), "{e}");
+    }
+
+    #[test]
+    fn faces_without_texture_coordinates_beside_faces_with_them_get_the_origin_with_a_warning() {
+        let dir = temp_dir("someuv");
+        let path = dir.join("someuv.obj");
+        std::fs::write(&path, format!("{SQUARE}vt 1 1\nf 1/1 2/1 3/1\nf 1 3 4\n")).unwrap();
+        let (m, w) = load_obj_with_warnings(&path).unwrap();
+        assert_eq!(m.texcoords[m.triangle_texcoords[0][0] as usize], [1.0, 1.0]);
+        assert_eq!(m.texcoords[m.triangle_texcoords[1][2] as usize], [0.0, 0.0]);
+        assert!(w.iter().any(|w| w.contains("1 triangles have no texture coordinates")), "{w:?}");
+    }
+
+    #[test]
+    fn a_material_diffuse_map_is_kept_as_a_path_beside_the_obj() {
+        let dir = temp_dir("mapkd");
+        std::fs::write(dir.join("m.mtl"), "newmtl wood\nKd 1 1 1\nmap_Kd tex/wood.png\n").unwrap();
+        let path = dir.join("mapkd.obj");
+        std::fs::write(&path, format!("mtllib m.mtl\n{SQUARE}usemtl wood\nf 1 2 3\n")).unwrap();
+        let m = load_obj(&path).unwrap();
+        assert_eq!(m.materials[0].texture, Some(dir.join("tex/wood.png")));
     }
 
     /// Issue 18: a missing material library gave no word.

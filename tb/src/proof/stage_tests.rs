@@ -83,7 +83,7 @@ fn two_light_shading_stage_with_every_gloss_matches_its_cycle_model_and_the_gold
     let mats: Vec<golden::scene::Material> = [1, 2, 4, 8, 16]
         .iter()
         .enumerate()
-        .map(|(k, &g)| golden::scene::Material { ambient: [0.3, 0.5, 0.9], diffuse: [0.9, 0.4 + 0.1 * k as f64, 0.2], specular: [0.6, 0.6, 0.6], gloss: g, opacity: 1.0 })
+        .map(|(k, &g)| golden::scene::Material { ambient: [0.3, 0.5, 0.9], diffuse: [0.9, 0.4 + 0.1 * k as f64, 0.2], specular: [0.6, 0.6, 0.6], gloss: g, opacity: 1.0, texture: None })
         .collect();
     let lights = PhongLights::new(&lighting, &mats);
     let material: Vec<u16> = (0..40).map(|i| (i % 5) as u16).collect();
