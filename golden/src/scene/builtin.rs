@@ -248,7 +248,8 @@ fn teapot_patches() -> Vec<Patch> {
 }
 
 /// glutSolidTeapot(1.0) tessellated on a `grid` x `grid` mesh per patch: 2 * grid^2 * 32 triangles in
-/// glEvalMesh2's triangle-strip order, zero-area ones included, wound clockwise from outside.
+/// glEvalMesh2's triangle-strip order, zero-area ones included, wound clockwise from outside, with
+/// GLUT's texture coordinates (each patch spans the texture once).
 ///
 /// Panics if `grid` is 0 (there would be no triangles).
 pub fn teapot(grid: u32) -> Mesh {
@@ -258,6 +259,7 @@ pub fn teapot(grid: u32) -> Mesh {
     let s = 0.5 * size;
     let mut positions = Vec::new();
     let mut normals = Vec::new();
+    let mut texcoords = Vec::new();
     let mut triangles = Vec::with_capacity(2 * g * g * 32);
     for patch in teapot_patches() {
         // Grid vertex (i along u, j along v) has index base + j * (g + 1) + i; normals share the index.
@@ -269,6 +271,9 @@ pub fn teapot(grid: u32) -> Mesh {
                 let (point, _, _) = patch_eval(&patch, u, v);
                 positions.push(teapot_transform(point, s));
                 normals.push(teapot_rotate(patch_normal(&patch, u, v)));
+                // GLUT maps GL_MAP2_TEXTURE_COORD_2 with the corners (0,0), (1,0), (0,1), (1,1)
+                // over every patch: texture coordinates (s, t) = (u, v).
+                texcoords.push([u, v]);
             }
         }
         let index = |i: usize, j: usize| base + (j * (g + 1) + i) as u32;
@@ -284,7 +289,9 @@ pub fn teapot(grid: u32) -> Mesh {
     }
     // Glazed: a white specular strong enough that per-pixel (Phong) highlights show plainly.
     let teapot_colour = Material { ambient: [0.75, 0.5, 0.22], diffuse: [0.75, 0.5, 0.22], specular: [0.9, 0.9, 0.9], gloss: 16, opacity: 1.0, texture: None };
-    Mesh { name: "teapot".into(), positions, normals, materials: vec![teapot_colour], triangles, front_face: Winding::Cw, texcoords: Vec::new(), triangle_texcoords: Vec::new() }
+    // Texture coordinates are per grid vertex, as positions and normals are.
+    let triangle_texcoords = triangles.iter().map(|t| t.v).collect();
+    Mesh { name: "teapot".into(), positions, normals, materials: vec![teapot_colour], triangles, front_face: Winding::Cw, texcoords, triangle_texcoords }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -772,6 +779,32 @@ pub fn dolphins() -> Mesh {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_teapot_has_glut_texture_coordinates_each_patch_corner_at_its_control_point() {
+        let g = 4;
+        let m = teapot(g);
+        m.validate().unwrap();
+        assert_eq!(m.triangle_texcoords.len(), m.triangles.len());
+        // The first patch is the rim P (its points by row j, column k); u runs along k, v along j,
+        // and a Bezier patch passes through its four corner points. So (s, t) = (1, 0) is P[0][3]
+        // and (0, 1) is P[3][0], both in the first (g + 1)^2 vertices.
+        let p = |j: usize, k: usize| teapot_transform(TEAPOT_POINTS[TEAPOT_PATCHES[0][4 * j + k]], 0.5);
+        let at = |st: [f64; 2]| m.texcoords[..(g as usize + 1).pow(2)].iter().position(|&c| c == st).unwrap();
+        for (st, point) in [([0.0, 0.0], p(0, 0)), ([1.0, 0.0], p(0, 3)), ([0.0, 1.0], p(3, 0)), ([1.0, 1.0], p(3, 3))] {
+            let q = m.positions[at(st)];
+            assert!((0..3).all(|c| (q[c] - point[c]).abs() < 1e-12), "{st:?}: {q:?} vs {point:?}");
+        }
+        // Neighbouring corners of a triangle are one grid step apart in s and t.
+        for tc in &m.triangle_texcoords {
+            for a in 0..3 {
+                for b in 0..3 {
+                    let (ca, cb) = (m.texcoords[tc[a] as usize], m.texcoords[tc[b] as usize]);
+                    assert!((ca[0] - cb[0]).abs() <= 1.0 / g as f64 + 1e-12 && (ca[1] - cb[1]).abs() <= 1.0 / g as f64 + 1e-12);
+                }
+            }
+        }
+    }
 
     fn corners(m: &Mesh, t: &Triangle) -> [V3; 3] {
         t.v.map(|i| m.positions[i as usize])
