@@ -1,7 +1,8 @@
 //! Texture sampling, bit-exact (issue 17, item 3): the texel lookup the Color Shader will do at
 //! scan-out, after it has turned the interpolated texture coordinates into `s`, `t` and a level of
-//! detail. Not yet used by the renderer: texture coordinates, the planes that carry them and the
-//! textured scenes are still to come (see the issue's note).
+//! detail, and [`load`] for a material's `map_Kd` image (PNG or JPEG). Not yet used by the renderer:
+//! the planes that carry texture coordinates, the CS's texture port and the textured scenes are still
+//! to come (see issue 17's note).
 //!
 //! | quantity | format | why |
 //! |---|---|---|
@@ -199,6 +200,20 @@ impl Texture {
     }
 }
 
+/// A texture from a PNG or JPEG file (any colour type, taken as RGB8: alpha is dropped), with its
+/// mipmaps. Errors name the file: unreadable, not an image, or a size [`Texture::new`] refuses.
+pub fn load(path: &std::path::Path) -> Result<Texture, String> {
+    let image = image::ImageReader::open(path)
+        .and_then(|r| r.with_guessed_format())
+        .map_err(|e| format!("{}: cannot read texture: {e}", path.display()))?
+        .decode()
+        .map_err(|e| format!("{}: not a readable PNG or JPEG image: {e}", path.display()))?
+        .to_rgb8();
+    let (width, height) = image.dimensions();
+    let texels = image.pixels().map(|p| p.0).collect();
+    Texture::new(width, height, texels).map_err(|e| format!("{}: {e}", path.display()))
+}
+
 /// Texel index `i` of a dimension of `1 << log2` texels, wrapped or clamped.
 fn address(i: i64, log2: u32, wrap: Wrap) -> i64 {
     let n = 1i64 << log2;
@@ -245,6 +260,41 @@ mod tests {
     /// The coordinate of texel i's centre in a dimension of n texels.
     fn centre(i: i32, n: i32) -> i32 {
         ((2 * i + 1) << TEXCOORD_FRAC) / (2 * n)
+    }
+
+    fn temp_dir(tag: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("golden-texture-{tag}-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn png_and_jpeg_files_load_as_textures_and_bad_ones_are_errors_naming_the_file() {
+        let dir = temp_dir("load");
+        let png = dir.join("t.png");
+        let texels = [[255u8, 0, 0], [0, 255, 0], [0, 0, 255], [9, 99, 199]];
+        image::RgbImage::from_fn(2, 2, |x, y| image::Rgb(texels[(2 * y + x) as usize])).save(&png).unwrap();
+        let t = load(&png).unwrap();
+        assert_eq!(t.levels[0].texels, texels.to_vec());
+        assert_eq!(t.levels.len(), 2);
+        // JPEG is lossy: a flat grey comes back within a few steps.
+        let jpg = dir.join("t.jpg");
+        image::RgbImage::from_pixel(8, 4, image::Rgb([128, 128, 128])).save(&jpg).unwrap();
+        let t = load(&jpg).unwrap();
+        assert_eq!((t.levels[0].w_log2, t.levels[0].h_log2), (3, 2));
+        assert!(t.levels[0].texels.iter().all(|c| c.iter().all(|&v| v.abs_diff(128) <= 3)), "{:?}", t.levels[0].texels);
+        // Not a power of two, not an image, missing.
+        let odd = dir.join("odd.png");
+        image::RgbImage::new(3, 2).save(&odd).unwrap();
+        let e = load(&odd).unwrap_err();
+        assert!(e.contains("odd.png") && e.contains("3x2") && e.contains("powers of two"), "{e}");
+        let junk = dir.join("junk.png");
+        std::fs::write(&junk, b"not an image").unwrap();
+        let e = load(&junk).unwrap_err();
+        assert!(e.contains("junk.png") && e.contains("not a readable"), "{e}");
+        let e = load(&dir.join("gone.png")).unwrap_err();
+        assert!(e.contains("gone.png") && e.contains("cannot read"), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
