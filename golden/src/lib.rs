@@ -18,4 +18,5 @@ pub mod raster;
 pub mod render;
 pub mod scene;
 pub mod shade;
+pub mod texcoord;
 pub mod texture;
