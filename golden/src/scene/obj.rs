@@ -256,7 +256,8 @@ struct Checked {
 
 /// Check every line of an OBJ file; return the text reduced to the statements tobj needs.
 ///
-/// Statements the mesh does not use (o, g, s, vt, l, p, ...) are accepted. Comments are cut off
+/// Statements the mesh does not use (o, g, s, l, p, ...) are accepted. Texture coordinates (`vt`
+/// and the faces' references to them) are kept here, not passed to tobj. Comments are cut off
 /// before tobj sees the line (tobj would read `v 1 2 3 # note` as a fourth coordinate).
 fn prescan(path: &Path, text: &str) -> Result<Checked, String> {
     let (mut nv, mut nvt, mut nvn) = (0i64, 0i64, 0i64);
