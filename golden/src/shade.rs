@@ -34,13 +34,19 @@ pub struct TdbsEntry {
 /// Colour setup for one triangle: `values[k]` are vertex k's three channel values (RGB888 or Q1.14
 /// normal components) in the order the triangle was sent to the RC. One reciprocal.
 pub fn colour_setup(v: &[WinVertex; 3], values: [[i64; 3]; 3], material: u16) -> TdbsEntry {
+    TdbsEntry { planes: three_planes(v, values), material }
+}
+
+/// The three planes through `values[k][c]` at window vertex k (c = 0, 1, 2), vertices in the order
+/// the triangle was sent: the triangle put in the order with det > 0, one reciprocal for all three.
+/// Colour setup's arithmetic, also used for the texture planes ([`crate::texcoord::setup`]).
+pub fn three_planes(v: &[WinVertex; 3], values: [[i64; 3]; 3]) -> [Plane; 3] {
     let d = det(v);
-    assert!(d != 0, "colour setup of a zero-area triangle (the RC never flags one visible)");
+    assert!(d != 0, "plane setup of a zero-area triangle (the RC never flags one visible)");
     let o = canonical_order(v);
     let vv = [v[o[0]], v[o[1]], v[o[2]]];
     let r = reciprocal(d.abs());
-    let planes = [0, 1, 2].map(|c| Plane::setup(&vv, [values[o[0]][c], values[o[1]][c], values[o[2]][c]], d.abs(), r));
-    TdbsEntry { planes, material }
+    [0, 1, 2].map(|c| Plane::setup(&vv, [values[o[0]][c], values[o[1]][c], values[o[2]][c]], d.abs(), r))
 }
 
 /// Flat colour setup: constant planes, no reciprocal.

@@ -19,7 +19,7 @@
 //! the pixel's reciprocal of q.
 
 use crate::format::{reciprocal, round_shift, Plane, WinVertex, PLANE_AB_BITS, RECIP_BITS};
-use crate::raster::{canonical_order, det};
+use crate::shade::three_planes;
 use crate::texture::{lod_q4, TEXCOORD_FRAC};
 
 /// 1/w at the triangle's nearest vertex.
@@ -73,13 +73,8 @@ pub struct TexPlanes {
 /// Colour setup's part for texture: the three planes through the vertex values (in the order the
 /// triangle was sent, as [`crate::shade::colour_setup`] takes them), one reciprocal.
 pub fn setup(v: &[WinVertex; 3], values: [[i64; 3]; 3]) -> TexPlanes {
-    let d = det(v);
-    assert!(d != 0, "texture setup of a zero-area triangle (the RC never flags one visible)");
-    let o = canonical_order(v);
-    let vv = [v[o[0]], v[o[1]], v[o[2]]];
-    let r = reciprocal(d.abs());
-    let plane = |c: usize| Plane::setup(&vv, [values[o[0]][c], values[o[1]][c], values[o[2]][c]], d.abs(), r);
-    TexPlanes { sw: plane(0), tw: plane(1), q: plane(2) }
+    let [sw, tw, q] = three_planes(v, values);
+    TexPlanes { sw, tw, q }
 }
 
 /// What the Color Shader computes at a pixel: the texture coordinate and the level of detail.
@@ -133,6 +128,7 @@ impl TexPlanes {
 mod tests {
     use super::*;
     use crate::format::SUBPIXEL_ONE;
+    use crate::raster::det;
     use proptest::prelude::*;
 
     /// A window vertex from pixel coordinates (snapped to the subpixel grid).
@@ -143,17 +139,22 @@ mod tests {
     /// The exact perspective-correct (s, t) at pixel (X, Y)'s centre, in f64, from the snapped
     /// window positions: barycentric weights over the screen, then 1/w-weighted.
     fn exact(v: &[WinVertex; 3], w: [f64; 3], st: [[f64; 2]; 3], x: u32, y: u32, coords: Coords) -> [f64; 2] {
-        let p = v.map(|v| [v.x as f64 / SUBPIXEL_ONE as f64, v.y as f64 / SUBPIXEL_ONE as f64]);
-        let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
-        let area = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
-        let edge = |a: [f64; 2], b: [f64; 2]| ((b[0] - a[0]) * (py - a[1]) - (px - a[0]) * (b[1] - a[1])) / area;
-        let l = [edge(p[1], p[2]), edge(p[2], p[0]), edge(p[0], p[1])];
+        let l = barycentric(v, x, y);
         let iw = match coords {
             Coords::Perspective => w.map(|w| 1.0 / w),
             Coords::Affine => [1.0; 3],
         };
         let den: f64 = (0..3).map(|k| l[k] * iw[k]).sum();
         [0, 1].map(|c| (0..3).map(|k| l[k] * iw[k] * st[k][c]).sum::<f64>() / den)
+    }
+
+    /// The barycentric weights of pixel (X, Y)'s centre in the snapped triangle (all positive inside).
+    fn barycentric(v: &[WinVertex; 3], x: u32, y: u32) -> [f64; 3] {
+        let p = v.map(|v| [v.x as f64 / SUBPIXEL_ONE as f64, v.y as f64 / SUBPIXEL_ONE as f64]);
+        let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
+        let area = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+        let edge = |a: [f64; 2], b: [f64; 2]| ((b[0] - a[0]) * (py - a[1]) - (px - a[0]) * (b[1] - a[1])) / area;
+        [edge(p[1], p[2]), edge(p[2], p[0]), edge(p[0], p[1])]
     }
 
     #[test]
@@ -224,16 +225,9 @@ mod tests {
             let mut worst = 0.0f64;
             for y in (y0..=y1).step_by(3) {
                 for x in (x0..=x1).step_by(3) {
+                    // Inside: every barycentric weight positive.
+                    if !barycentric(&v, x, y).iter().all(|&l| l > 0.0) { continue; }
                     let e = exact(&v, w, st, x, y, coords);
-                    // Inside (with a margin): every barycentric weight positive.
-                    let inside = {
-                        let p = v.map(|v| [v.x as f64 / 16.0, v.y as f64 / 16.0]);
-                        let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
-                        let s = |a: [f64; 2], b: [f64; 2]| (b[0] - a[0]) * (py - a[1]) - (px - a[0]) * (b[1] - a[1]);
-                        let d = [s(p[1], p[2]), s(p[2], p[0]), s(p[0], p[1])];
-                        d.iter().all(|&k| k > 0.0) || d.iter().all(|&k| k < 0.0)
-                    };
-                    if !inside { continue; }
                     let c = planes.eval(x, y, 8, 8);
                     let got = [c.s as f64 / 65536.0, c.t as f64 / 65536.0];
                     worst = worst.max((got[0] - e[0]).abs()).max((got[1] - e[1]).abs());
