@@ -6,7 +6,9 @@ use clap::ValueEnum;
 use golden::format::{Screen, INDEX_BITS_DEFAULT};
 use golden::host::{Camera, CAMERA_RANGE};
 use golden::raster::{CullMode, FrontFace};
-use golden::render::RenderOptions;
+use golden::render::{RenderOptions, Texturing};
+use golden::texcoord::Coords;
+use golden::texture::{Filter, Wrap};
 use golden::scene::{builtin, obj, Mesh, Winding};
 use golden::shade::Shading;
 use std::path::PathBuf;
@@ -47,6 +49,31 @@ pub enum ShadingArg {
     Phong,
 }
 
+/// How the texture is filtered (`--texture-filter`).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum TextureFilterArg {
+    Nearest,
+    Bilinear,
+    /// Mipmapped: bilinear in the two levels around the pixel's level of detail, blended.
+    Trilinear,
+}
+
+/// How texture coordinates are interpolated (`--texture-coords`).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum TextureCoordsArg {
+    /// s/w, t/w and 1/w planes and a division per pixel.
+    Perspective,
+    /// s and t planes, seed 000's linear expressions (wrong under perspective).
+    Affine,
+}
+
+/// What texture coordinates outside [0, 1) do (`--texture-wrap`).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum TextureWrapArg {
+    Repeat,
+    Clamp,
+}
+
 #[derive(Copy, Clone, Debug, ValueEnum)]
 pub enum CullArg {
     Back,
@@ -62,7 +89,7 @@ pub enum FrontArg {
 
 #[derive(clap::Args, Debug)]
 pub struct RenderArgs {
-    /// A built-in scene: polyhedron, teapot, castle, dolphins; glass (transparent, --arch proof).
+    /// A built-in scene: polyhedron, teapot, castle, dolphins; teapot-floor (textured); glass (transparent, --arch proof).
     #[arg(long, conflicts_with = "obj")]
     pub scene: Option<String>,
     /// A Wavefront OBJ file to render instead of a built-in scene.
@@ -123,6 +150,20 @@ pub struct RenderArgs {
     /// Below 1 only --arch proof (golden backend) renders it.
     #[arg(long, allow_hyphen_values = true)]
     pub opacity: Option<f64>,
+    /// Texture every triangle with this PNG or JPEG (width and height powers of two, at most 1024),
+    /// instead of the scene's own texture (OBJ `map_Kd`, or teapot-floor's built-in checker). The
+    /// scene needs texture coordinates (OBJ `vt`; the built-in teapot has GLUT's). Golden backend.
+    #[arg(long)]
+    pub texture: Option<PathBuf>,
+    /// Texture filter (textured scenes only).
+    #[arg(long, value_enum)]
+    pub texture_filter: Option<TextureFilterArg>,
+    /// Texture-coordinate interpolation (textured scenes only).
+    #[arg(long, value_enum)]
+    pub texture_coords: Option<TextureCoordsArg>,
+    /// Texture addressing outside [0, 1) (textured scenes only).
+    #[arg(long, value_enum)]
+    pub texture_wrap: Option<TextureWrapArg>,
     /// Rendering architecture.
     #[arg(long, value_enum, default_value_t = ArchArg::Index)]
     pub arch: ArchArg,
@@ -268,6 +309,74 @@ pub fn render_options(args: &RenderArgs, mesh: &Mesh) -> Result<RenderOptions, S
             Some(TypeArg::Iii) => golden::raster::RcType::III,
             Some(TypeArg::Iv) | None => golden::raster::RcType::IV,
         },
+        texturing: texturing(args, mesh)?,
         ..RenderOptions::for_scene(mesh, screen, shading)
     })
+}
+
+/// The frame's texture: `--texture FILE`, else the scene's (the built-in checker for the textured
+/// built-in scenes, an OBJ material's `map_Kd`), else none. The filter, coordinate and wrap options
+/// need a texture.
+fn texturing(args: &RenderArgs, mesh: &Mesh) -> Result<Option<Texturing>, String> {
+    let (texture, source) = if let Some(path) = &args.texture {
+        (golden::texture::load(path)?, path.display().to_string())
+    } else if args.obj.is_none() && args.scene.as_deref().is_some_and(|n| builtin::TEXTURED_SCENES.contains(&n)) {
+        (golden::texture::checker(), "built-in checker".to_string())
+    } else {
+        // An OBJ's map_Kd: the first textured material's, in triangle order (the chipset holds one
+        // texture per frame).
+        let mut named: Vec<&std::path::Path> = Vec::new();
+        for t in &mesh.triangles {
+            if let Some(p) = mesh.materials.get(t.material as usize).and_then(|m| m.texture.as_deref()) {
+                if !named.contains(&p) {
+                    named.push(p);
+                }
+            }
+        }
+        match named.first() {
+            None => {
+                for (given, name) in [
+                    (args.texture_filter.is_some(), "--texture-filter"),
+                    (args.texture_coords.is_some(), "--texture-coords"),
+                    (args.texture_wrap.is_some(), "--texture-wrap"),
+                ] {
+                    if given {
+                        return Err(format!("{name} needs a texture: scene '{}' has none; give one with --texture FILE", mesh.name));
+                    }
+                }
+                return Ok(None);
+            }
+            Some(first) => {
+                if named.len() > 1 {
+                    eprintln!(
+                        "warning: scene '{}' names {} textures (map_Kd); the chipset holds one per frame, so {} textures every triangle",
+                        mesh.name,
+                        named.len(),
+                        first.display()
+                    );
+                }
+                (golden::texture::load(first)?, first.display().to_string())
+            }
+        }
+    };
+    if args.arch == ArchArg::Proof {
+        return Err("texture mapping is for --arch index; PROOF's shading has no texture".into());
+    }
+    Ok(Some(Texturing {
+        texture: std::sync::Arc::new(texture),
+        source,
+        filter: match args.texture_filter.unwrap_or(TextureFilterArg::Bilinear) {
+            TextureFilterArg::Nearest => Filter::Nearest,
+            TextureFilterArg::Bilinear => Filter::Bilinear,
+            TextureFilterArg::Trilinear => Filter::Trilinear,
+        },
+        coords: match args.texture_coords.unwrap_or(TextureCoordsArg::Perspective) {
+            TextureCoordsArg::Perspective => Coords::Perspective,
+            TextureCoordsArg::Affine => Coords::Affine,
+        },
+        wrap: match args.texture_wrap.unwrap_or(TextureWrapArg::Repeat) {
+            TextureWrapArg::Repeat => Wrap::Repeat,
+            TextureWrapArg::Clamp => Wrap::ClampToEdge,
+        },
+    }))
 }

@@ -621,7 +621,7 @@ struct FlatHost(Vec<golden::render::RcCommand>);
 impl golden::render::LowerPipeline for FlatHost {
     fn visible(&mut self, _frame: usize, position: usize) -> Result<golden::render::SetupCommand, String> {
         let t = self.0.get(position).ok_or("RC setup bench: a result for a triangle never sent")?;
-        Ok(golden::render::SetupCommand { index: t.index, v: t.v, values: [[0; 3]; 3], material: 0, flat: Some([255; 3]) })
+        Ok(golden::render::SetupCommand { index: t.index, v: t.v, values: [[0; 3]; 3], material: 0, flat: Some([255; 3]), tex: None })
     }
 }
 
@@ -636,6 +636,7 @@ fn per_triangle(chip: &mut dyn CycleChipset, kind: Stim) -> Result<f64, String> 
             shading: golden::shade::Shading::Flat,
             lights: golden::shade::PhongLights { l: vec![], h: vec![], materials: vec![] },
             background: [0; 3],
+            texturing: None,
         };
         let results = chip.run(&[job], &mut FlatHost(cmds))?.remove(0).results;
         // The stimulus must be what it claims, or the figure means something else.

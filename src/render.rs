@@ -23,6 +23,12 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         return Err("--vcd needs --backend rtl or --backend verilator".into());
     }
     if args.backend != BackendArg::Golden {
+        if let Some(t) = &opts.texturing {
+            return Err(format!(
+                "texture mapping ({}) is in the golden model only so far: the chipset's RTL has no texture port yet (issue 17); use --backend golden",
+                t.source
+            ));
+        }
         if opts.index_bits > RTL_INDEX_BITS {
             return Err(format!(
                 "--index-bits {}: the RTL's triangle index is {RTL_INDEX_BITS} bits; use --backend golden for wider indices",
@@ -65,6 +71,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "camera": opts.camera,
         "index_bits": opts.index_bits,
         "type": opts.rc_type.name(),
+        "texturing": opts.texturing,
         "backend": match args.backend { BackendArg::Golden => "golden", BackendArg::Rtl => "rtl", BackendArg::Verilator => "verilator" },
         "stats": frame.stats,
     });
@@ -84,6 +91,23 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         s.host_type_i.ops().cost(),
         s.host_type_ii.ops().cost()
     );
+    if let (Some(t), Some(ts)) = (&opts.texturing, &s.texture) {
+        let (w, h) = t.texture.size();
+        crate::say!(
+            "  texture {} ({w}x{h}, {} levels), {:?} {:?} {:?}: {} samples, {} texels read ({:.2} per sample); a traditional pipeline samples {} times with early Z ({:.1}% of those), {} without",
+            t.source,
+            t.texture.levels.len(),
+            t.filter,
+            t.coords,
+            t.wrap,
+            ts.samples,
+            ts.texels_read,
+            ts.texels_per_sample,
+            ts.traditional_samples_early_z,
+            ts.percent_of_early_z,
+            ts.traditional_samples
+        );
+    }
     let Some((phases, run_cycles, secs, vcd, diff)) = rtl else {
         crate::say!("  golden model: {golden_secs:.3} s");
         let files: Vec<PathBuf> = files.iter().map(|f| od.final_path(f)).collect();

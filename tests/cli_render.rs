@@ -278,3 +278,64 @@ fn type_iii_writes_the_same_frame_and_index_buffer_as_type_iv_and_says_which_it_
     assert_clean_error(&["render", "--scene", "castle", "--type", "V"], "--type");
     assert_clean_error(&["render", "--arch", "proof", "--scene", "castle", "--type", "III"], "--type applies to --arch index only");
 }
+
+/// stats.json of a run.
+fn stats_of(out: &Path) -> serde_json::Value {
+    serde_json::from_slice(&std::fs::read(out.join("stats.json")).unwrap()).unwrap()
+}
+
+#[test]
+fn the_textured_scene_renders_with_every_filter_and_both_coordinate_modes_and_counts_its_texels() {
+    let mut images = Vec::new();
+    for (filter, coords) in [("nearest", "perspective"), ("bilinear", "perspective"), ("trilinear", "perspective"), ("bilinear", "affine")] {
+        let out = temp_dir(&format!("tex-{filter}-{coords}"));
+        let (ok, stdout, err) = run(&["render", "--scene", "teapot-floor", "--texture-filter", filter, "--texture-coords", coords, "--out", out.to_str().unwrap()]);
+        assert!(ok, "{filter} {coords}: {err}");
+        assert!(stdout.contains("texture built-in checker"), "{stdout}");
+        let stats = stats_of(&out);
+        assert_eq!(stats["texturing"]["filter"], filter);
+        assert_eq!(stats["texturing"]["coords"], coords);
+        let s = &stats["stats"];
+        let t = &s["texture"];
+        let samples = t["samples"].as_u64().unwrap();
+        assert_eq!(samples, s["covered_pixels"].as_u64().unwrap(), "the CS samples each covered pixel once");
+        assert_eq!(t["traditional_samples_early_z"], s["rc"]["z_passes"]);
+        let texels = t["texels_read"].as_u64().unwrap();
+        match filter {
+            "nearest" => assert_eq!(texels, samples),
+            "bilinear" => assert_eq!(texels, 4 * samples),
+            _ => assert!(texels > 4 * samples && texels <= 8 * samples, "trilinear read {texels} texels for {samples} samples"),
+        }
+        images.push(std::fs::read(out.join("frame.png")).unwrap());
+    }
+    for i in 0..images.len() {
+        for j in i + 1..images.len() {
+            assert_ne!(images[i], images[j], "runs {i} and {j} drew the same image");
+        }
+    }
+}
+
+#[test]
+fn a_texture_file_textures_the_teapot_and_bad_texture_input_is_an_error_naming_it() {
+    let dir = temp_dir("texfiles");
+    let good = dir.join("good.png");
+    image::RgbImage::from_fn(8, 4, |x, y| image::Rgb([(x * 30) as u8, (y * 60) as u8, 200])).save(&good).unwrap();
+    let odd = dir.join("odd.png");
+    image::RgbImage::from_fn(6, 4, |_, _| image::Rgb([1, 2, 3])).save(&odd).unwrap();
+    let junk = write(&dir, "junk.png", "not an image");
+    let out = dir.join("out");
+    let o = out.to_str().unwrap();
+    let (ok, stdout, err) = run(&["render", "--scene", "teapot", "--texture", good.to_str().unwrap(), "--out", o]);
+    assert!(ok, "{err}");
+    assert!(stdout.contains("good.png (8x4, 4 levels)"), "{stdout}");
+    let before = snapshot(&out);
+    assert_clean_error(&["render", "--scene", "teapot", "--texture", dir.join("missing.png").to_str().unwrap(), "--out", o], "missing.png");
+    assert_clean_error(&["render", "--scene", "teapot", "--texture", odd.to_str().unwrap(), "--out", o], "powers of two");
+    assert_clean_error(&["render", "--scene", "teapot", "--texture", junk.to_str().unwrap(), "--out", o], "junk.png");
+    assert_clean_error(&["render", "--scene", "polyhedron", "--texture", good.to_str().unwrap(), "--out", o], "no texture coordinates");
+    assert_clean_error(&["render", "--scene", "polyhedron", "--texture-filter", "nearest", "--out", o], "--texture-filter needs a texture");
+    assert_clean_error(&["render", "--scene", "teapot-floor", "--texture-filter", "cubic", "--out", o], "cubic");
+    assert_clean_error(&["render", "--scene", "teapot-floor", "--backend", "rtl", "--out", o], "--backend golden");
+    assert_clean_error(&["render", "--scene", "teapot-floor", "--arch", "proof", "--out", o], "--arch index");
+    assert_eq!(snapshot(&out), before, "a failed run must leave the previous outputs as they were");
+}

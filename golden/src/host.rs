@@ -248,6 +248,9 @@ pub struct HwTriangle {
     pub source: u32,
     pub v: [WinVertex; 3],
     pub bary: [[f64; 3]; 3],
+    /// Each vertex's clip-space w (the eye-space depth, > 0 after clipping), for perspective-correct
+    /// texture coordinates.
+    pub w: [f64; 3],
 }
 
 /// Counts of the upper pipeline.
@@ -364,6 +367,7 @@ pub fn upper_pipeline(mesh: &Mesh, cam: &Camera, screen: Screen) -> Geometry {
                 source: ti as u32,
                 v: [win[0], win[k], win[k + 1]],
                 bary: [pieces[0].bary, pieces[k].bary, pieces[k + 1].bary],
+                w: [pieces[0].p[3], pieces[k].p[3], pieces[k + 1].p[3]],
             });
         }
     }

@@ -6,13 +6,32 @@
 //! 3. Lower pipeline (host), enhanced deferred lighting: only for source triangles with a visible
 //!    piece, transform the normals and light the vertices (Phong: normals only).
 //! 4. Colour setup (chipset): planes into TdbS at the triangle's index.
-//! 5. CS: scan the I-buffer out, evaluate, produce RGB888.
+//! 5. CS: scan the I-buffer out, evaluate, produce RGB888; with a texture, sample it at the pixel's
+//!    texture coordinate (from three more planes in TdbS) and MODULATE the colour by it (issue 17:
+//!    golden model only so far).
 
 use crate::format::{max_index, Screen, WinVertex, INDEX_BACKGROUND};
 use crate::host::{eye_normals, normalize, to_rgb8, upper_pipeline, Camera, ClipStats, Geometry, HostOps, Lighting, Ops};
 use crate::raster::{Culled, CullMode, FrontFace, RcCounts, RcType, Rasterizer, TriResult};
 use crate::scene::Mesh;
 use crate::shade::{colour_setup, flat_setup, normal_q14, PhongLights, Shading, TdbsEntry};
+use crate::texcoord::{Coords, TexPlanes};
+use crate::texture::{modulate, Filter, Texture, Wrap};
+use std::sync::Arc;
+
+/// Texture mapping for a frame (issue 17): one texture, bound for the whole frame as OpenGL's
+/// GL_TEXTURE_2D state is, applied to every triangle (a triangle without texture coordinates has
+/// (0, 0) at its corners, as OpenGL's current texture coordinate defaults).
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Texturing {
+    #[serde(skip)]
+    pub texture: Arc<Texture>,
+    /// Where the texture came from (a file, or `built-in checker`), for reports.
+    pub source: String,
+    pub filter: Filter,
+    pub coords: Coords,
+    pub wrap: Wrap,
+}
 
 /// A triangle command for the RC: its hardware index (1..) and window vertices.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -30,6 +49,9 @@ pub struct SetupCommand {
     pub values: [[i64; 3]; 3],
     pub material: u16,
     pub flat: Option<[u8; 3]>,
+    /// The texture planes' vertex values (s/w, t/w, 1/w; [`crate::texcoord::vertex_values`]) when
+    /// the frame is textured.
+    pub tex: Option<[[i64; 3]; 3]>,
 }
 
 /// What the CS produced: RGB888 in raster order, and the I-buffer it read (hardware indices).
@@ -49,6 +71,7 @@ pub struct FrameJob {
     pub shading: Shading,
     pub lights: PhongLights,
     pub background: [u8; 3],
+    pub texturing: Option<Texturing>,
 }
 
 /// The host's lower pipeline (enhanced deferred lighting) as the chipset sees it: asked for a
@@ -67,6 +90,9 @@ pub struct FrameOut {
     pub scan: ScanOut,
     /// The RC's fragment counters, if the chipset keeps them.
     pub rc_counts: Option<RcCounts>,
+    /// The CS's texture counters (textured pixels, texels read), if the frame was textured and the
+    /// chipset keeps them.
+    pub texture_counts: Option<(u64, u64)>,
 }
 
 /// The chipset as the host sees it. Implemented by [`GoldenChipset`] (the algorithmic model) and, in
@@ -83,6 +109,11 @@ pub trait Chipset {
 pub struct GoldenChipset {
     pub rc: Rasterizer,
     pub tdbs: Vec<TdbsEntry>,
+    /// The texture planes of each index (TdbS's texture part), when the frame is textured.
+    pub tdbt: Vec<Option<TexPlanes>>,
+    /// Texels the CS read in the last frame, and the pixels it textured.
+    pub texels_read: u64,
+    pub textured_pixels: u64,
     /// The colour-setup commands of the last run, in the order they were sent.
     pub setups: Vec<SetupCommand>,
 }
@@ -94,13 +125,15 @@ impl GoldenChipset {
     }
 
     pub fn of_type(screen: Screen, ty: RcType) -> GoldenChipset {
-        GoldenChipset { rc: Rasterizer::of_type(screen, ty), tdbs: Vec::new(), setups: Vec::new() }
+        GoldenChipset { rc: Rasterizer::of_type(screen, ty), tdbs: Vec::new(), tdbt: Vec::new(), texels_read: 0, textured_pixels: 0, setups: Vec::new() }
     }
 
     fn colour_setup(&mut self, c: &SetupCommand) {
         if self.tdbs.len() <= c.index as usize {
             self.tdbs.resize(c.index as usize + 1, TdbsEntry::default());
+            self.tdbt.resize(c.index as usize + 1, None);
         }
+        self.tdbt[c.index as usize] = c.tex.map(|values| crate::texcoord::setup(&c.v, values));
         self.tdbs[c.index as usize] = match c.flat {
             Some(rgb) => flat_setup(rgb),
             None => colour_setup(&c.v, c.values, c.material),
@@ -108,8 +141,9 @@ impl GoldenChipset {
         self.setups.push(*c);
     }
 
-    fn scanout(&self, shading: Shading, lights: &PhongLights, background: [u8; 3]) -> ScanOut {
+    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3], texturing: Option<&Texturing>) -> ScanOut {
         let s = self.rc.screen;
+        (self.texels_read, self.textured_pixels) = (0, 0);
         let mut rgb = Vec::with_capacity(s.pixels() * 3);
         for y in 0..s.height {
             for x in 0..s.width {
@@ -118,9 +152,19 @@ impl GoldenChipset {
                     background
                 } else {
                     let e = &self.tdbs[i as usize];
-                    match shading {
+                    let colour = match shading {
                         Shading::Phong => lights.shade([0, 1, 2].map(|k| e.planes[k].eval(x, y)), e.material),
                         _ => [0, 1, 2].map(|k| e.planes[k].eval_clamped(x, y, 255) as u8),
+                    };
+                    match (texturing, self.tdbt[i as usize]) {
+                        (Some(tx), Some(planes)) => {
+                            let l0 = &tx.texture.levels[0];
+                            let c = planes.eval(x, y, l0.w_log2, l0.h_log2);
+                            self.texels_read += tx.texture.texels_read(c.lod, tx.filter) as u64;
+                            self.textured_pixels += 1;
+                            modulate(tx.texture.sample(c.s, c.t, c.lod, tx.filter, tx.wrap), colour)
+                        }
+                        _ => colour,
                     }
                 };
                 rgb.extend_from_slice(&px);
@@ -145,8 +189,9 @@ impl Chipset for GoldenChipset {
                 }
                 results.push(r);
             }
-            let scan = self.scanout(job.shading, &job.lights, job.background);
-            out.push(FrameOut { results, scan, rc_counts: Some(self.rc.counts) });
+            let scan = self.scanout(job.shading, &job.lights, job.background, job.texturing.as_ref());
+            let texture_counts = job.texturing.as_ref().map(|_| (self.textured_pixels, self.texels_read));
+            out.push(FrameOut { results, scan, rc_counts: Some(self.rc.counts), texture_counts });
         }
         Ok(out)
     }
@@ -165,6 +210,8 @@ pub struct RenderOptions {
     pub background: [u8; 3],
     /// Seed 000's Type IV (Z-buffer, the default) or Type III (depth regenerated from TdbV).
     pub rc_type: RcType,
+    /// Texture mapping (issue 17), off by default.
+    pub texturing: Option<Texturing>,
 }
 
 /// The background colour of every frame (index 0 in the I-buffer).
@@ -189,6 +236,7 @@ impl RenderOptions {
             index_bits: crate::format::INDEX_BITS_DEFAULT,
             background: BACKGROUND,
             rc_type: RcType::IV,
+            texturing: None,
         }
     }
 }
@@ -232,6 +280,25 @@ pub struct FrameStats {
     /// Type II (lighting before culling): all normals transformed, all (a) lit.
     pub host_type_ii: HostOps,
     pub clip: ClipStats,
+    /// Texture mapping's counts, when the frame is textured.
+    pub texture: Option<TextureStats>,
+}
+
+/// What texturing a frame cost, deferred (the CS textures each covered pixel once, seed 000 §III)
+/// against a traditional pipeline that textures every fragment it writes.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct TextureStats {
+    /// Pixels the CS textured: one texture sample each (every covered pixel).
+    pub samples: u64,
+    /// Texels the CS read (1 per sample nearest, 4 bilinear, 4 or 8 trilinear).
+    pub texels_read: u64,
+    pub texels_per_sample: f64,
+    /// Samples a traditional pipeline takes: one per fragment that passes an early Z-test (the RC's
+    /// Z passes), and one per fragment when texturing comes before the Z-test.
+    pub traditional_samples_early_z: u64,
+    pub traditional_samples: u64,
+    /// Deferred samples as a percentage of the traditional pipeline's with early Z.
+    pub percent_of_early_z: f64,
 }
 
 /// A rendered frame.
@@ -280,6 +347,9 @@ impl<'a> HostFrame<'a> {
                 limit
             ));
         }
+        if opts.texturing.is_some() && mesh.triangle_texcoords.is_empty() {
+            return Err(format!("scene '{}' has no texture coordinates (OBJ `vt`), so it cannot be textured", mesh.name));
+        }
         let cmds: Vec<RcCommand> = geo.hw.iter().enumerate().map(|(i, t)| RcCommand { index: i as u32 + 1, v: t.v }).collect();
         let n = mesh.triangles.len();
         let host = geo.ops;
@@ -294,6 +364,7 @@ impl<'a> HostFrame<'a> {
             shading: self.opts.shading,
             lights: PhongLights::new(&self.opts.lighting, &self.mesh.materials),
             background: self.opts.background,
+            texturing: self.opts.texturing.clone(),
         }
     }
 
@@ -331,14 +402,26 @@ impl<'a> HostFrame<'a> {
             }
             (None, None) => unreachable!("lit above"),
         };
+        // Texture coordinates: a clipped piece's are its barycentric mix of the source corners' (linear
+        // in clip space), with the piece's own clip w.
+        let tex = match &opts.texturing {
+            None => None,
+            Some(tx) => {
+                let st = mesh.triangle_texcoords[s].map(|k| mesh.texcoords[k as usize]);
+                let mix = |b: [f64; 3]| [0, 1].map(|c| b[0] * st[0][c] + b[1] * st[1][c] + b[2] * st[2][c]);
+                let values = crate::texcoord::vertex_values(t.w, t.bary.map(mix), tx.coords)
+                    .map_err(|e| format!("scene '{}', triangle {}: {e}", mesh.name, s + 1))?;
+                Some(values)
+            }
+        };
         self.setups += 1;
-        Ok(SetupCommand { index: position as u32 + 1, v: t.v, values, material: tri.material as u16, flat })
+        Ok(SetupCommand { index: position as u32 + 1, v: t.v, values, material: tri.material as u16, flat, tex })
     }
 
     /// The frame and its statistics from what the chipset returned.
     fn finish(self, out: FrameOut) -> Result<Frame, String> {
         let (mesh, opts, geo) = (self.mesh, self.opts, &self.geo);
-        let FrameOut { results, scan: out, rc_counts } = out;
+        let FrameOut { results, scan: out, rc_counts, texture_counts } = out;
         if results.len() != self.cmds.len() {
             return Err(format!("chipset returned {} results for {} triangles", results.len(), self.cmds.len()));
         }
@@ -430,6 +513,18 @@ impl<'a> HostFrame<'a> {
             host_type_i: HostOps { view_normals: 3 * a, lighting: lit_b, ..geometry },
             host_type_ii: HostOps { view_normals: 3 * a, lighting: lit_a, ..geometry },
             clip: geo.clip,
+            texture: match (&opts.texturing, texture_counts) {
+                (None, _) => None,
+                (Some(_), None) => return Err("the chipset did not report its texture counters for a textured frame".into()),
+                (Some(_), Some((samples, texels_read))) => Some(TextureStats {
+                    samples,
+                    texels_read,
+                    texels_per_sample: if samples == 0 { 0.0 } else { texels_read as f64 / samples as f64 },
+                    traditional_samples_early_z: rc.z_passes,
+                    traditional_samples: rc.fragments,
+                    percent_of_early_z: if rc.z_passes == 0 { 0.0 } else { 100.0 * samples as f64 / rc.z_passes as f64 },
+                }),
+            },
         };
         Ok(Frame { screen: opts.screen, rgb: out.rgb, index, hw_index: out.ibuf, zbuf: out.zbuf, results, stats })
     }

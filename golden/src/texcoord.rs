@@ -31,7 +31,8 @@ pub const GUARD_BITS: u32 = 4;
 pub const TEXCOORD_RANGE: f64 = 2048.0;
 
 /// How texture coordinates are interpolated.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Coords {
     /// s/w, t/w and 1/w planes and a division per pixel (OpenGL's result).
     Perspective,

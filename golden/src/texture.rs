@@ -27,7 +27,8 @@ pub const WEIGHT_FRAC: u32 = 8;
 pub const LOD_FRAC: u32 = 4;
 
 /// What a texture coordinate outside [0, 1) does.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Wrap {
     /// The texture repeats (OpenGL's GL_REPEAT).
     Repeat,
@@ -36,7 +37,8 @@ pub enum Wrap {
 }
 
 /// How a texel colour is formed from the footprint.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Filter {
     Nearest,
     Bilinear,
@@ -198,6 +200,45 @@ impl Texture {
             }
         }
     }
+}
+
+impl Texture {
+    /// Texels [`Texture::sample`] reads for a pixel at level of detail `lod`: one (nearest), four
+    /// (bilinear), eight (trilinear between two levels) or four (trilinear at a whole level or at the
+    /// last level, where it is bilinear).
+    pub fn texels_read(&self, lod: u8, filter: Filter) -> u32 {
+        let level = (lod >> LOD_FRAC) as usize;
+        match filter {
+            Filter::Nearest => 1,
+            Filter::Bilinear => 4,
+            Filter::Trilinear if level + 1 >= self.levels.len() || lod & ((1 << LOD_FRAC) - 1) == 0 => 4,
+            Filter::Trilinear => 8,
+        }
+    }
+
+    /// Level 0's width and height.
+    pub fn size(&self) -> (u32, u32) {
+        (1 << self.levels[0].w_log2, 1 << self.levels[0].h_log2)
+    }
+}
+
+/// The built-in texture: a 256x256 checkerboard of 8x8 squares, cream and brick red, with a thin dark
+/// line along each square's top and left edge so that magnification and filtering show.
+pub fn checker() -> Texture {
+    let (cream, brick, line) = ([236, 226, 200], [170, 60, 40], [40, 36, 32]);
+    let texels = (0..256u32 * 256)
+        .map(|i| {
+            let (x, y) = (i % 256, i / 256);
+            if x % 32 == 0 || y % 32 == 0 {
+                line
+            } else if (x / 32 + y / 32) % 2 == 0 {
+                cream
+            } else {
+                brick
+            }
+        })
+        .collect();
+    Texture::new(256, 256, texels).expect("256x256 is a valid texture size")
 }
 
 /// A texture from a PNG or JPEG file (any colour type, taken as RGB8: alpha is dropped), with its

@@ -99,6 +99,7 @@ fn every_builtin_scene_rasterizes_exactly_as_the_oracle() {
             lighting: Default::default(),
             index_bits: 16,
             rc_type: golden::raster::RcType::IV,
+            texturing: None,
             background: [0, 0, 0],
         };
         let geo = golden::host::upper_pipeline(&mesh, &opts.camera, screen);

@@ -701,6 +701,12 @@ pub(crate) struct FrameRun {
 impl FrameRun {
     /// The RC words and scan parameters of `job`; `clear`: the frame clears its bank itself.
     pub(crate) fn new(job: &FrameJob, clear: bool) -> Result<FrameRun, String> {
+        if let Some(t) = &job.texturing {
+            return Err(format!(
+                "texture mapping ({}) is in the golden model only: the chipset's RTL has no texture port yet (issue 17); use --backend golden",
+                t.source
+            ));
+        }
         let cmds = crate::rc::stimulus::job_frame(job, clear)?;
         let phong = job.shading == Shading::Phong;
         Ok(FrameRun {
@@ -937,6 +943,7 @@ impl<T: ChipsetTop> Chipset for RtlChipsetOf<T> {
                     results: std::mem::take(&mut fr.results),
                     scan: ScanOut { rgb: Vec::new(), ibuf, zbuf },
                     rc_counts: None,
+                    texture_counts: None,
                 });
                 res_f += 1;
             }

@@ -196,6 +196,7 @@ mod tests {
             lighting: Lighting::default(),
             index_bits: 16,
             rc_type: crate::raster::RcType::IV,
+            texturing: None,
             background: [0, 0, 0],
         }
     }

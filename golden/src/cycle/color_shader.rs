@@ -452,6 +452,7 @@ mod tests {
             lighting: Default::default(),
             index_bits: 16,
             rc_type: crate::raster::RcType::IV,
+            texturing: None,
             background: bg,
         };
         let mut chip = GoldenChipset::new(screen);

@@ -203,6 +203,7 @@ mod tests {
             lighting: Default::default(),
             index_bits: 16,
             rc_type: crate::raster::RcType::IV,
+            texturing: None,
             background: [10, 20, 30],
         };
         let mut rec = GoldenChipset::new(screen);
@@ -275,6 +276,7 @@ mod tests {
             values: [[0; 3]; 3],
             material: 0,
             flat: None,
+            tex: None,
         };
         assert!(SetupCmd::from_command(&good).is_ok());
         let e = SetupCmd::from_command(&SetupCommand { index: 70000, ..good }).unwrap_err();

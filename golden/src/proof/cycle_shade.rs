@@ -413,6 +413,7 @@ mod tests {
             lighting: crate::host::Lighting::default(),
             index_bits: 16,
             rc_type: crate::raster::RcType::IV,
+            texturing: None,
             background: [24, 24, 40],
         }
     }

@@ -6,6 +6,7 @@
 //! | `teapot` | GLUT's glutSolidTeapot at grid 14 | 12544 | the seeds' "Teapot": many small triangles, 112 of zero area |
 //! | `castle` | walls and towers hiding each other | 3000 | the seeds' "Castle": high depth complexity, ~20% visible |
 //! | `dolphins` | three smooth bodies leaping in an arc | 3000 | the seeds' "Dolphins": few, mostly convex, smooth bodies |
+//! | `teapot-floor` | the teapot on a checkered floor, textured with [`crate::texture::checker`] | 12546 | texture mapping (issue 17): the floor's two big triangles recede, so perspective-correct and affine coordinates differ plainly and the far squares need mipmaps |
 //!
 //! Everything is deterministic (no random numbers), every normal has unit length and every mesh
 //! passes [`Mesh::validate`].
@@ -19,6 +20,9 @@ pub const SCENES: &[&str] = &["polyhedron", "teapot", "castle", "dolphins"];
 /// keeps one triangle per pixel and refuses them (render them there with `--opacity 1`).
 pub const TRANSPARENT_SCENES: &[&str] = &["glass"];
 
+/// Built-in scenes drawn with a texture (issue 17): the built-in checker unless `--texture` names one.
+pub const TEXTURED_SCENES: &[&str] = &["teapot-floor"];
+
 /// The teapot's grid as GLUT 3.7's glutSolidTeapot draws it (`teapot_glut.md`).
 pub const TEAPOT_GRID: u32 = 14;
 
@@ -30,7 +34,14 @@ pub fn scene(name: &str) -> Result<Mesh, String> {
         "castle" => Ok(castle()),
         "dolphins" => Ok(dolphins()),
         "glass" => Ok(glass()),
-        _ => Err(format!("unknown scene '{}'; the built-in scenes are: {}, {}", name, SCENES.join(", "), TRANSPARENT_SCENES.join(", "))),
+        "teapot-floor" => Ok(teapot_floor()),
+        _ => Err(format!(
+            "unknown scene '{}'; the built-in scenes are: {}, {}, {}",
+            name,
+            SCENES.join(", "),
+            TEXTURED_SCENES.join(", "),
+            TRANSPARENT_SCENES.join(", ")
+        )),
     }
 }
 
@@ -292,6 +303,38 @@ pub fn teapot(grid: u32) -> Mesh {
     // Texture coordinates are per grid vertex, as positions and normals are.
     let triangle_texcoords = triangles.iter().map(|t| t.v).collect();
     Mesh { name: "teapot".into(), positions, normals, materials: vec![teapot_colour], triangles, front_face: Winding::Cw, texcoords, triangle_texcoords }
+}
+
+/// The floor of [`teapot_floor`]: y just below the teapot's base (-0.75), x in +-FLOOR_HALF, z from
+/// -FLOOR_BACK (away from the default view) to +FLOOR_HALF, the texture repeated once per
+/// FLOOR_TILE units.
+pub const FLOOR_Y: f64 = -0.7505;
+pub const FLOOR_HALF: f64 = 3.0;
+pub const FLOOR_BACK: f64 = 12.0;
+pub const FLOOR_TILE: f64 = 2.0;
+
+/// The teapot (grid 14, GLUT's texture coordinates) standing near the front of a long floor of two
+/// triangles that goes into the distance, its texture repeated every [`FLOOR_TILE`] units. Both are textured by the same texture
+/// (one texture per frame, as the chipset holds one).
+pub fn teapot_floor() -> Mesh {
+    let mut m = teapot(TEAPOT_GRID);
+    m.name = "teapot-floor".into();
+    let base = m.positions.len() as u32;
+    let (h, y, back) = (FLOOR_HALF, FLOOR_Y, FLOOR_BACK);
+    // Corners a (-x, -z), b (+x, -z), c (+x, +z), d (-x, +z): (a, b, c) and (a, c, d) are clockwise
+    // seen from above, the teapot's front-face winding.
+    for p in [[-h, y, -back], [h, y, -back], [h, y, h], [-h, y, h]] {
+        m.positions.push(p);
+        m.texcoords.push([(p[0] + h) / FLOOR_TILE, (p[2] + back) / FLOOR_TILE]);
+    }
+    let n = m.normals.len() as u32;
+    m.normals.push([0.0, 1.0, 0.0]);
+    m.materials.push(material([0.85, 0.85, 0.85], 0.2, 8));
+    for v in [[base, base + 1, base + 2], [base, base + 2, base + 3]] {
+        m.triangles.push(Triangle { v, n: [n; 3], material: 1 });
+        m.triangle_texcoords.push(v);
+    }
+    m
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -45,6 +45,7 @@ pub fn record(name: &str, shading: Shading, width: u32, height: u32) -> Result<R
         lighting: Default::default(),
         index_bits: 16,
         rc_type: golden::raster::RcType::IV,
+        texturing: None,
         background,
     };
     let mut chip = GoldenChipset::new(screen);

@@ -21,6 +21,7 @@ pub fn scene(name: &str, grid: u32, w: u32, h: u32) -> ProofScene {
         lighting: golden::host::Lighting::default(),
         index_bits: 16,
         rc_type: golden::raster::RcType::IV,
+        texturing: None,
         background: [24, 24, 40],
     };
     scene_setup(&mesh, &opts).unwrap()

@@ -188,6 +188,7 @@ fn scene_options(mesh: &golden::scene::Mesh, w: u32, h: u32) -> golden::render::
         lighting: golden::host::Lighting::default(),
         index_bits: 16,
         rc_type: golden::raster::RcType::IV,
+        texturing: None,
         background: [24, 24, 40],
     }
 }

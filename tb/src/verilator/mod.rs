@@ -551,7 +551,7 @@ impl Chipset for VerilatorChipset {
                     if fr.results.len() != fr.tris.len() {
                         return Err(format!("chipset: {} results for {} triangles", fr.results.len(), fr.tris.len()));
                     }
-                    outs[fi] = Some(FrameOut { results: std::mem::take(&mut fr.results), scan: ScanOut { rgb: Vec::new(), ibuf: ib, zbuf: zb }, rc_counts: None });
+                    outs[fi] = Some(FrameOut { results: std::mem::take(&mut fr.results), scan: ScanOut { rgb: Vec::new(), ibuf: ib, zbuf: zb }, rc_counts: None, texture_counts: None });
                 }
                 "O" => {
                     let (fi, count) = (num(1)? as usize, num(2)? as usize);
