@@ -251,7 +251,7 @@ pub fn render_options(args: &RenderArgs, mesh: &Mesh) -> Result<RenderOptions, S
     if !(args.fovy.is_finite() && args.fovy > 0.0 && args.fovy < 180.0) {
         return Err(format!("--fovy {:?}: the vertical field of view must be in (0, 180) degrees", args.fovy));
     }
-    let mut camera = Camera::framing_aspect(mesh, [0.3, 0.45, 1.0], args.fovy, screen.width as f64 / screen.height as f64);
+    let mut camera = Camera::for_mesh(mesh, args.fovy, screen.width as f64 / screen.height as f64);
     camera.up = up;
     let in_range = |name: &str, p: [f64; 3]| -> Result<[f64; 3], String> {
         match p.iter().find(|v| v.abs() > CAMERA_RANGE) {

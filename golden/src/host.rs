@@ -80,7 +80,18 @@ impl Camera {
     /// The default view of the `render` command: from direction (0.3, 0.45, 1), 40 degrees, framed for
     /// the screen's aspect ratio.
     pub fn default_view(mesh: &Mesh, screen: Screen) -> Camera {
-        Camera::framing_aspect(mesh, [0.3, 0.45, 1.0], 40.0, screen.width as f64 / screen.height as f64)
+        Camera::for_mesh(mesh, 40.0, screen.width as f64 / screen.height as f64)
+    }
+
+    /// The mesh's own view ([`Mesh::view`]) if it has one, else the whole mesh framed from the usual
+    /// direction; near and far enclose the bounding sphere.
+    pub fn for_mesh(mesh: &Mesh, fovy_deg: f64, aspect: f64) -> Camera {
+        let mut c = Camera::framing_aspect(mesh, [0.3, 0.45, 1.0], fovy_deg, aspect);
+        if let Some(v) = mesh.view {
+            (c.eye, c.center) = (v.eye, v.center);
+            (c.near, c.far) = Camera::near_far_for(mesh, v.eye);
+        }
+        c
     }
 
     /// Near and far from the bounding sphere for a given eye (the CLI's default when only the eye is given).

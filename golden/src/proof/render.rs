@@ -204,7 +204,7 @@ mod tests {
             positions.push([a.cos(), a.sin(), 0.0]);
         }
         let triangles = (0..n).map(|k| Triangle { v: [0, 1 + k as u32, 1 + ((k + 1) % n) as u32], n: [0; 3], material: 0 }).collect();
-        Mesh { name: "fan".into(), positions, normals: vec![[0.0, 0.0, 1.0]], materials: vec![Material::plastic([0.7, 0.7, 0.7])], triangles, front_face: Winding::Ccw, texcoords: Vec::new(), triangle_texcoords: Vec::new() }
+        Mesh { name: "fan".into(), positions, normals: vec![[0.0, 0.0, 1.0]], materials: vec![Material::plastic([0.7, 0.7, 0.7])], triangles, front_face: Winding::Ccw, texcoords: Vec::new(), triangle_texcoords: Vec::new(), view: None }
     }
 
     /// Every pixel of a box outside an object's row span has no entry, so the lists built from the

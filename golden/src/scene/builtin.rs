@@ -11,7 +11,7 @@
 //! Everything is deterministic (no random numbers), every normal has unit length and every mesh
 //! passes [`Mesh::validate`].
 
-use super::{Material, Mesh, Triangle, Winding};
+use super::{Material, Mesh, Triangle, View, Winding};
 
 /// Names accepted by [`scene`], in the order a user interface should list them.
 pub const SCENES: &[&str] = &["polyhedron", "teapot", "castle", "dolphins"];
@@ -98,7 +98,7 @@ pub fn polyhedron() -> Mesh {
     let normals = vec![face_normal(0), face_normal(3)];
     let materials = vec![Material::plastic([0.9, 0.15, 0.1]), Material::plastic([0.1, 0.25, 0.9])];
     let triangles = vec![Triangle { v: [0, 1, 2], n: [0, 0, 0], material: 0 }, Triangle { v: [3, 4, 5], n: [1, 1, 1], material: 1 }];
-    Mesh { name: "polyhedron".into(), positions, normals, materials, triangles, front_face: Winding::Ccw, texcoords: Vec::new(), triangle_texcoords: Vec::new() }
+    Mesh { name: "polyhedron".into(), positions, normals, materials, triangles, front_face: Winding::Ccw, texcoords: Vec::new(), triangle_texcoords: Vec::new(), view: None }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -302,7 +302,7 @@ pub fn teapot(grid: u32) -> Mesh {
     let teapot_colour = Material { ambient: [0.75, 0.5, 0.22], diffuse: [0.75, 0.5, 0.22], specular: [0.9, 0.9, 0.9], gloss: 16, opacity: 1.0, texture: None };
     // Texture coordinates are per grid vertex, as positions and normals are.
     let triangle_texcoords = triangles.iter().map(|t| t.v).collect();
-    Mesh { name: "teapot".into(), positions, normals, materials: vec![teapot_colour], triangles, front_face: Winding::Cw, texcoords, triangle_texcoords }
+    Mesh { name: "teapot".into(), positions, normals, materials: vec![teapot_colour], triangles, front_face: Winding::Cw, texcoords, triangle_texcoords, view: None }
 }
 
 /// The floor of [`teapot_floor`]: y just below the teapot's base (-0.75), x in +-FLOOR_HALF, z from
@@ -319,6 +319,8 @@ pub const FLOOR_TILE: f64 = 2.0;
 pub fn teapot_floor() -> Mesh {
     let mut m = teapot(TEAPOT_GRID);
     m.name = "teapot-floor".into();
+    // Low over the front of the floor, looking along it past the teapot.
+    m.view = Some(View { eye: [1.2, 1.3, 5.0], center: [0.0, -0.4, -3.0] });
     let base = m.positions.len() as u32;
     let (h, y, back) = (FLOOR_HALF, FLOOR_Y, FLOOR_BACK);
     // Corners a (-x, -z), b (+x, -z), c (+x, +z), d (-x, +z): (a, b, c) and (a, c, d) are clockwise
@@ -487,6 +489,7 @@ impl MeshBuilder {
                 front_face: Winding::Ccw,
                 texcoords: Vec::new(),
                 triangle_texcoords: Vec::new(),
+                view: None,
             },
         }
     }

@@ -68,6 +68,16 @@ pub struct Mesh {
     /// Per triangle (parallel to `triangles`), its corners' indices into `texcoords`; empty when the
     /// mesh has no texture coordinates.
     pub triangle_texcoords: Vec<[u32; 3]>,
+    /// The scene's own default view, if framing the whole mesh from the usual direction does not
+    /// show it well (teapot-floor's long floor).
+    pub view: Option<View>,
+}
+
+/// A default eye and point looked at (gluLookAt), in object space.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct View {
+    pub eye: [f64; 3],
+    pub center: [f64; 3],
 }
 
 impl Mesh {

@@ -97,6 +97,7 @@ pub fn load_obj_with_warnings(path: &Path) -> Result<(Mesh, Vec<String>), String
         front_face: Winding::Ccw,
         texcoords: Vec::new(),
         triangle_texcoords: Vec::new(),
+        view: None,
     };
     let mut default_material = None;
     for model in &models {
