@@ -18,8 +18,9 @@ pub struct Material {
     pub specular: [f64; 3],
     pub gloss: u32,
     pub opacity: f64,
-    /// The diffuse texture (MTL's `map_Kd`, resolved against the OBJ file's directory), not yet drawn:
-    /// texture mapping is issue 17's, in progress.
+    /// The diffuse texture (MTL's `map_Kd`, resolved against the OBJ file's directory). The chipset
+    /// holds one texture per frame: `render` textures every triangle with the first one a triangle
+    /// names (docs/texture.md).
     pub texture: Option<std::path::PathBuf>,
 }
 
