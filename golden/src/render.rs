@@ -299,6 +299,9 @@ pub struct TextureStats {
     pub traditional_samples: u64,
     /// Deferred samples as a percentage of the traditional pipeline's with early Z.
     pub percent_of_early_z: f64,
+    /// Visible triangles whose texture values the host scaled down to keep the planes in range
+    /// (`texcoord::fit`: slivers, coordinates less precise).
+    pub scaled_triangles: u64,
 }
 
 /// A rendered frame.
@@ -327,6 +330,8 @@ struct HostFrame<'a> {
     flat_rgb: Vec<Option<[u8; 3]>>,
     /// Colour-setup commands handed out.
     setups: u64,
+    /// Of those, the ones whose texture values `texcoord::fit` scaled down.
+    tex_scaled: u64,
 }
 
 impl<'a> HostFrame<'a> {
@@ -353,7 +358,7 @@ impl<'a> HostFrame<'a> {
         let cmds: Vec<RcCommand> = geo.hw.iter().enumerate().map(|(i, t)| RcCommand { index: i as u32 + 1, v: t.v }).collect();
         let n = mesh.triangles.len();
         let host = geo.ops;
-        Ok(HostFrame { mesh, opts, geo, cmds, host, lit: vec![None; n], flat_rgb: vec![None; n], setups: 0 })
+        Ok(HostFrame { mesh, opts, geo, cmds, host, lit: vec![None; n], flat_rgb: vec![None; n], setups: 0, tex_scaled: 0 })
     }
 
     fn job(&self) -> FrameJob {
@@ -411,6 +416,8 @@ impl<'a> HostFrame<'a> {
                 let mix = |b: [f64; 3]| [0, 1].map(|c| b[0] * st[0][c] + b[1] * st[1][c] + b[2] * st[2][c]);
                 let values = crate::texcoord::vertex_values(t.w, t.bary.map(mix), tx.coords)
                     .map_err(|e| format!("scene '{}', triangle {}: {e}", mesh.name, s + 1))?;
+                let (values, k) = crate::texcoord::fit(&t.v, values);
+                self.tex_scaled += (k > 0) as u64;
                 Some(values)
             }
         };
@@ -523,6 +530,7 @@ impl<'a> HostFrame<'a> {
                     traditional_samples_early_z: rc.z_passes,
                     traditional_samples: rc.fragments,
                     percent_of_early_z: if rc.z_passes == 0 { 0.0 } else { 100.0 * samples as f64 / rc.z_passes as f64 },
+                    scaled_triangles: self.tex_scaled,
                 }),
             },
         };

@@ -193,3 +193,22 @@ fn mip_levels_match_the_ray_cast_footprint(tw: u32, th: u32) {
         assert!(s_decides * 4 > checked, "{tw}x{th}: s decides the level on only {s_decides} of {checked} pixels");
     }
 }
+
+#[test]
+fn no_visible_triangle_of_the_textured_scenes_saturates_its_texture_planes() {
+    // The texture planes share the colour planes' 40-bit gradients (docs/texture.md, "Known limit"):
+    // a saturated plane would put wrong coordinates on its pixels. The built-in scenes must not hit it.
+    for (mesh, sizes) in [(builtin::teapot_floor(), [(320, 200), (640, 480)]), (builtin::teapot(builtin::TEAPOT_GRID), [(320, 200), (640, 480)])] {
+        for (w, h) in sizes {
+            for coords in [Coords::Perspective, Coords::Affine] {
+                let o = RenderOptions { texturing: textured(golden::texture::checker(), Filter::Bilinear, coords), ..RenderOptions::for_scene(&mesh, Screen::new(w, h).unwrap(), Shading::Gouraud) };
+                let mut chip = golden::render::GoldenChipset::new(o.screen);
+                golden::render::render_with(&mesh, &o, &mut chip).unwrap();
+                let planes: Vec<_> = chip.tdbt.iter().flatten().collect();
+                assert!(planes.len() > 100, "{} {w}x{h}: only {} textured triangles", mesh.name, planes.len());
+                let bad = planes.iter().filter(|p| p.saturated()).count();
+                assert_eq!(bad, 0, "{} {w}x{h} {coords:?}: {bad} of {} visible triangles saturate their texture planes", mesh.name, planes.len());
+            }
+        }
+    }
+}
