@@ -339,3 +339,34 @@ fn a_texture_file_textures_the_teapot_and_bad_texture_input_is_an_error_naming_i
     assert_clean_error(&["render", "--scene", "teapot-floor", "--arch", "proof", "--out", o], "--arch index");
     assert_eq!(snapshot(&out), before, "a failed run must leave the previous outputs as they were");
 }
+
+#[test]
+fn an_obj_with_a_diffuse_map_is_textured_by_it_and_a_second_map_is_a_warning() {
+    let d = temp_dir("objtex");
+    // A quad mapped once with a 2x2 texture, red at the top left (t = 0 is the first row).
+    image::RgbImage::from_fn(2, 2, |x, y| if (x + y) % 2 == 0 { image::Rgb([255, 0, 0]) } else { image::Rgb([0, 0, 255]) }).save(d.join("red.png")).unwrap();
+    image::RgbImage::from_fn(2, 2, |_, _| image::Rgb([0, 255, 0])).save(d.join("green.png")).unwrap();
+    write(&d, "quad.mtl", "newmtl a\nKd 1 1 1\nKa 1 1 1\nmap_Kd red.png\nnewmtl b\nKd 1 1 1\nmap_Kd green.png\n");
+    let quad = "mtllib quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 1\nvt 1 1\nvt 1 0\nvt 0 0\nvn 0 0 1\nusemtl a\nf 1/1/1 2/2/1 3/3/1 4/4/1\n";
+    let f = write(&d, "quad.obj", quad);
+    let out = d.join("out");
+    let view = ["--eye", "0,0,3", "--center", "0,0,0", "--size", "64x64", "--texture-filter", "nearest"];
+    let mut args = vec!["render", "--obj", f.to_str().unwrap(), "--out", out.to_str().unwrap()];
+    args.extend(view);
+    let (ok, stdout, err) = run(&args);
+    assert!(ok, "{err}");
+    assert!(stdout.contains("red.png (2x2"), "{stdout}");
+    let img = image::open(out.join("frame.png")).unwrap().to_rgb8();
+    // The quad covers the middle; its top-left quarter shows the red texel, its top-right the blue.
+    let (tl, tr) = (img.get_pixel(26, 26).0, img.get_pixel(38, 26).0);
+    assert!(tl[0] > 100 && tl[1] == 0 && tl[2] == 0, "top left {tl:?}");
+    assert!(tr[2] > 100 && tr[0] == 0 && tr[1] == 0, "top right {tr:?}");
+    // A second material with another map: drawn with the first, and said so.
+    let two = format!("{quad}v 2 -1 0\nv 3 -1 0\nv 3 0 0\nusemtl b\nf 5/1/1 6/2/1 7/3/1\n");
+    let f2 = write(&d, "two.obj", &two);
+    let mut args = vec!["render", "--obj", f2.to_str().unwrap(), "--out", out.to_str().unwrap()];
+    args.extend(view);
+    let (ok, _, err) = run(&args);
+    assert!(ok, "{err}");
+    assert!(err.contains("names 2 textures") && err.contains("red.png"), "{err}");
+}
