@@ -163,17 +163,7 @@ impl Texture {
                 let fy = ((py >> (TEXCOORD_FRAC - WEIGHT_FRAC)) & 0xff) as u32;
                 let (xa, xb) = (address(x0, l.w_log2, wrap), address(x0 + 1, l.w_log2, wrap));
                 let (ya, yb) = (address(y0, l.h_log2, wrap), address(y0 + 1, l.h_log2, wrap));
-                let (t00, t10, t01, t11) = (l.texel(xa, ya), l.texel(xb, ya), l.texel(xa, yb), l.texel(xb, yb));
-                let one = 1u32 << WEIGHT_FRAC;
-                let mut out = [0u8; 3];
-                for c in 0..3 {
-                    let sum = t00[c] as u32 * (one - fx) * (one - fy)
-                        + t10[c] as u32 * fx * (one - fy)
-                        + t01[c] as u32 * (one - fx) * fy
-                        + t11[c] as u32 * fx * fy;
-                    out[c] = ((sum + (1 << (2 * WEIGHT_FRAC - 1))) >> (2 * WEIGHT_FRAC)) as u8;
-                }
-                out
+                bilinear([l.texel(xa, ya), l.texel(xb, ya), l.texel(xa, yb), l.texel(xb, yb)], fx, fy)
             }
         }
     }
@@ -200,6 +190,18 @@ impl Texture {
             }
         }
     }
+}
+
+/// The bilinear blend of a 2x2 footprint `[t00, t10, t01, t11]` (x then y) with 8-bit weights `fx`,
+/// `fy` (0..=255, the fraction towards t10 and t01): the exact weighted sum, rounded to nearest once.
+pub fn bilinear(t: [[u8; 3]; 4], fx: u32, fy: u32) -> [u8; 3] {
+    let one = 1u32 << WEIGHT_FRAC;
+    let mut out = [0u8; 3];
+    for c in 0..3 {
+        let sum = t[0][c] as u32 * (one - fx) * (one - fy) + t[1][c] as u32 * fx * (one - fy) + t[2][c] as u32 * (one - fx) * fy + t[3][c] as u32 * fx * fy;
+        out[c] = ((sum + (1 << (2 * WEIGHT_FRAC - 1))) >> (2 * WEIGHT_FRAC)) as u8;
+    }
+    out
 }
 
 impl Texture {

@@ -17,5 +17,6 @@ pub mod pack;
 pub mod replay;
 
 pub mod stimulus;
+pub mod texel_filter_bench;
 #[cfg(test)]
 mod tests;
