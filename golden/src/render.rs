@@ -111,9 +111,6 @@ pub struct GoldenChipset {
     pub tdbs: Vec<TdbsEntry>,
     /// The texture planes of each index (TdbS's texture part), when the frame is textured.
     pub tdbt: Vec<Option<TexPlanes>>,
-    /// Texels the CS read in the last frame, and the pixels it textured.
-    pub texels_read: u64,
-    pub textured_pixels: u64,
     /// The colour-setup commands of the last run, in the order they were sent.
     pub setups: Vec<SetupCommand>,
 }
@@ -125,7 +122,7 @@ impl GoldenChipset {
     }
 
     pub fn of_type(screen: Screen, ty: RcType) -> GoldenChipset {
-        GoldenChipset { rc: Rasterizer::of_type(screen, ty), tdbs: Vec::new(), tdbt: Vec::new(), texels_read: 0, textured_pixels: 0, setups: Vec::new() }
+        GoldenChipset { rc: Rasterizer::of_type(screen, ty), tdbs: Vec::new(), tdbt: Vec::new(), setups: Vec::new() }
     }
 
     fn colour_setup(&mut self, c: &SetupCommand) {
@@ -141,9 +138,10 @@ impl GoldenChipset {
         self.setups.push(*c);
     }
 
-    fn scanout(&mut self, shading: Shading, lights: &PhongLights, background: [u8; 3], texturing: Option<&Texturing>) -> ScanOut {
+    /// The frame's pixels, and with a texture the pixels textured and the texels read.
+    fn scanout(&self, shading: Shading, lights: &PhongLights, background: [u8; 3], texturing: Option<&Texturing>) -> (ScanOut, Option<(u64, u64)>) {
         let s = self.rc.screen;
-        (self.texels_read, self.textured_pixels) = (0, 0);
+        let (mut textured, mut texels) = (0u64, 0u64);
         let mut rgb = Vec::with_capacity(s.pixels() * 3);
         for y in 0..s.height {
             for x in 0..s.width {
@@ -160,8 +158,8 @@ impl GoldenChipset {
                         (Some(tx), Some(planes)) => {
                             let l0 = &tx.texture.levels[0];
                             let c = planes.eval(x, y, l0.w_log2, l0.h_log2);
-                            self.texels_read += tx.texture.texels_read(c.lod, tx.filter) as u64;
-                            self.textured_pixels += 1;
+                            texels += tx.texture.texels_read(c.lod, tx.filter) as u64;
+                            textured += 1;
                             modulate(tx.texture.sample(c.s, c.t, c.lod, tx.filter, tx.wrap), colour)
                         }
                         _ => colour,
@@ -170,7 +168,7 @@ impl GoldenChipset {
                 rgb.extend_from_slice(&px);
             }
         }
-        ScanOut { rgb, ibuf: self.rc.ibuf.clone(), zbuf: self.rc.depths() }
+        (ScanOut { rgb, ibuf: self.rc.ibuf.clone(), zbuf: self.rc.depths() }, texturing.map(|_| (textured, texels)))
     }
 }
 
@@ -189,8 +187,7 @@ impl Chipset for GoldenChipset {
                 }
                 results.push(r);
             }
-            let scan = self.scanout(job.shading, &job.lights, job.background, job.texturing.as_ref());
-            let texture_counts = job.texturing.as_ref().map(|_| (self.textured_pixels, self.texels_read));
+            let (scan, texture_counts) = self.scanout(job.shading, &job.lights, job.background, job.texturing.as_ref());
             out.push(FrameOut { results, scan, rc_counts: Some(self.rc.counts), texture_counts });
         }
         Ok(out)
