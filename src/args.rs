@@ -155,6 +155,9 @@ pub struct RenderArgs {
     /// scene needs texture coordinates (OBJ `vt`; the built-in teapot has GLUT's). Golden backend.
     #[arg(long)]
     pub texture: Option<PathBuf>,
+    /// Draw a textured scene (OBJ `map_Kd`, teapot-floor) without its texture.
+    #[arg(long, conflicts_with_all = ["texture", "texture_filter", "texture_coords", "texture_wrap"])]
+    pub no_texture: bool,
     /// Texture filter (textured scenes only).
     #[arg(long, value_enum)]
     pub texture_filter: Option<TextureFilterArg>,
@@ -315,12 +318,27 @@ pub fn render_options(args: &RenderArgs, mesh: &Mesh) -> Result<RenderOptions, S
 }
 
 /// The frame's texture: `--texture FILE`, else the scene's (the built-in checker for the textured
-/// built-in scenes, an OBJ material's `map_Kd`), else none. The filter, coordinate and wrap options
-/// need a texture.
+/// built-in scenes, an OBJ material's `map_Kd`), else none; none with `--no-texture`. The filter,
+/// coordinate and wrap options need a texture. PROOF draws no texture: there the texture options are
+/// errors and a scene's own texture is left out with a warning.
 fn texturing(args: &RenderArgs, mesh: &Mesh) -> Result<Option<Texturing>, String> {
+    if args.no_texture {
+        return Ok(None);
+    }
+    let builtin_textured = args.scene.as_deref().is_some_and(|n| builtin::TEXTURED_SCENES.contains(&n));
+    if args.arch == ArchArg::Proof {
+        let given = args.texture.is_some() || args.texture_filter.is_some() || args.texture_coords.is_some() || args.texture_wrap.is_some();
+        if given {
+            return Err("texture mapping is for --arch index; PROOF's shading has no texture".into());
+        }
+        if builtin_textured || mesh.materials.iter().any(|m| m.texture.is_some()) {
+            eprintln!("warning: PROOF draws no texture: scene '{}' is drawn without its texture", mesh.name);
+        }
+        return Ok(None);
+    }
     let (texture, source) = if let Some(path) = &args.texture {
         (golden::texture::load(path)?, path.display().to_string())
-    } else if args.obj.is_none() && args.scene.as_deref().is_some_and(|n| builtin::TEXTURED_SCENES.contains(&n)) {
+    } else if builtin_textured {
         (golden::texture::checker(), "built-in checker".to_string())
     } else {
         // An OBJ's map_Kd: the first textured material's, in triangle order (the chipset holds one
@@ -359,9 +377,6 @@ fn texturing(args: &RenderArgs, mesh: &Mesh) -> Result<Option<Texturing>, String
             }
         }
     };
-    if args.arch == ArchArg::Proof {
-        return Err("texture mapping is for --arch index; PROOF's shading has no texture".into());
-    }
     Ok(Some(Texturing {
         texture: std::sync::Arc::new(texture),
         source,

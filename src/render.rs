@@ -24,10 +24,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     }
     if args.backend != BackendArg::Golden {
         if let Some(t) = &opts.texturing {
-            return Err(format!(
-                "texture mapping ({}) is in the golden model only so far: the chipset's RTL has no texture port yet (issue 17); use --backend golden",
-                t.source
-            ));
+            return Err(tb::chipset::texturing_unsupported(t));
         }
         if opts.index_bits > RTL_INDEX_BITS {
             return Err(format!(

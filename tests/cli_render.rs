@@ -336,8 +336,18 @@ fn a_texture_file_textures_the_teapot_and_bad_texture_input_is_an_error_naming_i
     assert_clean_error(&["render", "--scene", "polyhedron", "--texture-filter", "nearest", "--out", o], "--texture-filter needs a texture");
     assert_clean_error(&["render", "--scene", "teapot-floor", "--texture-filter", "cubic", "--out", o], "cubic");
     assert_clean_error(&["render", "--scene", "teapot-floor", "--backend", "rtl", "--out", o], "--backend golden");
-    assert_clean_error(&["render", "--scene", "teapot-floor", "--arch", "proof", "--out", o], "--arch index");
+    assert_clean_error(&["render", "--scene", "teapot-floor", "--backend", "rtl", "--out", o], "--no-texture");
+    assert_clean_error(&["render", "--scene", "teapot", "--texture", good.to_str().unwrap(), "--arch", "proof", "--out", o], "--arch index");
+    assert_clean_error(&["render", "--scene", "teapot-floor", "--no-texture", "--texture-filter", "nearest", "--out", o], "--no-texture");
     assert_eq!(snapshot(&out), before, "a failed run must leave the previous outputs as they were");
+    // A scene's own texture: PROOF draws the scene without it and says so; --no-texture leaves it out.
+    let (ok, _, err) = run(&["render", "--scene", "teapot-floor", "--arch", "proof", "--size", "64x48", "--out", o]);
+    assert!(ok, "{err}");
+    assert!(err.contains("drawn without its texture"), "{err}");
+    let (ok, stdout, err) = run(&["render", "--scene", "teapot-floor", "--no-texture", "--out", o]);
+    assert!(ok, "{err}");
+    assert!(!stdout.contains("texture built-in checker"), "{stdout}");
+    assert!(stats_of(&out)["texturing"].is_null());
 }
 
 #[test]
@@ -369,4 +379,8 @@ fn an_obj_with_a_diffuse_map_is_textured_by_it_and_a_second_map_is_a_warning() {
     let (ok, _, err) = run(&args);
     assert!(ok, "{err}");
     assert!(err.contains("names 2 textures") && err.contains("red.png"), "{err}");
+    // PROOF draws it untextured (as before textures were read), with a warning.
+    let (ok, _, err) = run(&["render", "--obj", f.to_str().unwrap(), "--arch", "proof", "--eye", "0,0,3", "--center", "0,0,0", "--size", "64x64", "--out", out.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    assert!(err.contains("drawn without its texture"), "{err}");
 }

@@ -698,14 +698,19 @@ pub(crate) struct FrameRun {
     pub scan_done: Option<u64>,
 }
 
+/// Why the RTL chipsets refuse a textured frame (the CLI says it before it simulates anything).
+pub fn texturing_unsupported(t: &golden::render::Texturing) -> String {
+    format!(
+        "texture mapping ({}) is in the golden model only so far: the chipset's RTL has no texture port yet (issue 17); use --backend golden, or --no-texture to draw the scene untextured",
+        t.source
+    )
+}
+
 impl FrameRun {
     /// The RC words and scan parameters of `job`; `clear`: the frame clears its bank itself.
     pub(crate) fn new(job: &FrameJob, clear: bool) -> Result<FrameRun, String> {
         if let Some(t) = &job.texturing {
-            return Err(format!(
-                "texture mapping ({}) is in the golden model only: the chipset's RTL has no texture port yet (issue 17); use --backend golden",
-                t.source
-            ));
+            return Err(texturing_unsupported(t));
         }
         let cmds = crate::rc::stimulus::job_frame(job, clear)?;
         let phong = job.shading == Shading::Phong;
