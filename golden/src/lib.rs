@@ -18,5 +18,6 @@ pub mod raster;
 pub mod render;
 pub mod scene;
 pub mod shade;
+pub mod texbank;
 pub mod texcoord;
 pub mod texture;

@@ -33,6 +33,7 @@ pub mod normalizer;
 pub mod plane_mul;
 pub mod plane_round;
 pub mod colour_setup;
+pub mod texel_address;
 pub mod texel_filter;
 pub mod video_fifo;
 
