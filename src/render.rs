@@ -91,7 +91,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     if let (Some(t), Some(ts)) = (&opts.texturing, &s.texture) {
         let (w, h) = t.texture.size();
         crate::say!(
-            "  texture {} ({w}x{h}, {} levels), {:?} {:?} {:?}: {} samples, {} texels read ({:.2} per sample); a traditional pipeline samples {} times with early Z ({:.1}% of those), {} without",
+            "  texture {} ({w}x{h}, {} levels), {:?} {:?} {:?}: {} samples, {} texels read ({:.2} per sample), {} bank words ({:.2} per sample); a traditional pipeline samples {} times with early Z ({:.1}% of those), {} without",
             t.source,
             t.texture.levels.len(),
             t.filter,
@@ -100,6 +100,8 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
             ts.samples,
             ts.texels_read,
             ts.texels_per_sample,
+            ts.bank_words_read,
+            ts.bank_words_per_sample,
             ts.traditional_samples_early_z,
             ts.percent_of_early_z,
             ts.traditional_samples

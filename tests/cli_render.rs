@@ -306,6 +306,9 @@ fn the_textured_scene_renders_with_every_filter_and_both_coordinate_modes_and_co
             "bilinear" => assert_eq!(texels, 4 * samples),
             _ => assert!(texels > 4 * samples && texels <= 8 * samples, "trilinear read {texels} texels for {samples} samples"),
         }
+        // The texture port reads a texel repeated in a footprint once, so never more words than texels.
+        let words = t["bank_words_read"].as_u64().unwrap();
+        assert!(words >= samples && words <= texels, "{filter}: {words} bank words for {texels} texels");
         images.push(std::fs::read(out.join("frame.png")).unwrap());
     }
     for i in 0..images.len() {

@@ -90,9 +90,20 @@ pub struct FrameOut {
     pub scan: ScanOut,
     /// The RC's fragment counters, if the chipset keeps them.
     pub rc_counts: Option<RcCounts>,
-    /// The CS's texture counters (textured pixels, texels read), if the frame was textured and the
-    /// chipset keeps them.
-    pub texture_counts: Option<(u64, u64)>,
+    /// The CS's texture counters, if the frame was textured and the chipset keeps them.
+    pub texture_counts: Option<TextureCounts>,
+}
+
+/// What the CS's texture path did in a frame.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+pub struct TextureCounts {
+    /// Pixels textured (one sample each).
+    pub samples: u64,
+    /// Texels the filters combined (1 nearest, 4 bilinear, 4 or 8 trilinear per sample).
+    pub texels_read: u64,
+    /// Words read from the four texture banks (`texbank::footprint`): a texel that clamping or a
+    /// one-texel level puts in a footprint twice is one read.
+    pub bank_words: u64,
 }
 
 /// The chipset as the host sees it. Implemented by [`GoldenChipset`] (the algorithmic model) and, in
@@ -138,10 +149,11 @@ impl GoldenChipset {
         self.setups.push(*c);
     }
 
-    /// The frame's pixels, and with a texture the pixels textured and the texels read.
-    fn scanout(&self, shading: Shading, lights: &PhongLights, background: [u8; 3], texturing: Option<&Texturing>) -> (ScanOut, Option<(u64, u64)>) {
+    /// The frame's pixels, and with a texture what texturing did.
+    fn scanout(&self, shading: Shading, lights: &PhongLights, background: [u8; 3], texturing: Option<&Texturing>) -> (ScanOut, Option<TextureCounts>) {
         let s = self.rc.screen;
-        let (mut textured, mut texels) = (0u64, 0u64);
+        let mut counts = TextureCounts::default();
+        let geoms = texturing.map(|tx| crate::texbank::layout(&tx.texture)).unwrap_or_default();
         let mut rgb = Vec::with_capacity(s.pixels() * 3);
         for y in 0..s.height {
             for x in 0..s.width {
@@ -158,8 +170,9 @@ impl GoldenChipset {
                         (Some(tx), Some(planes)) => {
                             let l0 = &tx.texture.levels[0];
                             let c = planes.eval(x, y, l0.w_log2, l0.h_log2);
-                            texels += tx.texture.texels_read(c.lod, tx.filter) as u64;
-                            textured += 1;
+                            counts.texels_read += tx.texture.texels_read(c.lod, tx.filter) as u64;
+                            counts.bank_words += bank_words(&geoms, c, tx) as u64;
+                            counts.samples += 1;
                             modulate(tx.texture.sample(c.s, c.t, c.lod, tx.filter, tx.wrap), colour)
                         }
                         _ => colour,
@@ -168,8 +181,19 @@ impl GoldenChipset {
                 rgb.extend_from_slice(&px);
             }
         }
-        (ScanOut { rgb, ibuf: self.rc.ibuf.clone(), zbuf: self.rc.depths() }, texturing.map(|_| (textured, texels)))
+        (ScanOut { rgb, ibuf: self.rc.ibuf.clone(), zbuf: self.rc.depths() }, texturing.map(|_| counts))
     }
+}
+
+/// Words one sample reads from the texture banks: the footprint in the level the level of detail
+/// rounds down to, and for trilinear between two levels the next level's too.
+fn bank_words(geoms: &[crate::texbank::LevelGeom], c: crate::texcoord::TexCoord, tx: &Texturing) -> u32 {
+    let last = geoms.len() - 1;
+    let level = ((c.lod >> crate::texture::LOD_FRAC) as usize).min(last);
+    let bilinear = tx.filter != crate::texture::Filter::Nearest;
+    let at = |l: usize| crate::texbank::footprint(geoms[l], c.s, c.t, bilinear, tx.wrap).reads();
+    let second = tx.filter == crate::texture::Filter::Trilinear && level < last && c.lod & ((1 << crate::texture::LOD_FRAC) - 1) != 0;
+    at(level) + if second { at(level + 1) } else { 0 }
 }
 
 impl Chipset for GoldenChipset {
@@ -290,6 +314,10 @@ pub struct TextureStats {
     /// Texels the CS read (1 per sample nearest, 4 bilinear, 4 or 8 trilinear).
     pub texels_read: u64,
     pub texels_per_sample: f64,
+    /// Words read from the four texture banks (the traffic at the texture port): fewer than the
+    /// texels where a clamped edge or a one-texel level repeats a texel in a footprint.
+    pub bank_words_read: u64,
+    pub bank_words_per_sample: f64,
     /// Samples a traditional pipeline takes: one per fragment that passes an early Z-test (the RC's
     /// Z passes), and one per fragment when texturing comes before the Z-test.
     pub traditional_samples_early_z: u64,
@@ -520,10 +548,12 @@ impl<'a> HostFrame<'a> {
             texture: match (&opts.texturing, texture_counts) {
                 (None, _) => None,
                 (Some(_), None) => return Err("the chipset did not report its texture counters for a textured frame".into()),
-                (Some(_), Some((samples, texels_read))) => Some(TextureStats {
+                (Some(_), Some(TextureCounts { samples, texels_read, bank_words })) => Some(TextureStats {
                     samples,
                     texels_read,
                     texels_per_sample: if samples == 0 { 0.0 } else { texels_read as f64 / samples as f64 },
+                    bank_words_read: bank_words,
+                    bank_words_per_sample: if samples == 0 { 0.0 } else { bank_words as f64 / samples as f64 },
                     traditional_samples_early_z: rc.z_passes,
                     traditional_samples: rc.fragments,
                     percent_of_early_z: if rc.z_passes == 0 { 0.0 } else { 100.0 * samples as f64 / rc.z_passes as f64 },
