@@ -35,6 +35,7 @@ pub mod plane_round;
 pub mod colour_setup;
 pub mod texel_address;
 pub mod texel_filter;
+pub mod texture_sampler;
 pub mod video_fifo;
 
 use rust_hdl::prelude::*;

@@ -19,5 +19,6 @@ pub mod replay;
 pub mod stimulus;
 pub mod texel_address_bench;
 pub mod texel_filter_bench;
+pub mod texture_sampler_bench;
 #[cfg(test)]
 mod tests;
