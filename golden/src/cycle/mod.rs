@@ -4,3 +4,4 @@
 pub mod rc;
 pub mod colour_setup;
 pub mod color_shader;
+pub mod texture_sampler;

@@ -1,35 +1,33 @@
 //! Bench of `hdl::cs::texture_sampler` (level choice, address unit, four banks, texel filter,
 //! trilinear blend, MODULATE): a random texture in four bank memories (read latency 1, a disabled
 //! bank returns noise), its level table loaded through the block's port, then pixels with random
-//! gaps, held while `ready` is low. Every cycle the bench checks `ready`, the bank ports (the
-//! footprint of `golden::texbank::footprint` for the level issued three cycles earlier) and the result
-//! (`modulate(Texture::sample(..), colour)` of the pixel accepted `TEXTURE_SAMPLER_LATENCY` cycles
-//! earlier). The issue rule (a trilinear pixel between two levels issues its level, then the next, and
-//! is accepted in the second cycle) is the block's timing; the values all come from golden.
+//! gaps, held while `ready` is low. Every cycle the bench checks `ready`, the bank ports and the
+//! result against the cycle model `golden::cycle::texture_sampler` (its timing: the footprint of the
+//! level issued three cycles earlier, the colour `modulate(Texture::sample(..), colour)` of the pixel
+//! accepted nine cycles earlier; a trilinear pixel between two levels takes two cycles).
 
 use crate::common::{Rng, Trace};
 use crate::cs::pack::BitVector;
 use crate::cs::replay::{port, PortSpec, Recording};
-use golden::texbank::{banks, footprint, layout, Footprint, LevelGeom, TEXTURE_BANKS};
-use golden::texture::{modulate, Filter, Texture, Wrap, LOD_FRAC};
-use hdl::cs::texture_sampler::{TextureSampler, TEXTURE_SAMPLER_LATENCY};
+use golden::cycle::texture_sampler::{SamplerPixel, TextureSamplerModel};
+use golden::texbank::{banks, layout, LevelGeom, TEXTURE_BANKS};
+use golden::texture::{Filter, Texture, Wrap, LOD_FRAC};
+use hdl::cs::texture_sampler::TextureSampler;
 use rust_hdl::prelude::*;
-
-/// A pixel offered to the sampler.
-#[derive(Copy, Clone, Debug)]
-pub struct Pixel {
-    pub s: i32,
-    pub t: i32,
-    pub lod: u8,
-    pub colour: [u8; 3],
-}
 
 /// A run: the texture, its settings and the pixels, each offered after `gap` idle cycles.
 pub struct Run {
     pub texture: Texture,
     pub filter: Filter,
     pub wrap: Wrap,
-    pub pixels: Vec<(usize, Pixel)>,
+    pub pixels: Vec<(usize, SamplerPixel)>,
+}
+
+impl Run {
+    /// The cycle model of this run's texture and settings.
+    pub fn model(&self) -> TextureSamplerModel {
+        TextureSamplerModel::new(self.texture.clone(), self.filter, self.wrap)
+    }
 }
 
 /// What the run measured at the ports.
@@ -44,13 +42,6 @@ pub struct Measured {
 
 fn pack(c: [u8; 3]) -> u64 {
     (c[0] as u64) << 16 | (c[1] as u64) << 8 | c[2] as u64
-}
-
-/// The reference's colour of a pixel.
-pub type Model = dyn Fn(&Texture, &Pixel, Filter, Wrap) -> [u8; 3];
-
-pub fn golden_colour(tex: &Texture, p: &Pixel, filter: Filter, wrap: Wrap) -> [u8; 3] {
-    modulate(tex.sample(p.s, p.t, p.lod, filter, wrap), p.colour)
 }
 
 pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
@@ -80,25 +71,21 @@ pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
 
 /// Random pixels: coordinates within a few textures of 0 or anywhere, levels of detail over the whole
 /// range (fractions 0 often, so whole-level trilinear occurs), a gap before a pixel in `gap_percent`.
-pub fn pixels(rng: &mut Rng, n: usize, gap_percent: u64) -> Vec<(usize, Pixel)> {
+pub fn pixels(rng: &mut Rng, n: usize, gap_percent: u64) -> Vec<(usize, SamplerPixel)> {
     (0..n)
         .map(|_| {
             let gap = if rng.chance(gap_percent) { 1 + rng.below(3) as usize } else { 0 };
             let coord = |rng: &mut Rng| if rng.chance(10) { rng.next_u64() as i32 } else { (rng.below(6 << 16) as i64 - (2 << 16)) as i32 };
             let lod = if rng.chance(25) { (rng.below(12) << LOD_FRAC) as u8 } else { rng.below(176) as u8 };
             let colour = [rng.below(256) as u8, rng.below(256) as u8, rng.below(256) as u8];
-            (gap, Pixel { s: coord(rng), t: coord(rng), lod, colour })
+            (gap, SamplerPixel { s: coord(rng), t: coord(rng), lod, colour })
         })
         .collect()
 }
 
-/// Whether the sampler takes two cycles for `p` (trilinear between two levels).
-fn pair(p: &Pixel, filter: Filter, last: usize) -> bool {
-    filter == Filter::Trilinear && p.lod & ((1 << LOD_FRAC) - 1) != 0 && ((p.lod >> LOD_FRAC) as usize) < last
-}
-
-/// Drive the run through the RustHDL block, checking every port in every cycle.
-pub fn run(r: &Run, model: &Model, seed: u64, vcd: Option<&std::path::Path>) -> Result<(Recording, Measured), String> {
+/// Drive the run through the RustHDL block, checking every port in every cycle against `model`
+/// (normally [`Run::model`]).
+pub fn run(r: &Run, mut model: TextureSamplerModel, seed: u64, vcd: Option<&std::path::Path>) -> Result<(Recording, Measured), String> {
     let mut uut = TextureSampler::default();
     uut.connect_all();
     check_all(&uut).map_err(|e| format!("texture_sampler design check: {e:?}"))?;
@@ -115,13 +102,9 @@ pub fn run(r: &Run, model: &Model, seed: u64, vcd: Option<&std::path::Path>) -> 
         Filter::Trilinear => 2,
     };
     let mut noise = Rng::new(seed ^ 0x5EED);
-    let lat = TEXTURE_SAMPLER_LATENCY as usize;
-    // Expected per cycle: (ready, footprint on the bank ports, result).
-    let mut expect_fp: std::collections::HashMap<usize, Footprint> = Default::default();
-    let mut expect_out: std::collections::HashMap<usize, [u8; 3]> = Default::default();
     let mut m = Measured::default();
     let mut read_prev: Option<([bool; 4], [u32; 4])> = None;
-    let (mut next, mut gap_left, mut pending) = (0usize, r.pixels.first().map_or(0, |p| p.0), false);
+    let (mut next, mut gap_left) = (0usize, r.pixels.first().map_or(0, |p| p.0));
     let loads = geoms.len();
     let mut cyc = 0usize;
     let mut last_out = 0usize;
@@ -137,7 +120,7 @@ pub fn run(r: &Run, model: &Model, seed: u64, vcd: Option<&std::path::Path>) -> 
         uut.filter.next = filter_code.into();
         uut.clamp.next = r.wrap == Wrap::ClampToEdge;
         let offer = if !loading && next < r.pixels.len() && gap_left == 0 { Some(r.pixels[next].1) } else { None };
-        let p = offer.unwrap_or(Pixel { s: 0, t: 0, lod: 0, colour: [0; 3] });
+        let p = offer.unwrap_or(SamplerPixel { s: 0, t: 0, lod: 0, colour: [0; 3] });
         uut.valid_in.next = offer.is_some();
         uut.s.next = (p.s as u32 as u64).into();
         uut.t.next = (p.t as u32 as u64).into();
@@ -160,30 +143,16 @@ pub fn run(r: &Run, model: &Model, seed: u64, vcd: Option<&std::path::Path>) -> 
         }
         trace.dump(&uut, 10 * cyc as u64)?;
 
-        // The model: issue, accept, and what the ports must show now.
-        let mut ready = true;
-        if let Some(px) = offer {
-            let level = ((px.lod >> LOD_FRAC) as usize).min(last);
-            let two = pair(&px, r.filter, last);
-            let issue = if pending { level + 1 } else { level };
-            let fp = footprint(geoms[issue], px.s, px.t, r.filter != Filter::Nearest, r.wrap);
-            expect_fp.insert(cyc + 3, fp);
-            if two && !pending {
-                ready = false;
-                pending = true;
-            } else {
-                pending = false;
-                expect_out.insert(cyc + lat, model(&r.texture, &px, r.filter, r.wrap));
-            }
-        }
-        let want_fp = expect_fp.remove(&cyc).unwrap_or_default();
-        let want_out = expect_out.remove(&cyc);
+        // The model (the level table's load is not a model cycle: no pixel is offered then).
+        let out = if loading { Default::default() } else { model.step(offer.as_ref()) };
+        let ready = out.ready || loading;
+        let want_fp = out.banks;
         let want = (
             ready,
             (0..4).map(|k| (want_fp.read[k] as u64) << k).sum::<u64>(),
             want_fp.addr.map(|a| a as u64),
-            want_out.is_some(),
-            want_out.map_or(0, pack),
+            out.rgb.is_some(),
+            out.rgb.map_or(0, pack),
         );
         let got = (
             uut.ready.val(),
@@ -243,7 +212,7 @@ pub fn run(r: &Run, model: &Model, seed: u64, vcd: Option<&std::path::Path>) -> 
             }
         }
         cyc += 1;
-        if next >= r.pixels.len() && expect_out.is_empty() && expect_fp.is_empty() {
+        if next >= r.pixels.len() && model.idle() {
             break;
         }
         if cyc > 4 * r.pixels.len() + 100 {
@@ -260,6 +229,7 @@ mod tests {
     use super::*;
     use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted};
     use crate::cs::replay::replay_iverilog;
+    use hdl::cs::texture_sampler::TEXTURE_SAMPLER_LATENCY;
 
     fn texture(rng: &mut Rng, w: u32, h: u32) -> Texture {
         let texels = (0..w * h).map(|_| [rng.below(256) as u8, rng.below(256) as u8, rng.below(256) as u8]).collect();
@@ -287,11 +257,11 @@ mod tests {
         let mut back_to_back_pairs = 0;
         for (k, r) in runs(0x5A3).iter().enumerate() {
             let vcd = (vcd_wanted() && k == 0).then(|| vcd_path("texture_sampler", "every_cycle"));
-            let (_, m) = run(r, &golden_colour, k as u64, vcd.as_deref()).unwrap_or_else(|e| panic!("run {k} ({:?} {:?}): {e}", r.filter, r.wrap));
+            let (_, m) = run(r, r.model(), k as u64, vcd.as_deref()).unwrap_or_else(|e| panic!("run {k} ({:?} {:?}): {e}", r.filter, r.wrap));
             assert_eq!(m.pixels, r.pixels.len() as u64);
-            let last = r.texture.levels.len() - 1;
-            let pairs = r.pixels.iter().filter(|p| pair(&p.1, r.filter, last)).count();
-            back_to_back_pairs += r.pixels.windows(2).filter(|w| w[1].0 == 0 && pair(&w[0].1, r.filter, last) && pair(&w[1].1, r.filter, last)).count();
+            let two = |p: &SamplerPixel| r.model().takes_two_cycles(p);
+            let pairs = r.pixels.iter().filter(|p| two(&p.1)).count();
+            back_to_back_pairs += r.pixels.windows(2).filter(|w| w[1].0 == 0 && two(&w[0].1) && two(&w[1].1)).count();
             // One cycle per pixel, two per trilinear pair, one per gap cycle: the block never waits
             // otherwise.
             let gaps: usize = r.pixels.iter().map(|p| p.0).sum();
@@ -303,14 +273,11 @@ mod tests {
 
     #[test]
     fn the_texture_sampler_bench_fails_when_the_reference_is_wrong() {
-        // A reference that blends trilinear's two levels the other way round is caught.
-        let swapped = |tex: &Texture, p: &Pixel, filter: Filter, wrap: Wrap| {
-            let q = Pixel { lod: (p.lod & 0xf0) | (16 - (p.lod & 15)) % 16, ..*p };
-            golden_colour(tex, &q, filter, wrap)
-        };
-        let r = runs(0x5A3).into_iter().find(|r| r.filter == Filter::Trilinear && r.texture.size() == (64, 16)).unwrap();
-        let e = run(&r, &swapped, 0, None).unwrap_err();
-        assert!(e.contains("rgb_out"), "{e}");
+        // A model told to repeat where the block clamps is caught.
+        let r = runs(0x5A3).into_iter().find(|r| r.filter == Filter::Bilinear && r.wrap == Wrap::ClampToEdge && r.texture.size() == (64, 16)).unwrap();
+        let wrong = TextureSamplerModel::new(r.texture.clone(), r.filter, Wrap::Repeat);
+        let e = run(&r, wrong, 0, None).unwrap_err();
+        assert!(e.contains("expected"), "{e}");
     }
 
     #[test]
@@ -320,7 +287,7 @@ mod tests {
         }
         let all = runs(0x5A3);
         let r = all.iter().find(|r| r.filter == Filter::Trilinear && r.wrap == Wrap::Repeat && r.texture.size() == (64, 16)).unwrap();
-        let (rec, _) = run(r, &golden_colour, 1, None).unwrap();
+        let (rec, _) = run(r, r.model(), 1, None).unwrap();
         let v = hdl::cs::texture_sampler::verilog().unwrap();
         let dir = scratch_dir("cs/texture_sampler_replay");
         let rep = replay_iverilog(&v, "texture_sampler", &rec, &dir).unwrap();
