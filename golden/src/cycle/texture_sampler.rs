@@ -19,7 +19,7 @@ use crate::texture::{modulate, Filter, Texture, Wrap, LOD_FRAC};
 use std::collections::VecDeque;
 
 /// Cycles from a pixel's acceptance to its colour.
-pub const TEXTURE_SAMPLER_LATENCY: usize = 9;
+pub const TEXTURE_SAMPLER_LATENCY: usize = 8;
 /// Cycles from a footprint's issue to its addresses on the bank ports.
 pub const ISSUE_TO_BANKS: usize = 3;
 
@@ -127,10 +127,10 @@ mod tests {
         assert!(m.step(Some(&between)).ready);
         assert!(m.step(Some(&whole)).ready);
         assert!(m.step(Some(&beyond)).ready);
-        // Results: 9 cycles after each acceptance (cycles 1, 2, 3), the uniform colour.
+        // Results: 8 cycles after each acceptance (cycles 1, 2, 3), the uniform colour.
         let outs: Vec<SamplerOut> = (0..12).map(|_| m.step(None)).collect();
         let due: Vec<usize> = outs.iter().enumerate().filter(|(_, o)| o.rgb.is_some()).map(|(k, _)| k + 4).collect();
-        assert_eq!(due, vec![10, 11, 12]);
+        assert_eq!(due, vec![9, 10, 11]);
         assert!(outs.iter().filter_map(|o| o.rgb).all(|c| c == [50, 100, 150]));
         assert!(m.idle());
     }

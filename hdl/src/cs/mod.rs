@@ -29,6 +29,7 @@
 pub mod color_shader;
 pub mod gloss_square;
 pub mod light_unit;
+pub mod modulate;
 pub mod normalizer;
 pub mod plane_mul;
 pub mod plane_round;

@@ -1,8 +1,8 @@
-//! `texel_filter`: the Color Shader's texel arithmetic for texture mapping (issue 17, item 4), the first
-//! RTL piece of the texture path: the bilinear blend of a 2x2 footprint with 8-bit weights, then
-//! OpenGL's MODULATE with the pixel's shaded colour. One pixel per clock, latency 3, no stalls (the CS
-//! is a fixed-latency pipeline with credits). Not yet instantiated in the CS: the address generation,
-//! the per-pixel reciprocal and the banked texture port come next (docs/texture.md).
+//! `texel_filter`: the Color Shader's texel arithmetic for texture mapping (issue 17, item 4): the
+//! bilinear blend of a 2x2 footprint with 8-bit weights ([`Bilinear`], two stages), then OpenGL's
+//! MODULATE with the pixel's shaded colour ([`crate::cs::modulate::Modulate`]). One pixel per clock,
+//! latency 3, no stalls (the CS is a fixed-latency pipeline with credits). The texture unit
+//! (`texture_sampler`) uses [`Bilinear`] alone, with trilinear's blend between it and MODULATE.
 //!
 //! ```text
 //!               +--------------------------------------------------------------------------+
@@ -19,13 +19,17 @@
 //! stage loses bits. `rgb_out` is 0 while `valid_out` is low.
 
 use crate::common::MulU;
+use crate::cs::modulate::Modulate;
 use rust_hdl::prelude::*;
 
 /// Cycles from a pixel's inputs to its `rgb_out`.
 pub const TEXEL_FILTER_LATENCY: u64 = 3;
+/// Cycles from a footprint to [`Bilinear`]'s `texel_out`.
+pub const BILINEAR_LATENCY: u64 = 2;
 
+/// The bilinear blend of a footprint: `golden::texture::bilinear`, latency 2.
 #[derive(LogicBlock)]
-pub struct TexelFilter {
+pub struct Bilinear {
     pub clock: Signal<In, Clock>,
     pub valid_in: Signal<In, Bit>,
     /// The footprint: t00 at (x0, y0), t10 at (x0 + 1, y0), t01 at (x0, y0 + 1), t11 at both + 1.
@@ -36,10 +40,8 @@ pub struct TexelFilter {
     /// Weights towards t10 / t11 (x) and t01 / t11 (y), in 1/256.
     pub fx: Signal<In, Bits<8>>,
     pub fy: Signal<In, Bits<8>>,
-    /// The pixel's shaded colour, which the texel modulates.
-    pub colour: Signal<In, Bits<24>>,
     pub valid_out: Signal<Out, Bit>,
-    pub rgb_out: Signal<Out, Bits<24>>,
+    pub texel_out: Signal<Out, Bits<24>>,
 
     // Weights, 9 bits (256 - f reaches 256).
     wx0: Signal<Local, Bits<9>>,
@@ -53,30 +55,19 @@ pub struct TexelFilter {
     h1: [DFF<Bits<17>>; 3],
     wy0: DFF<Bits<9>>,
     wy1: DFF<Bits<9>>,
-    colour1: DFF<Bits<24>>,
     valid1: DFF<Bit>,
     // Stage 2: vertical blend and rounding.
     mv: [MulU<17, 9, 26>; 6],
     v_sum: [Signal<Local, Bits<26>>; 3],
     v_round: [Signal<Local, Bits<26>>; 3],
     texel: [DFF<Bits<8>>; 3],
-    colour2: DFF<Bits<24>>,
     valid2: DFF<Bit>,
-    // Stage 3: MODULATE.
-    mm: [MulU<8, 8, 16>; 3],
-    m_p: [Signal<Local, Bits<16>>; 3],
-    m_hi: [Signal<Local, Bits<16>>; 3],
-    m_sum: [Signal<Local, Bits<16>>; 3],
-    out: [DFF<Bits<8>>; 3],
-    valid3: DFF<Bit>,
     packed: [Signal<Local, Bits<24>>; 3],
     k256_9: Constant<Bits<9>>,
     khalf_26: Constant<Bits<26>>,
-    k128_16: Constant<Bits<16>>,
-    k8_16: Constant<Bits<16>>,
 }
 
-impl Default for TexelFilter {
+impl Default for Bilinear {
     fn default() -> Self {
         Self {
             clock: Default::default(),
@@ -87,9 +78,8 @@ impl Default for TexelFilter {
             t11: Default::default(),
             fx: Default::default(),
             fy: Default::default(),
-            colour: Default::default(),
             valid_out: Default::default(),
-            rgb_out: Default::default(),
+            texel_out: Default::default(),
             wx0: Default::default(),
             wx1: Default::default(),
             wy0_in: Default::default(),
@@ -100,38 +90,27 @@ impl Default for TexelFilter {
             h1: Default::default(),
             wy0: Default::default(),
             wy1: Default::default(),
-            colour1: Default::default(),
             valid1: Default::default(),
             mv: Default::default(),
             v_sum: Default::default(),
             v_round: Default::default(),
             texel: Default::default(),
-            colour2: Default::default(),
             valid2: Default::default(),
-            mm: Default::default(),
-            m_p: Default::default(),
-            m_hi: Default::default(),
-            m_sum: Default::default(),
-            out: Default::default(),
-            valid3: Default::default(),
             packed: Default::default(),
             k256_9: Constant::new(256u64.into()),
             khalf_26: Constant::new((1u64 << 15).into()),
-            k128_16: Constant::new(128u64.into()),
-            k8_16: Constant::new(8u64.into()),
         }
     }
 }
 
-impl Logic for TexelFilter {
+impl Logic for Bilinear {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, wy0, wy1, colour1, valid1, colour2, valid2, valid3);
+        dff_setup!(self, clock, wy0, wy1, valid1, valid2);
         for c in 0..3 {
             self.h0[c].clock.next = self.clock.val();
             self.h1[c].clock.next = self.clock.val();
             self.texel[c].clock.next = self.clock.val();
-            self.out[c].clock.next = self.clock.val();
         }
         // Weights.
         self.wx1.next = bit_cast::<9, 8>(self.fx.val());
@@ -162,7 +141,6 @@ impl Logic for TexelFilter {
         }
         self.wy1.d.next = self.wy0_in.val();
         self.wy0.d.next = self.k256_9.val() - self.wy0_in.val();
-        self.colour1.d.next = self.colour.val();
         self.valid1.d.next = self.valid_in.val();
         // Stage 2: vertical blend, + 2^15, >> 16.
         for c in 0..3 {
@@ -174,28 +152,57 @@ impl Logic for TexelFilter {
             self.v_round[c].next = self.v_sum[c].val() + self.khalf_26.val();
             self.texel[c].d.next = self.v_round[c].val().get_bits::<8>(16);
         }
-        self.colour2.d.next = self.colour1.q.val();
         self.valid2.d.next = self.valid1.q.val();
-        // Stage 3: MODULATE, texel x colour / 255 rounded: p = t c + 128, (p + (p >> 8)) >> 8.
-        self.mm[0].b.next = self.colour2.q.val().get_bits::<8>(16);
-        self.mm[1].b.next = self.colour2.q.val().get_bits::<8>(8);
-        self.mm[2].b.next = self.colour2.q.val().get_bits::<8>(0);
-        for c in 0..3 {
-            self.mm[c].a.next = self.texel[c].q.val();
-            self.m_p[c].next = self.mm[c].p.val() + self.k128_16.val();
-            self.m_hi[c].next = self.m_p[c].val() >> self.k8_16.val();
-            self.m_sum[c].next = self.m_p[c].val() + self.m_hi[c].val();
-            self.out[c].d.next = 0.into();
-            if self.valid2.q.val() {
-                self.out[c].d.next = self.m_sum[c].val().get_bits::<8>(8);
-            }
-        }
-        self.valid3.d.next = self.valid2.q.val();
-        self.packed[0].next = bit_cast::<24, 8>(self.out[0].q.val()) << 16;
-        self.packed[1].next = bit_cast::<24, 8>(self.out[1].q.val()) << 8;
-        self.packed[2].next = bit_cast::<24, 8>(self.out[2].q.val());
-        self.rgb_out.next = self.packed[0].val() | self.packed[1].val() | self.packed[2].val();
-        self.valid_out.next = self.valid3.q.val();
+        self.packed[0].next = bit_cast::<24, 8>(self.texel[0].q.val()) << 16;
+        self.packed[1].next = bit_cast::<24, 8>(self.texel[1].q.val()) << 8;
+        self.packed[2].next = bit_cast::<24, 8>(self.texel[2].q.val());
+        self.texel_out.next = self.packed[0].val() | self.packed[1].val() | self.packed[2].val();
+        self.valid_out.next = self.valid2.q.val();
+    }
+}
+
+/// The bilinear blend, then MODULATE with the pixel's colour; latency 3.
+#[derive(LogicBlock, Default)]
+pub struct TexelFilter {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    /// The footprint, as [`Bilinear`]'s.
+    pub t00: Signal<In, Bits<24>>,
+    pub t10: Signal<In, Bits<24>>,
+    pub t01: Signal<In, Bits<24>>,
+    pub t11: Signal<In, Bits<24>>,
+    pub fx: Signal<In, Bits<8>>,
+    pub fy: Signal<In, Bits<8>>,
+    /// The pixel's shaded colour, which the texel modulates.
+    pub colour: Signal<In, Bits<24>>,
+    pub valid_out: Signal<Out, Bit>,
+    pub rgb_out: Signal<Out, Bits<24>>,
+    bil: Bilinear,
+    colour1: DFF<Bits<24>>,
+    colour2: DFF<Bits<24>>,
+    modulate: Modulate,
+}
+
+impl Logic for TexelFilter {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, colour1, colour2);
+        self.bil.clock.next = self.clock.val();
+        self.modulate.clock.next = self.clock.val();
+        self.bil.valid_in.next = self.valid_in.val();
+        self.bil.t00.next = self.t00.val();
+        self.bil.t10.next = self.t10.val();
+        self.bil.t01.next = self.t01.val();
+        self.bil.t11.next = self.t11.val();
+        self.bil.fx.next = self.fx.val();
+        self.bil.fy.next = self.fy.val();
+        self.colour1.d.next = self.colour.val();
+        self.colour2.d.next = self.colour1.q.val();
+        self.modulate.valid_in.next = self.bil.valid_out.val();
+        self.modulate.texel.next = self.bil.texel_out.val();
+        self.modulate.colour.next = self.colour2.q.val();
+        self.valid_out.next = self.modulate.valid_out.val();
+        self.rgb_out.next = self.modulate.rgb_out.val();
     }
 }
 

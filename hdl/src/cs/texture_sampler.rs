@@ -1,7 +1,7 @@
 //! `texture_sampler`: the Color Shader's texture unit from a pixel's (s, t) and level of detail to its
 //! MODULATEd colour (issue 17, item 4): the level chosen from the level of detail, the address unit
 //! ([`TexelAddress`]), four external texture banks (read latency 1) and the texel filter
-//! ([`TexelFilter`]), then trilinear's blend of two levels and MODULATE. `golden::texture::Texture::
+//! ([`Bilinear`]), then trilinear's blend of two levels and MODULATE ([`Modulate`]). `golden::texture::Texture::
 //! sample` followed by `golden::texture::modulate` is the reference. Nearest and bilinear take one
 //! pixel per clock; a trilinear pixel between two levels takes two (its two footprints go through the
 //! same address unit and filter one after the other: `ready` is low in the first), one on a whole level
@@ -15,7 +15,7 @@
 //!    v
 //!  [ texel_address ] --tex_rd, tex_addr0..3--> banks --tex_data0..3 (1 cycle later)--> route
 //!    (3)                                                                                 v
-//!                                           [ texel_filter, colour = white: the bilinear texel ] (3)
+//!                                                  [ texel_filter's Bilinear: the texel ] (2)
 //!                                                                                        v
 //!          blend: second of a pair with the texel before it: (a (16 - f) + b f + 8) >> 4; others as they are (1)
 //!                                                                                        v
@@ -29,16 +29,18 @@
 
 use crate::common::MulU;
 use crate::cs::texel_address::{TexelAddress, ADDR_BITS};
-use crate::cs::texel_filter::TexelFilter;
+use crate::cs::modulate::Modulate;
+use crate::cs::texel_filter::Bilinear;
 use rust_hdl::prelude::*;
 
 /// Cycles from the cycle a pixel is accepted to its `rgb_out`.
-pub const TEXTURE_SAMPLER_LATENCY: u64 = 9;
+pub const TEXTURE_SAMPLER_LATENCY: u64 = 8;
 /// Levels in the table (1024 down to 1).
 pub const LEVELS: usize = 11; // written as 11 in `update` (hdl_gen knows no constants)
-/// Cycles from an issue to the filter's output: address 3, bank read 1, filter 3 (the tag delay
-/// lines; `update` writes 7 and 6 = TO_FILTER_OUT - 1 as literals, since hdl_gen knows no constants).
-const TO_FILTER_OUT: usize = 7;
+/// Cycles from an issue to the bilinear blend's output: address 3, bank read 1, blend 2 (the tag
+/// delay lines; `update` writes 6 and 5 = TO_FILTER_OUT - 1 as literals, since hdl_gen knows no
+/// constants).
+const TO_FILTER_OUT: usize = 6;
 
 #[derive(LogicBlock)]
 pub struct TextureSampler {
@@ -77,7 +79,7 @@ pub struct TextureSampler {
     pub rgb_out: Signal<Out, Bits<24>>,
 
     addr: TexelAddress,
-    filt: TexelFilter,
+    filt: Bilinear,
     bases: [DFF<Bits<ADDR_BITS>>; LEVELS],
     base_onehot: Signal<Local, Bits<16>>,
     // Issue.
@@ -116,14 +118,9 @@ pub struct TextureSampler {
     texel_q: [DFF<Bits<8>>; 3],
     colour_q: DFF<Bits<24>>,
     blend_valid: DFF<Bit>,
-    // MODULATE.
-    mm: [MulU<8, 8, 16>; 3],
-    m_p: [Signal<Local, Bits<16>>; 3],
-    m_hi: [Signal<Local, Bits<16>>; 3],
-    m_sum: [Signal<Local, Bits<16>>; 3],
-    out: [DFF<Bits<8>>; 3],
-    out_valid: DFF<Bit>,
-    packed: [Signal<Local, Bits<24>>; 3],
+    texel_parts: [Signal<Local, Bits<24>>; 3],
+    texel_packed: Signal<Local, Bits<24>>,
+    modulate: Modulate,
     k1_16: Constant<Bits<16>>,
     k2_2: Constant<Bits<2>>,
     k0_2: Constant<Bits<2>>,
@@ -131,9 +128,6 @@ pub struct TextureSampler {
     k16_5: Constant<Bits<5>>,
     k8_13: Constant<Bits<13>>,
     k4_13: Constant<Bits<13>>,
-    k128_16: Constant<Bits<16>>,
-    k8_16: Constant<Bits<16>>,
-    kwhite: Constant<Bits<24>>,
 }
 
 impl Default for TextureSampler {
@@ -201,13 +195,9 @@ impl Default for TextureSampler {
             texel_q: Default::default(),
             colour_q: Default::default(),
             blend_valid: Default::default(),
-            mm: Default::default(),
-            m_p: Default::default(),
-            m_hi: Default::default(),
-            m_sum: Default::default(),
-            out: Default::default(),
-            out_valid: Default::default(),
-            packed: Default::default(),
+            texel_parts: Default::default(),
+            texel_packed: Default::default(),
+            modulate: Default::default(),
             k1_16: Constant::new(1u64.into()),
             k2_2: Constant::new(2u64.into()),
             k0_2: Constant::new(0u64.into()),
@@ -215,9 +205,6 @@ impl Default for TextureSampler {
             k16_5: Constant::new(16u64.into()),
             k8_13: Constant::new(8u64.into()),
             k4_13: Constant::new(4u64.into()),
-            k128_16: Constant::new(128u64.into()),
-            k8_16: Constant::new(8u64.into()),
-            kwhite: Constant::new(0xff_ffffu64.into()),
         }
     }
 }
@@ -225,13 +212,13 @@ impl Default for TextureSampler {
 impl Logic for TextureSampler {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, pending, route_q, fx_q, fy_q, valid_q, first_texel, colour_q, blend_valid, out_valid);
+        dff_setup!(self, clock, pending, route_q, fx_q, fy_q, valid_q, first_texel, colour_q, blend_valid);
         self.addr.clock.next = self.clock.val();
         self.filt.clock.next = self.clock.val();
         for k in 0..11 {
             self.bases[k].clock.next = self.clock.val();
         }
-        for k in 0..7 {
+        for k in 0..6 {
             self.tag_out[k].clock.next = self.clock.val();
             self.tag_second[k].clock.next = self.clock.val();
             self.tag_f[k].clock.next = self.clock.val();
@@ -239,7 +226,6 @@ impl Logic for TextureSampler {
         }
         for c in 0..3 {
             self.texel_q[c].clock.next = self.clock.val();
-            self.out[c].clock.next = self.clock.val();
         }
 
         // The level table.
@@ -296,7 +282,7 @@ impl Logic for TextureSampler {
         self.tag_second[0].d.next = self.accept.val() & self.pending.q.val();
         self.tag_f[0].d.next = self.lod_frac.val();
         self.tag_colour[0].d.next = self.colour.val();
-        for k in 1..7 {
+        for k in 1..6 {
             self.tag_out[k].d.next = self.tag_out[k - 1].q.val();
             self.tag_second[k].d.next = self.tag_second[k - 1].q.val();
             self.tag_f[k].d.next = self.tag_f[k - 1].q.val();
@@ -336,25 +322,24 @@ impl Logic for TextureSampler {
         self.filt.t11.next = self.slot_data[3].val();
         self.filt.fx.next = self.fx_q.q.val();
         self.filt.fy.next = self.fy_q.q.val();
-        self.filt.colour.next = self.kwhite.val();
 
         // Trilinear blend: a pair's two footprints leave the filter in consecutive cycles (the
         // second issued in the cycle after the first), so the texel of the cycle before the second
         // is the first level's. The second is blended with it by the level of detail's fraction; any
         // other texel passes (weights 0 and 16).
-        self.first_texel.d.next = self.filt.rgb_out.val();
+        self.first_texel.d.next = self.filt.texel_out.val();
         // wb: the filter's texel (the second level of a pair, else the only one); wa: the kept first.
         self.wb.next = self.k16_5.val();
-        if self.tag_second[6].q.val() {
-            self.wb.next = bit_cast::<5, 4>(self.tag_f[6].q.val());
+        if self.tag_second[5].q.val() {
+            self.wb.next = bit_cast::<5, 4>(self.tag_f[5].q.val());
         }
         self.wa.next = self.k16_5.val() - self.wb.val();
         self.mb[0].a.next = self.first_texel.q.val().get_bits::<8>(16);
         self.mb[1].a.next = self.first_texel.q.val().get_bits::<8>(8);
         self.mb[2].a.next = self.first_texel.q.val().get_bits::<8>(0);
-        self.mb[3].a.next = self.filt.rgb_out.val().get_bits::<8>(16);
-        self.mb[4].a.next = self.filt.rgb_out.val().get_bits::<8>(8);
-        self.mb[5].a.next = self.filt.rgb_out.val().get_bits::<8>(0);
+        self.mb[3].a.next = self.filt.texel_out.val().get_bits::<8>(16);
+        self.mb[4].a.next = self.filt.texel_out.val().get_bits::<8>(8);
+        self.mb[5].a.next = self.filt.texel_out.val().get_bits::<8>(0);
         for c in 0..3 {
             self.mb[c].b.next = self.wa.val();
             self.mb[c + 3].b.next = self.wb.val();
@@ -363,33 +348,24 @@ impl Logic for TextureSampler {
             self.b_shift[c].next = self.b_round[c].val() >> self.k4_13.val();
             self.b_chan[c].next = self.b_shift[c].val().get_bits::<8>(0);
             self.texel_q[c].d.next = 0.into();
-            if self.tag_out[6].q.val() {
+            if self.tag_out[5].q.val() {
                 self.texel_q[c].d.next = self.b_chan[c].val();
             }
         }
-        self.colour_q.d.next = self.tag_colour[6].q.val();
-        self.blend_valid.d.next = self.tag_out[6].q.val();
+        self.colour_q.d.next = self.tag_colour[5].q.val();
+        self.texel_parts[0].next = bit_cast::<24, 8>(self.texel_q[0].q.val()) << 16;
+        self.texel_parts[1].next = bit_cast::<24, 8>(self.texel_q[1].q.val()) << 8;
+        self.texel_parts[2].next = bit_cast::<24, 8>(self.texel_q[2].q.val());
+        self.texel_packed.next = self.texel_parts[0].val() | self.texel_parts[1].val() | self.texel_parts[2].val();
+        self.blend_valid.d.next = self.tag_out[5].q.val();
 
-        // MODULATE: texel x colour / 255 rounded: p = t c + 128, (p + (p >> 8)) >> 8.
-        self.mm[0].b.next = self.colour_q.q.val().get_bits::<8>(16);
-        self.mm[1].b.next = self.colour_q.q.val().get_bits::<8>(8);
-        self.mm[2].b.next = self.colour_q.q.val().get_bits::<8>(0);
-        for c in 0..3 {
-            self.mm[c].a.next = self.texel_q[c].q.val();
-            self.m_p[c].next = self.mm[c].p.val() + self.k128_16.val();
-            self.m_hi[c].next = self.m_p[c].val() >> self.k8_16.val();
-            self.m_sum[c].next = self.m_p[c].val() + self.m_hi[c].val();
-            self.out[c].d.next = 0.into();
-            if self.blend_valid.q.val() {
-                self.out[c].d.next = self.m_sum[c].val().get_bits::<8>(8);
-            }
-        }
-        self.out_valid.d.next = self.blend_valid.q.val();
-        self.packed[0].next = bit_cast::<24, 8>(self.out[0].q.val()) << 16;
-        self.packed[1].next = bit_cast::<24, 8>(self.out[1].q.val()) << 8;
-        self.packed[2].next = bit_cast::<24, 8>(self.out[2].q.val());
-        self.rgb_out.next = self.packed[0].val() | self.packed[1].val() | self.packed[2].val();
-        self.valid_out.next = self.out_valid.q.val();
+        // MODULATE.
+        self.modulate.clock.next = self.clock.val();
+        self.modulate.valid_in.next = self.blend_valid.q.val();
+        self.modulate.texel.next = self.texel_packed.val();
+        self.modulate.colour.next = self.colour_q.q.val();
+        self.rgb_out.next = self.modulate.rgb_out.val();
+        self.valid_out.next = self.modulate.valid_out.val();
     }
 }
 

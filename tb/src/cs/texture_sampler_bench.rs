@@ -4,7 +4,7 @@
 //! gaps, held while `ready` is low. Every cycle the bench checks `ready`, the bank ports and the
 //! result against the cycle model `golden::cycle::texture_sampler` (its timing: the footprint of the
 //! level issued three cycles earlier, the colour `modulate(Texture::sample(..), colour)` of the pixel
-//! accepted nine cycles earlier; a trilinear pixel between two levels takes two cycles).
+//! accepted eight cycles earlier; a trilinear pixel between two levels takes two cycles).
 
 use crate::common::{Rng, Trace};
 use crate::cs::pack::BitVector;
