@@ -82,14 +82,11 @@ pub struct TexelAddress {
     hmax: Signal<Local, Bits<27>>,
     wpow: Signal<Local, Bits<27>>,
     hpow: Signal<Local, Bits<27>>,
-    xam: Signal<Local, Bits<27>>,
-    xbm: Signal<Local, Bits<27>>,
-    yam: Signal<Local, Bits<27>>,
-    ybm: Signal<Local, Bits<27>>,
-    xa: DFF<Bits<10>>,
-    xb: DFF<Bits<10>>,
-    ya: DFF<Bits<10>>,
-    yb: DFF<Bits<10>>,
+    idx: [Signal<Local, Bits<27>>; 4],
+    lim: [Signal<Local, Bits<27>>; 4],
+    masked: [Signal<Local, Bits<27>>; 4],
+    /// The wrapped or clamped [xa, xb, ya, yb].
+    wrapped: [DFF<Bits<10>>; 4],
     fx2: DFF<Bits<8>>,
     fy2: DFF<Bits<8>>,
     w2: DFF<Bits<4>>,
@@ -170,14 +167,10 @@ impl Default for TexelAddress {
             hmax: Default::default(),
             wpow: Default::default(),
             hpow: Default::default(),
-            xam: Default::default(),
-            xbm: Default::default(),
-            yam: Default::default(),
-            ybm: Default::default(),
-            xa: Default::default(),
-            xb: Default::default(),
-            ya: Default::default(),
-            yb: Default::default(),
+            idx: Default::default(),
+            lim: Default::default(),
+            masked: Default::default(),
+            wrapped: Default::default(),
             fx2: Default::default(),
             fy2: Default::default(),
             w2: Default::default(),
@@ -215,9 +208,10 @@ impl Default for TexelAddress {
 impl Logic for TexelAddress {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, x0, y0, fx1, fy1, w1, h1, base1, bil1, clamp1, valid1, xa, xb, ya, yb, fx2, fy2, w2, base2, valid2, rd_q, route_q, fx3, fy3, valid3);
+        dff_setup!(self, clock, x0, y0, fx1, fy1, w1, h1, base1, bil1, clamp1, valid1, fx2, fy2, w2, base2, valid2, rd_q, route_q, fx3, fy3, valid3);
         for k in 0..4 {
             self.addr[k].clock.next = self.clock.val();
+            self.wrapped[k].clock.next = self.clock.val();
         }
         // Stage 1: sign-extend, scale to the level's texels, step back half a texel for bilinear.
         self.s_lo.next = bit_cast::<43, 32>(self.s.val());
@@ -264,34 +258,24 @@ impl Logic for TexelAddress {
         self.hpow.next = self.k1_27.val() << self.h1.q.val();
         self.wmax.next = self.wpow.val() - self.k1_27.val();
         self.hmax.next = self.hpow.val() - self.k1_27.val();
-        self.xam.next = self.x0.q.val() & self.wmax.val();
-        self.xbm.next = self.x1.val() & self.wmax.val();
-        self.yam.next = self.y0.q.val() & self.hmax.val();
-        self.ybm.next = self.y1.val() & self.hmax.val();
-        self.xa.d.next = self.xam.val().get_bits::<10>(0);
-        self.xb.d.next = self.xbm.val().get_bits::<10>(0);
-        self.ya.d.next = self.yam.val().get_bits::<10>(0);
-        self.yb.d.next = self.ybm.val().get_bits::<10>(0);
-        if self.clamp1.q.val() {
-            if self.x0.q.val().get_bit(26) {
-                self.xa.d.next = 0.into();
-            } else if self.x0.q.val() > self.wmax.val() {
-                self.xa.d.next = self.wmax.val().get_bits::<10>(0);
-            }
-            if self.x1.val().get_bit(26) {
-                self.xb.d.next = 0.into();
-            } else if self.x1.val() > self.wmax.val() {
-                self.xb.d.next = self.wmax.val().get_bits::<10>(0);
-            }
-            if self.y0.q.val().get_bit(26) {
-                self.ya.d.next = 0.into();
-            } else if self.y0.q.val() > self.hmax.val() {
-                self.ya.d.next = self.hmax.val().get_bits::<10>(0);
-            }
-            if self.y1.val().get_bit(26) {
-                self.yb.d.next = 0.into();
-            } else if self.y1.val() > self.hmax.val() {
-                self.yb.d.next = self.hmax.val().get_bits::<10>(0);
+        // Indices [xa, xb, ya, yb] and their dimension's last texel.
+        self.idx[0].next = self.x0.q.val();
+        self.idx[1].next = self.x1.val();
+        self.idx[2].next = self.y0.q.val();
+        self.idx[3].next = self.y1.val();
+        self.lim[0].next = self.wmax.val();
+        self.lim[1].next = self.wmax.val();
+        self.lim[2].next = self.hmax.val();
+        self.lim[3].next = self.hmax.val();
+        for k in 0..4 {
+            self.masked[k].next = self.idx[k].val() & self.lim[k].val();
+            self.wrapped[k].d.next = self.masked[k].val().get_bits::<10>(0);
+            if self.clamp1.q.val() {
+                if self.idx[k].val().get_bit(26) {
+                    self.wrapped[k].d.next = 0.into();
+                } else if self.idx[k].val() > self.lim[k].val() {
+                    self.wrapped[k].d.next = self.lim[k].val().get_bits::<10>(0);
+                }
             }
         }
         self.fx2.d.next = self.fx1.q.val();
@@ -305,14 +289,14 @@ impl Logic for TexelAddress {
         if self.w2.q.val().any() {
             self.row_shift.next = self.w2.q.val() - self.k1_4.val();
         }
-        self.sx[0].next = bit_cast::<ADDR_BITS, 10>(self.xa.q.val());
-        self.sx[1].next = bit_cast::<ADDR_BITS, 10>(self.xb.q.val());
-        self.sx[2].next = bit_cast::<ADDR_BITS, 10>(self.xa.q.val());
-        self.sx[3].next = bit_cast::<ADDR_BITS, 10>(self.xb.q.val());
-        self.sy[0].next = bit_cast::<ADDR_BITS, 10>(self.ya.q.val());
-        self.sy[1].next = bit_cast::<ADDR_BITS, 10>(self.ya.q.val());
-        self.sy[2].next = bit_cast::<ADDR_BITS, 10>(self.yb.q.val());
-        self.sy[3].next = bit_cast::<ADDR_BITS, 10>(self.yb.q.val());
+        self.sx[0].next = bit_cast::<ADDR_BITS, 10>(self.wrapped[0].q.val());
+        self.sx[1].next = bit_cast::<ADDR_BITS, 10>(self.wrapped[1].q.val());
+        self.sx[2].next = bit_cast::<ADDR_BITS, 10>(self.wrapped[0].q.val());
+        self.sx[3].next = bit_cast::<ADDR_BITS, 10>(self.wrapped[1].q.val());
+        self.sy[0].next = bit_cast::<ADDR_BITS, 10>(self.wrapped[2].q.val());
+        self.sy[1].next = bit_cast::<ADDR_BITS, 10>(self.wrapped[2].q.val());
+        self.sy[2].next = bit_cast::<ADDR_BITS, 10>(self.wrapped[3].q.val());
+        self.sy[3].next = bit_cast::<ADDR_BITS, 10>(self.wrapped[3].q.val());
         for k in 0..4 {
             self.bank_x[k].next = self.sx[k].val().get_bits::<2>(0) & self.k1_2.val();
             self.bank_y[k].next = self.sy[k].val().get_bits::<2>(0) & self.k1_2.val();
