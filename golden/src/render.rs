@@ -185,15 +185,13 @@ impl GoldenChipset {
     }
 }
 
-/// Words one sample reads from the texture banks: the footprint in the level the level of detail
-/// rounds down to, and for trilinear between two levels the next level's too.
+/// Words one sample reads from the texture banks: the footprint in each level it reads
+/// ([`crate::texture::Texture::levels_for`]).
 fn bank_words(geoms: &[crate::texbank::LevelGeom], c: crate::texcoord::TexCoord, tx: &Texturing) -> u32 {
-    let last = geoms.len() - 1;
-    let level = ((c.lod >> crate::texture::LOD_FRAC) as usize).min(last);
+    let (level, second) = tx.texture.levels_for(c.lod, tx.filter);
     let bilinear = tx.filter != crate::texture::Filter::Nearest;
     let at = |l: usize| crate::texbank::footprint(geoms[l], c.s, c.t, bilinear, tx.wrap).reads();
-    let second = tx.filter == crate::texture::Filter::Trilinear && level < last && c.lod & ((1 << crate::texture::LOD_FRAC) - 1) != 0;
-    at(level) + if second { at(level + 1) } else { 0 }
+    at(level) + second.map_or(0, |(next, _)| at(next))
 }
 
 impl Chipset for GoldenChipset {

@@ -168,19 +168,27 @@ impl Texture {
         }
     }
 
-    /// The colour at (s, t) with level of detail `lod` (Q4.4). Nearest and bilinear read the level
-    /// `lod` rounds down to; trilinear blends it with the next by the fraction.
-    pub fn sample(&self, s: i32, t: i32, lod: u8, filter: Filter, wrap: Wrap) -> [u8; 3] {
-        let level = (lod >> LOD_FRAC) as usize;
+    /// The levels a sample at level of detail `lod` (Q4.4) reads: the level `lod` rounds down to (at
+    /// most the last), and for trilinear with a fraction f != 0 below the last level, the next level
+    /// and f (its weight, in sixteenths).
+    pub fn levels_for(&self, lod: u8, filter: Filter) -> (usize, Option<(usize, u32)>) {
+        let last = self.levels.len() - 1;
+        let level = ((lod >> LOD_FRAC) as usize).min(last);
         let f = (lod & ((1 << LOD_FRAC) - 1)) as u32;
-        match filter {
-            Filter::Nearest | Filter::Bilinear => self.sample_level(level, s, t, filter, wrap),
-            Filter::Trilinear => {
+        let second = filter == Filter::Trilinear && f != 0 && ((lod >> LOD_FRAC) as usize) < last;
+        (level, second.then_some((level + 1, f)))
+    }
+
+    /// The colour at (s, t) with level of detail `lod` (Q4.4). Nearest and bilinear read the level
+    /// `lod` rounds down to; trilinear blends it with the next by the fraction ([`Texture::levels_for`]).
+    pub fn sample(&self, s: i32, t: i32, lod: u8, filter: Filter, wrap: Wrap) -> [u8; 3] {
+        let (level, second) = self.levels_for(lod, filter);
+        match (filter, second) {
+            (Filter::Nearest, _) => self.sample_level(level, s, t, filter, wrap),
+            (_, None) => self.sample_level(level, s, t, Filter::Bilinear, wrap),
+            (_, Some((next, f))) => {
                 let a = self.sample_level(level, s, t, Filter::Bilinear, wrap);
-                if level + 1 >= self.levels.len() || f == 0 {
-                    return a;
-                }
-                let b = self.sample_level(level + 1, s, t, Filter::Bilinear, wrap);
+                let b = self.sample_level(next, s, t, Filter::Bilinear, wrap);
                 let one = 1u32 << LOD_FRAC;
                 let mut out = [0u8; 3];
                 for c in 0..3 {
@@ -209,12 +217,10 @@ impl Texture {
     /// (bilinear), eight (trilinear between two levels) or four (trilinear at a whole level or at the
     /// last level, where it is bilinear).
     pub fn texels_read(&self, lod: u8, filter: Filter) -> u32 {
-        let level = (lod >> LOD_FRAC) as usize;
-        match filter {
-            Filter::Nearest => 1,
-            Filter::Bilinear => 4,
-            Filter::Trilinear if level + 1 >= self.levels.len() || lod & ((1 << LOD_FRAC) - 1) == 0 => 4,
-            Filter::Trilinear => 8,
+        match (filter, self.levels_for(lod, filter).1) {
+            (Filter::Nearest, _) => 1,
+            (_, None) => 4,
+            (_, Some(_)) => 8,
         }
     }
 

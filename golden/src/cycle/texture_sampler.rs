@@ -15,7 +15,7 @@
 //! Outputs are 0 where nothing is due.
 
 use crate::texbank::{footprint, layout, Footprint, LevelGeom};
-use crate::texture::{modulate, Filter, Texture, Wrap, LOD_FRAC};
+use crate::texture::{modulate, Filter, Texture, Wrap};
 use std::collections::VecDeque;
 
 /// Cycles from a pixel's acceptance to its colour.
@@ -64,8 +64,7 @@ impl TextureSamplerModel {
 
     /// Whether `p` takes two cycles (trilinear between two levels).
     pub fn takes_two_cycles(&self, p: &SamplerPixel) -> bool {
-        let last = self.geoms.len() - 1;
-        self.filter == Filter::Trilinear && p.lod & ((1 << LOD_FRAC) - 1) != 0 && ((p.lod >> LOD_FRAC) as usize) < last
+        self.texture.levels_for(p.lod, self.filter).1.is_some()
     }
 
     /// Whether nothing is in flight.
@@ -77,12 +76,14 @@ impl TextureSamplerModel {
     pub fn step(&mut self, offer: Option<&SamplerPixel>) -> SamplerOut {
         let mut ready = true;
         if let Some(p) = offer {
-            let last = self.geoms.len() - 1;
-            let level = ((p.lod >> LOD_FRAC) as usize).min(last);
-            let issue = if self.pending { level + 1 } else { level };
+            let (level, second) = self.texture.levels_for(p.lod, self.filter);
+            let issue = match second {
+                Some((next, _)) if self.pending => next,
+                _ => level,
+            };
             let fp = footprint(self.geoms[issue], p.s, p.t, self.filter != Filter::Nearest, self.wrap);
             self.footprints.push_back((self.cycle + ISSUE_TO_BANKS, fp));
-            if self.takes_two_cycles(p) && !self.pending {
+            if second.is_some() && !self.pending {
                 ready = false;
                 self.pending = true;
             } else {
