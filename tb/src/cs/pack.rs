@@ -73,6 +73,11 @@ pub fn command_of(c: &SetupCmd) -> SetupCommand {
     }
 }
 
+/// RGB888 as the texture path's ports take it (texels, colours: R 23:16, G 15:8, B 7:0).
+pub fn rgb888(c: [u8; 3]) -> u64 {
+    (c[0] as u64) << 16 | (c[1] as u64) << 8 | c[2] as u64
+}
+
 /// RGB888 as `video_tdata` / `background` (AXI4-Stream video, UG934: R 23:16, B 15:8, G 7:0).
 pub fn tdata_of(rgb: [u8; 3]) -> u32 {
     (rgb[0] as u32) << 16 | (rgb[2] as u32) << 8 | rgb[1] as u32

@@ -178,6 +178,7 @@ pub fn run(inputs: &[AddressIn], model: &dyn Fn(Option<&AddressIn>) -> Option<Fo
 mod tests {
     use super::*;
     use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted};
+    use crate::cs::pack::rgb888 as pack;
     use crate::cs::replay::replay_iverilog;
     use golden::texbank::{banks, layout};
     use golden::texture::{modulate, Filter, Texture};
@@ -250,7 +251,6 @@ mod tests {
         let to_filter = TEXEL_ADDRESS_LATENCY as usize + 1;
         let total = to_filter + TEXEL_FILTER_LATENCY as usize;
         let mut read_q: Option<([u32; 4], u64, u64, u64, bool)> = None;
-        let pack = |c: [u8; 3]| (c[0] as u64) << 16 | (c[1] as u64) << 8 | c[2] as u64;
         let mut checked = 0;
         for t in 0..inputs.len() + total {
             let idle = (AddressIn::default(), [0; 3], 0);

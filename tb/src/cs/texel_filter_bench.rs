@@ -4,7 +4,7 @@
 //! output ports in every cycle; the same vectors recorded for the Verilog replay.
 
 use crate::common::{Rng, Trace};
-use crate::cs::pack::BitVector;
+use crate::cs::pack::{rgb888 as pack, BitVector};
 use crate::cs::replay::{port, PortSpec, Recording};
 use golden::texture::{bilinear, modulate};
 use hdl::cs::texel_filter::{TexelFilter, TEXEL_FILTER_LATENCY};
@@ -20,10 +20,6 @@ pub struct FilterIn {
     pub colour: [u8; 3],
 }
 
-/// RGB888 packed R in 23:16, G in 15:8, B in 7:0.
-fn pack(c: [u8; 3]) -> u64 {
-    (c[0] as u64) << 16 | (c[1] as u64) << 8 | c[2] as u64
-}
 
 /// What the block must show in a cycle, given the inputs `TEXEL_FILTER_LATENCY` cycles earlier.
 pub fn expected(earlier: Option<&FilterIn>) -> (bool, u64) {

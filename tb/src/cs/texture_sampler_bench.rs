@@ -7,7 +7,7 @@
 //! accepted eight cycles earlier; a trilinear pixel between two levels takes two cycles).
 
 use crate::common::{Rng, Trace};
-use crate::cs::pack::BitVector;
+use crate::cs::pack::{rgb888 as pack, BitVector};
 use crate::cs::replay::{port, PortSpec, Recording};
 use golden::cycle::texture_sampler::{SamplerPixel, TextureSamplerModel};
 use golden::texbank::{banks, layout, LevelGeom, TEXTURE_BANKS};
@@ -40,9 +40,6 @@ pub struct Measured {
     pub bank_words: u64,
 }
 
-fn pack(c: [u8; 3]) -> u64 {
-    (c[0] as u64) << 16 | (c[1] as u64) << 8 | c[2] as u64
-}
 
 pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
     (
