@@ -148,9 +148,9 @@ impl TexPlanes {
         [self.sw, self.tw, self.q].iter().any(|p| p.a.abs() >= max || p.b.abs() >= max)
     }
 
-    /// The texture coordinate at pixel (X, Y) (its centre) for a texture of 2^w_log2 x 2^h_log2, in
-    /// the widths of the Color Shader's coordinate unit (see the module's table "per pixel").
-    pub fn eval(&self, x: u32, y: u32, w_log2: u32, h_log2: u32) -> TexCoord {
+    /// The first half of [`TexPlanes::eval`], the coordinate unit's `tex_coord` block: s and t at
+    /// pixel (X, Y), and the reciprocal of Q they were formed with, for the level of detail.
+    pub fn coord(&self, x: u32, y: u32) -> PixelCoord {
         // Q = 1/w with 16 fraction bits, at least one LSB (a pixel on an edge may extrapolate below
         // 0) and below 2^41 (inside a triangle Q <= 2^40 plus the planes' rounding).
         let q = self.q.raw(x, y).clamp(1, Q_MAX);
@@ -169,6 +169,14 @@ impl TexPlanes {
         let sat = |v: i128| v.clamp(i32::MIN as i128, i32::MAX as i128) as i32;
         let s = sat(round_shift(norm(self.sw.raw(x, y)) * m, RECIP_BITS));
         let t = sat(round_shift(norm(self.tw.raw(x, y)) * m, RECIP_BITS));
+        PixelCoord { s, t, m: r.mant, e }
+    }
+
+    /// The texture coordinate at pixel (X, Y) (its centre) for a texture of 2^w_log2 x 2^h_log2, in
+    /// the widths of the Color Shader's coordinate unit (see the module's table "per pixel").
+    pub fn eval(&self, x: u32, y: u32, w_log2: u32, h_log2: u32) -> TexCoord {
+        let PixelCoord { s, t, m, e } = self.coord(x, y);
+        let m = m as i128;
         // ds/dx = (A_sw 2^20 - s A_q) / Q in Q15.16 per pixel. The level of detail needs only the
         // leading one and four bits below it of the largest of the four, so the numerators are formed
         // from 18-bit mantissas ([`Float`]), compared, and the largest scaled by 1/Q once.
@@ -186,6 +194,17 @@ impl TexPlanes {
         let rho = scaled.round_at((e + RECIP_BITS) as i32);
         TexCoord { s, t, lod: lod_q4(rho) }
     }
+}
+
+/// What [`TexPlanes::coord`] gives: s and t (Q15.16), and 1/Q ~ m 2^-(e + 24).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
+pub struct PixelCoord {
+    pub s: i32,
+    pub t: i32,
+    /// The reciprocal's mantissa (25 bits).
+    pub m: u32,
+    /// Q's leading one (0..=40).
+    pub e: u32,
 }
 
 /// Bits of the mantissas the level of detail is computed with.

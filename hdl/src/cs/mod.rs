@@ -34,6 +34,7 @@ pub mod normalizer;
 pub mod plane_mul;
 pub mod plane_round;
 pub mod colour_setup;
+pub mod tex_coord;
 pub mod texel_address;
 pub mod texel_filter;
 pub mod texture_sampler;
