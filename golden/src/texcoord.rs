@@ -175,7 +175,14 @@ impl TexPlanes {
     /// The texture coordinate at pixel (X, Y) (its centre) for a texture of 2^w_log2 x 2^h_log2, in
     /// the widths of the Color Shader's coordinate unit (see the module's table "per pixel").
     pub fn eval(&self, x: u32, y: u32, w_log2: u32, h_log2: u32) -> TexCoord {
-        let PixelCoord { s, t, m, e } = self.coord(x, y);
+        let c = self.coord(x, y);
+        TexCoord { s: c.s, t: c.t, lod: self.lod(c, w_log2, h_log2) }
+    }
+
+    /// The second half of [`TexPlanes::eval`], the coordinate unit's `tex_lod` block: the level of
+    /// detail (Q4.4) at a pixel whose [`TexPlanes::coord`] is `c`.
+    pub fn lod(&self, c: PixelCoord, w_log2: u32, h_log2: u32) -> u8 {
+        let PixelCoord { s, t, m, e } = c;
         let m = m as i128;
         // ds/dx = (A_sw 2^20 - s A_q) / Q in Q15.16 per pixel. The level of detail needs only the
         // leading one and four bits below it of the largest of the four, so the numerators are formed
@@ -192,7 +199,7 @@ impl TexPlanes {
         // rho m 2^-(e + 24), with m's top 18 bits, rounded to an integer (16 fraction bits).
         let scaled = rho.mul(Float { mant: (m >> (RECIP_BITS + 1 - MANT_BITS)) as i64, exp: (RECIP_BITS + 1 - MANT_BITS) as i32 });
         let rho = scaled.round_at((e + RECIP_BITS) as i32);
-        TexCoord { s, t, lod: lod_q4(rho) }
+        lod_q4(rho)
     }
 }
 

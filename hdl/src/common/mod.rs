@@ -11,6 +11,7 @@ pub mod fast_ram;
 pub mod leading_one;
 pub mod merge_modules;
 pub mod mul;
+pub mod normalize;
 pub mod stream;
 
 pub use add::AddU;
@@ -19,6 +20,7 @@ pub use fast_ram::FastRAM;
 pub use leading_one::LeadingOne36;
 pub use merge_modules::merge_identical_modules;
 pub use mul::{MulS, MulU};
+pub use normalize::{LeftAlign, Normalize18};
 pub use stream::{StreamIn, StreamOut};
 
 use rust_hdl::prelude::*;

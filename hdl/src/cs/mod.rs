@@ -35,6 +35,7 @@ pub mod plane_mul;
 pub mod plane_round;
 pub mod colour_setup;
 pub mod tex_coord;
+pub mod tex_lod;
 pub mod texel_address;
 pub mod texel_filter;
 pub mod texture_sampler;

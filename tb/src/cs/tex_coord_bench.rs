@@ -49,12 +49,12 @@ pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
     (i, vec![port("valid_out", 1), port("s", 32), port("t", 32), port("m", 25), port("e", 6)])
 }
 
-fn uniform(rng: &mut Rng, lo: f64, hi: f64) -> f64 {
+pub fn uniform(rng: &mut Rng, lo: f64, hi: f64) -> f64 {
     lo + (hi - lo) * (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64
 }
 
 /// A signed value of `bits` bits: small, at an end of the range, or anywhere in it.
-fn raw(rng: &mut Rng, bits: u32) -> i64 {
+pub fn raw(rng: &mut Rng, bits: u32) -> i64 {
     let max = (1i64 << (bits - 1)) - 1;
     match rng.below(4) {
         0 => rng.below(2001) as i64 - 1000,
@@ -65,7 +65,7 @@ fn raw(rng: &mut Rng, bits: u32) -> i64 {
 
 /// The planes of a random triangle in a 640x480 window, as the host and colour setup make them, and
 /// its bounding box.
-fn triangle(rng: &mut Rng) -> (TexPlanes, [u32; 4]) {
+pub fn triangle(rng: &mut Rng) -> (TexPlanes, [u32; 4]) {
     loop {
         let xs = [0; 3].map(|_| uniform(rng, 0.0, 640.0));
         let ys = [0; 3].map(|_| uniform(rng, 0.0, 480.0));

@@ -1,0 +1,253 @@
+//! Bench of `hdl::cs::tex_lod` (the per-pixel level of detail): pixels of random triangles (the
+//! planes and `coord` of `tex_coord_bench`'s triangles) with texture sizes 1x1 to 1024x1024, and raw
+//! inputs at the ends of their ranges (gradients of 0 or of 40 bits, s and t at the i32 ends, every
+//! exponent of 1/Q); a pixel in most cycles. The RustHDL simulation against
+//! `golden::texcoord::TexPlanes::lod` delayed by the block's latency, on every output port in every
+//! cycle; the same vectors recorded for the Verilog replay.
+
+use crate::common::{Rng, Trace};
+use crate::cs::pack::BitVector;
+use crate::cs::replay::{port, PortSpec, Recording};
+use crate::cs::tex_coord_bench::{raw, triangle};
+use golden::format::Plane;
+use golden::texcoord::{PixelCoord, TexPlanes};
+use hdl::common::from_i64;
+use hdl::cs::tex_lod::{TexLod, TEX_LOD_LATENCY};
+use rust_hdl::prelude::*;
+
+/// One cycle's inputs.
+#[derive(Copy, Clone, Debug, Default)]
+pub struct LodIn {
+    pub valid: bool,
+    pub coord: PixelCoord,
+    pub w_log2: u32,
+    pub h_log2: u32,
+    pub planes: TexPlanes,
+}
+
+/// What the block must show in a cycle, given the inputs `TEX_LOD_LATENCY` cycles earlier.
+pub fn expected(earlier: Option<&LodIn>) -> Option<u8> {
+    match earlier {
+        Some(i) if i.valid => Some(i.planes.lod(i.coord, i.w_log2, i.h_log2)),
+        _ => None,
+    }
+}
+
+pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
+    let mut i = vec![port("valid_in", 1), port("s", 32), port("t", 32), port("m", 25), port("e", 6), port("w_log2", 4), port("h_log2", 4)];
+    for p in ["sw_a", "sw_b", "tw_a", "tw_b", "q_a", "q_b"] {
+        i.push(port(p, 40));
+    }
+    (i, vec![port("valid_out", 1), port("lod", 8)])
+}
+
+/// Random inputs: runs of pixels of one triangle, and one pixel in five with raw inputs; a pixel in
+/// `valid_percent` of the cycles.
+pub fn stimulus(rng: &mut Rng, cycles: usize, valid_percent: u64) -> Vec<LodIn> {
+    let mut out = Vec::with_capacity(cycles);
+    while out.len() < cycles {
+        let (planes, b) = triangle(rng);
+        let (w_log2, h_log2) = (rng.below(11) as u32, rng.below(11) as u32);
+        for _ in 0..1 + rng.below(40) {
+            let (x, y) = (b[0] + rng.below((b[1] - b[0] + 1) as u64) as u32, b[2] + rng.below((b[3] - b[2] + 1) as u64) as u32);
+            let mut i = LodIn { valid: rng.chance(valid_percent), coord: planes.coord(x, y), w_log2, h_log2, planes };
+            if rng.chance(20) {
+                // Gradients of 0 (one in four) or at random widths up to 40 bits.
+                let mut g = || if rng.chance(25) { 0 } else { let bits = 1 + rng.below(40) as u32; raw(rng, bits) };
+                i.planes = TexPlanes {
+                    sw: Plane { a: g(), b: g(), c: 0 },
+                    tw: Plane { a: g(), b: g(), c: 0 },
+                    q: Plane { a: g(), b: g(), c: 0 },
+                };
+                let mut st = || match rng.below(4) {
+                    0 => [i32::MIN, i32::MAX, 0, -1][rng.below(4) as usize],
+                    _ => { let bits = 1 + rng.below(32) as u32; raw(rng, bits) as i32 }
+                };
+                i.coord = PixelCoord { s: st(), t: st(), m: (1 << 23) + rng.below((1 << 23) + 1) as u32, e: rng.below(41) as u32 };
+                i.w_log2 = rng.below(11) as u32;
+                i.h_log2 = rng.below(11) as u32;
+            }
+            out.push(i);
+        }
+    }
+    out.truncate(cycles);
+    out
+}
+
+fn drive(uut: &mut TexLod, i: &LodIn) {
+    uut.valid_in.next = i.valid;
+    uut.s.next = (i.coord.s as u32 as u64).into();
+    uut.t.next = (i.coord.t as u32 as u64).into();
+    uut.m.next = (i.coord.m as u64).into();
+    uut.e.next = (i.coord.e as u64).into();
+    uut.w_log2.next = (i.w_log2 as u64).into();
+    uut.h_log2.next = (i.h_log2 as u64).into();
+    let p = &i.planes;
+    uut.sw_a.next = from_i64::<40>(p.sw.a);
+    uut.sw_b.next = from_i64::<40>(p.sw.b);
+    uut.tw_a.next = from_i64::<40>(p.tw.a);
+    uut.tw_b.next = from_i64::<40>(p.tw.b);
+    uut.q_a.next = from_i64::<40>(p.q.a);
+    uut.q_b.next = from_i64::<40>(p.q.b);
+}
+
+/// Run `inputs` through the RustHDL block, comparing every cycle with `model` (of the inputs
+/// `TEX_LOD_LATENCY` cycles earlier; `golden` passes [`expected`]). Returns the recording.
+pub fn run(inputs: &[LodIn], model: &dyn Fn(Option<&LodIn>) -> Option<u8>, vcd: Option<&std::path::Path>) -> Result<Recording, String> {
+    let mut uut = TexLod::default();
+    uut.connect_all();
+    check_all(&uut).map_err(|e| format!("tex_lod design check: {e:?}"))?;
+    let mut trace = Trace::new(&uut, vcd)?;
+    let (i, o) = replay_ports();
+    let mut rec = Recording::new(i, o);
+    let lat = TEX_LOD_LATENCY as usize;
+    for (t, inp) in inputs.iter().enumerate() {
+        drive(&mut uut, inp);
+        uut.clock.next = false.into();
+        if !simulate(&mut uut, 200) {
+            return Err(format!("tex_lod did not settle in cycle {t}"));
+        }
+        trace.dump(&uut, 10 * t as u64)?;
+        let want = model(if t >= lat { inputs.get(t - lat) } else { None });
+        let want = (want.is_some(), want.unwrap_or(0) as u64);
+        let now = (uut.valid_out.val(), uut.lod.val().to_u64());
+        if now != want {
+            return Err(trace.fail(
+                t as u64,
+                format!(
+                    "(valid_out, lod) = {now:?}, expected {want:?} (inputs of cycle {}: {:?})",
+                    t as i64 - lat as i64,
+                    t.checked_sub(lat).map(|k| inputs[k])
+                ),
+            ));
+        }
+        let mut vin = BitVector::default();
+        vin.push(inp.valid as u128, 1);
+        vin.push(inp.coord.s as u32 as u128, 32);
+        vin.push(inp.coord.t as u32 as u128, 32);
+        vin.push(inp.coord.m as u128, 25);
+        vin.push(inp.coord.e as u128, 6);
+        vin.push(inp.w_log2 as u128, 4);
+        vin.push(inp.h_log2 as u128, 4);
+        let p = &inp.planes;
+        for g in [p.sw.a, p.sw.b, p.tw.a, p.tw.b, p.q.a, p.q.b] {
+            vin.push_signed(g, 40);
+        }
+        let mut vout = BitVector::default();
+        vout.push(want.0 as u128, 1);
+        vout.push(want.1 as u128, 8);
+        rec.push(vin, vout);
+        uut.clock.next = true.into();
+        if !simulate(&mut uut, 200) {
+            return Err(format!("tex_lod did not settle in cycle {t}"));
+        }
+        trace.dump(&uut, 10 * t as u64 + 5)?;
+    }
+    trace.end(10 * inputs.len() as u64);
+    Ok(rec)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted};
+    use crate::cs::replay::replay_iverilog;
+
+    fn vectors(seed: u64) -> Vec<LodIn> {
+        let mut rng = Rng::new(seed);
+        println!("tex_lod: seed {} (set SEED={} to replay)", rng.seed(), rng.seed());
+        let mut v = stimulus(&mut rng, 8000, 85);
+        v.extend(rounding_cases(&mut rng, 100).into_iter().map(|(i, _)| i));
+        v
+    }
+
+    /// Pixels whose level of detail depends on how rho is rounded when it has one fraction bit too
+    /// many (E2 = -1): rho's mantissa M is odd and M + 1 carries into the bits the level of detail
+    /// reads. Only ds/dx is non-zero: A_sw = R (18 bits), A_q = 0, so the largest numerator is R 2^20
+    /// exactly and M = the top 18 bits of R (m >> 7); e is chosen so that E2 = -1. Each comes with
+    /// the level of detail of rho rounded to nearest, (M + 1) >> 1.
+    fn rounding_cases(rng: &mut Rng, n: usize) -> Vec<(LodIn, u8)> {
+        let mut out = Vec::new();
+        while out.len() < n {
+            let r = (1u64 << 17) + rng.below(1 << 17);
+            let m = (1u64 << 23) + rng.below((1 << 23) + 1);
+            let p = r * (m >> 7);
+            let drop = 63 - p.leading_zeros() as u64 - 17;
+            let mant = p >> drop;
+            if mant & 0x1fff != 0x1fff {
+                continue;
+            }
+            // rho = R 2^20 (w_log2 = 0) times m 2^-(e + 24), carried as mant 2^(drop + 20 + 7 - e - 24).
+            let e = drop + 20 + 7 - 24 + 1;
+            let planes = TexPlanes { sw: Plane { a: r as i64, b: 0, c: 0 }, tw: Plane::default(), q: Plane::default() };
+            let i = LodIn { valid: true, coord: PixelCoord { s: rng.next_u64() as i32, t: rng.next_u64() as i32, m: m as u32, e: e as u32 }, w_log2: 0, h_log2: rng.below(11) as u32, planes };
+            out.push((i, golden::texture::lod_q4((mant + 1) >> 1)));
+        }
+        out
+    }
+
+    #[test]
+    fn the_rounding_cases_round_rho_to_nearest_and_truncation_would_differ() {
+        // The directed cases above do what they say: golden's level of detail is that of rho rounded
+        // to nearest, and truncating instead would change it.
+        for (i, want) in rounding_cases(&mut Rng::new(5), 100) {
+            assert_eq!(i.planes.lod(i.coord, i.w_log2, i.h_log2), want, "{i:?}");
+            let m18 = (i.coord.m >> 7) as u64;
+            let p = i.planes.sw.a as u64 * m18;
+            let mant = p >> (63 - p.leading_zeros() as u64 - 17);
+            assert_ne!(golden::texture::lod_q4(mant >> 1), want, "{i:?}");
+        }
+    }
+
+    #[test]
+    fn the_level_of_detail_unit_equals_golden_lod_in_every_cycle() {
+        let v = vectors(0x10D);
+        // The stimulus spreads over the level of detail: magnified (0), the top (160), and most of the
+        // values between, on both triangle pixels and raw inputs.
+        let mut hist = [0u32; 256];
+        for i in v.iter().filter(|i| i.valid) {
+            hist[i.planes.lod(i.coord, i.w_log2, i.h_log2) as usize] += 1;
+        }
+        let distinct = hist.iter().filter(|&&n| n > 0).count();
+        println!("lod 0: {}, lod 160: {}, distinct values: {distinct}", hist[0], hist[160]);
+        assert!(hist[0] >= 300 && hist[160] >= 100 && distinct >= 120, "lod 0: {}, 160: {}, distinct {distinct}", hist[0], hist[160]);
+        let vcd = vcd_wanted().then(|| vcd_path("tex_lod", "every_cycle"));
+        run(&v, &expected, vcd.as_deref()).unwrap();
+    }
+
+    #[test]
+    fn the_level_of_detail_bench_fails_when_the_reference_is_wrong() {
+        // The comparison can fail: a reference that forgets t's texture height (h_log2 taken as w_log2).
+        let wrong = |earlier: Option<&LodIn>| match earlier {
+            Some(i) if i.valid => Some(i.planes.lod(i.coord, i.w_log2, i.w_log2)),
+            _ => None,
+        };
+        let e = run(&vectors(0x10D), &wrong, None).unwrap_err();
+        assert!(e.contains("expected"), "{e}");
+    }
+
+    #[test]
+    fn the_level_of_detail_verilog_replays_the_vectors_and_a_changed_alignment_is_caught() {
+        if !require_tools("the_level_of_detail_verilog_replays_the_vectors_and_a_changed_alignment_is_caught", &["iverilog"]) {
+            return;
+        }
+        let rec = run(&vectors(0x10D), &expected, None).unwrap();
+        let v = hdl::cs::tex_lod::verilog().unwrap();
+        let r = replay_iverilog(&v, "tex_lod", &rec, &scratch_dir("cs/tex_lod_replay")).unwrap();
+        println!("tex_lod Verilog (iverilog): {} cycles replayed in {:.2} s, 0 mismatches", r.cycles, r.seconds);
+        // The alignment 22 bits above the larger term made 21: the replay must fail.
+        let align = "localparam  k22_5 = 5'b10110;";
+        assert!(v.contains(align), "the alignment constant is not in the Verilog as {align}");
+        let e = replay_iverilog(&v.replacen(align, "localparam  k22_5 = 5'b10101;", 1), "tex_lod", &rec, &scratch_dir("cs/tex_lod_replay_broken")).unwrap_err();
+        assert!(e.contains("port lod"), "{e}");
+    }
+
+    #[test]
+    fn the_level_of_detail_unit_passes_verilator_lint() {
+        if !require_tools("the_level_of_detail_unit_passes_verilator_lint", &["verilator"]) {
+            return;
+        }
+        let v = hdl::cs::tex_lod::verilog().unwrap();
+        crate::lint::lint(&v, "tex_lod", &scratch_dir("cs/lint_tex_lod")).unwrap_or_else(|e| panic!("{e}"));
+    }
+}
