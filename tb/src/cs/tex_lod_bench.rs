@@ -242,6 +242,104 @@ mod tests {
         assert!(e.contains("port lod"), "{e}");
     }
 
+    /// `tex_coord` and `tex_lod` in a chain, as they will sit in the CS (the planes' gradients and the
+    /// texture's size wait `TEX_COORD_LATENCY` cycles beside the first block), on every covered pixel
+    /// of a golden teapot-floor frame at 320x200 with the planes its colour setup made: every pixel's
+    /// (s, t, lod) is `TexPlanes::eval`'s, for the built-in 256x256 checker and a 1024x64 texture.
+    #[test]
+    fn tex_coord_and_tex_lod_together_give_golden_eval_on_every_pixel_of_a_textured_frame() {
+        use golden::format::Screen;
+        use golden::render::{render_with, GoldenChipset, RenderOptions, Texturing};
+        use golden::scene::builtin;
+        use golden::shade::Shading;
+        use golden::texcoord::Coords;
+        use golden::texture::{checker, Filter, Wrap};
+        use hdl::cs::tex_coord::{TexCoord, TEX_COORD_LATENCY};
+        let mesh = builtin::teapot_floor();
+        let screen = Screen::new(320, 200).unwrap();
+        let texturing = Texturing { texture: std::sync::Arc::new(checker()), source: "test".into(), filter: Filter::Trilinear, coords: Coords::Perspective, wrap: Wrap::Repeat };
+        let opts = RenderOptions { texturing: Some(texturing), ..RenderOptions::for_scene(&mesh, screen, Shading::Gouraud) };
+        let mut chip = GoldenChipset::new(screen);
+        let frame = render_with(&mesh, &opts, &mut chip).unwrap();
+        let pixels: Vec<(u32, u32, TexPlanes)> = (0..200u32)
+            .flat_map(|y| (0..320u32).map(move |x| (x, y)))
+            .filter_map(|(x, y)| {
+                let i = frame.hw_index[(y * 320 + x) as usize];
+                (i != 0).then(|| (x, y, chip.tdbt[i as usize].expect("a covered pixel's triangle has texture planes")))
+            })
+            .collect();
+        assert!(pixels.len() > 25_000, "{} covered pixels", pixels.len());
+        for (w_log2, h_log2) in [(8, 8), (10, 6)] {
+            let mut coord = TexCoord::default();
+            let mut lod = TexLod::default();
+            coord.connect_all();
+            lod.connect_all();
+            let (l1, total) = (TEX_COORD_LATENCY as usize, (TEX_COORD_LATENCY + TEX_LOD_LATENCY) as usize);
+            let (mut checked, mut levels) = (0, std::collections::BTreeSet::new());
+            for t in 0..pixels.len() + total {
+                let p = pixels.get(t);
+                coord.valid_in.next = p.is_some();
+                if let Some(&(x, y, planes)) = p {
+                    coord.x.next = (x as u64).into();
+                    coord.y.next = (y as u64).into();
+                    coord.sw_a.next = from_i64::<40>(planes.sw.a);
+                    coord.sw_b.next = from_i64::<40>(planes.sw.b);
+                    coord.sw_c.next = from_i64::<56>(planes.sw.c);
+                    coord.tw_a.next = from_i64::<40>(planes.tw.a);
+                    coord.tw_b.next = from_i64::<40>(planes.tw.b);
+                    coord.tw_c.next = from_i64::<56>(planes.tw.c);
+                    coord.q_a.next = from_i64::<40>(planes.q.a);
+                    coord.q_b.next = from_i64::<40>(planes.q.b);
+                    coord.q_c.next = from_i64::<56>(planes.q.c);
+                }
+                // tex_lod takes tex_coord's outputs with the gradients of the pixel that entered l1
+                // cycles ago.
+                lod.valid_in.next = coord.valid_out.val();
+                lod.s.next = coord.s.val();
+                lod.t.next = coord.t.val();
+                lod.m.next = coord.m.val();
+                lod.e.next = coord.e.val();
+                lod.w_log2.next = (w_log2 as u64).into();
+                lod.h_log2.next = (h_log2 as u64).into();
+                if let Some(&(_, _, planes)) = t.checked_sub(l1).and_then(|k| pixels.get(k)) {
+                    lod.sw_a.next = from_i64::<40>(planes.sw.a);
+                    lod.sw_b.next = from_i64::<40>(planes.sw.b);
+                    lod.tw_a.next = from_i64::<40>(planes.tw.a);
+                    lod.tw_b.next = from_i64::<40>(planes.tw.b);
+                    lod.q_a.next = from_i64::<40>(planes.q.a);
+                    lod.q_b.next = from_i64::<40>(planes.q.b);
+                }
+                coord.clock.next = false.into();
+                lod.clock.next = false.into();
+                assert!(simulate(&mut coord, 200) && simulate(&mut lod, 200));
+                // The same again, now that tex_coord's outputs have settled for this cycle.
+                lod.valid_in.next = coord.valid_out.val();
+                lod.s.next = coord.s.val();
+                lod.t.next = coord.t.val();
+                lod.m.next = coord.m.val();
+                lod.e.next = coord.e.val();
+                assert!(simulate(&mut lod, 200));
+                if let Some(&(x, y, planes)) = t.checked_sub(l1).and_then(|k| pixels.get(k)) {
+                    let c = planes.coord(x, y);
+                    assert_eq!((coord.s.val().to_u64() as u32 as i32, coord.t.val().to_u64() as u32 as i32), (c.s, c.t), "tex_coord at ({x}, {y})");
+                }
+                if let Some(&(x, y, planes)) = t.checked_sub(total).and_then(|k| pixels.get(k)) {
+                    let want = planes.eval(x, y, w_log2, h_log2);
+                    assert!(lod.valid_out.val(), "cycle {t}");
+                    assert_eq!(lod.lod.val().to_u64() as u8, want.lod, "pixel ({x}, {y}), texture 2^{w_log2} x 2^{h_log2}");
+                    levels.insert(want.lod >> 4);
+                    checked += 1;
+                }
+                coord.clock.next = true.into();
+                lod.clock.next = true.into();
+                assert!(simulate(&mut coord, 200) && simulate(&mut lod, 200));
+            }
+            assert_eq!(checked, pixels.len());
+            println!("texture 2^{w_log2} x 2^{h_log2}: {checked} pixels, levels {levels:?}");
+            assert!(levels.len() >= 4, "the frame should span several mipmap levels: {levels:?}");
+        }
+    }
+
     #[test]
     fn the_level_of_detail_unit_passes_verilator_lint() {
         if !require_tools("the_level_of_detail_unit_passes_verilator_lint", &["verilator"]) {
