@@ -285,9 +285,13 @@ impl Logic for TexCoord {
             self.ext[0].next = bit_cast::<77, 57>(self.rb[0].val()) | self.ksext_77.val();
         }
         self.shl[0].next = self.ext[0].val() << self.k20_5.val();
-        self.inv[0].next = !self.shl[0].val();
+        // An arithmetic shift on one shifter: a negative value is inverted before and after.
+        self.inv[0].next = self.shl[0].val();
+        if self.rb[0].val().get_bit(56) {
+            self.inv[0].next = !self.shl[0].val();
+        }
         self.inv_sh[0].next = self.inv[0].val() >> self.e3.q.val();
-        self.ash[0].next = self.shl[0].val() >> self.e3.q.val();
+        self.ash[0].next = self.inv_sh[0].val();
         if self.rb[0].val().get_bit(56) {
             self.ash[0].next = !self.inv_sh[0].val();
         }
@@ -306,9 +310,13 @@ impl Logic for TexCoord {
             self.ext[1].next = bit_cast::<77, 57>(self.rb[1].val()) | self.ksext_77.val();
         }
         self.shl[1].next = self.ext[1].val() << self.k20_5.val();
-        self.inv[1].next = !self.shl[1].val();
+        // An arithmetic shift on one shifter: a negative value is inverted before and after.
+        self.inv[1].next = self.shl[1].val();
+        if self.rb[1].val().get_bit(56) {
+            self.inv[1].next = !self.shl[1].val();
+        }
         self.inv_sh[1].next = self.inv[1].val() >> self.e3.q.val();
-        self.ash[1].next = self.shl[1].val() >> self.e3.q.val();
+        self.ash[1].next = self.inv_sh[1].val();
         if self.rb[1].val().get_bit(56) {
             self.ash[1].next = !self.inv_sh[1].val();
         }
