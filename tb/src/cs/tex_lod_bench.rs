@@ -242,23 +242,20 @@ mod tests {
         assert!(e.contains("port lod"), "{e}");
     }
 
-    /// `tex_coord` and `tex_lod` in a chain, as they will sit in the CS (the planes' gradients and the
-    /// texture's size wait `TEX_COORD_LATENCY` cycles beside the first block), on every covered pixel
-    /// of a golden teapot-floor frame at 320x200 with the planes its colour setup made: every pixel's
-    /// (s, t, lod) is `TexPlanes::eval`'s, for the built-in 256x256 checker and a 1024x64 texture.
-    #[test]
-    fn tex_coord_and_tex_lod_together_give_golden_eval_on_every_pixel_of_a_textured_frame() {
+    /// A golden teapot-floor frame at 320x200 textured with `filter` (and the same frame untextured),
+    /// and its covered pixels with the texture planes its colour setup made.
+    fn floor_frame(filter: golden::texture::Filter) -> (golden::render::Frame, golden::render::Frame, Vec<(u32, u32, TexPlanes)>) {
         use golden::format::Screen;
-        use golden::render::{render_with, GoldenChipset, RenderOptions, Texturing};
+        use golden::render::{render, render_with, GoldenChipset, RenderOptions, Texturing};
         use golden::scene::builtin;
         use golden::shade::Shading;
         use golden::texcoord::Coords;
-        use golden::texture::{checker, Filter, Wrap};
-        use hdl::cs::tex_coord::{TexCoord, TEX_COORD_LATENCY};
+        use golden::texture::{checker, Wrap};
         let mesh = builtin::teapot_floor();
         let screen = Screen::new(320, 200).unwrap();
-        let texturing = Texturing { texture: std::sync::Arc::new(checker()), source: "test".into(), filter: Filter::Trilinear, coords: Coords::Perspective, wrap: Wrap::Repeat };
-        let opts = RenderOptions { texturing: Some(texturing), ..RenderOptions::for_scene(&mesh, screen, Shading::Gouraud) };
+        let plain = RenderOptions { texturing: None, ..RenderOptions::for_scene(&mesh, screen, Shading::Gouraud) };
+        let texturing = Texturing { texture: std::sync::Arc::new(checker()), source: "test".into(), filter, coords: Coords::Perspective, wrap: Wrap::Repeat };
+        let opts = RenderOptions { texturing: Some(texturing), ..plain.clone() };
         let mut chip = GoldenChipset::new(screen);
         let frame = render_with(&mesh, &opts, &mut chip).unwrap();
         let pixels: Vec<(u32, u32, TexPlanes)> = (0..200u32)
@@ -269,74 +266,115 @@ mod tests {
             })
             .collect();
         assert!(pixels.len() > 25_000, "{} covered pixels", pixels.len());
-        for (w_log2, h_log2) in [(8, 8), (10, 6)] {
-            let mut coord = TexCoord::default();
-            let mut lod = TexLod::default();
-            coord.connect_all();
-            lod.connect_all();
-            let (l1, total) = (TEX_COORD_LATENCY as usize, (TEX_COORD_LATENCY + TEX_LOD_LATENCY) as usize);
-            let (mut checked, mut levels) = (0, std::collections::BTreeSet::new());
-            for t in 0..pixels.len() + total {
-                let p = pixels.get(t);
-                coord.valid_in.next = p.is_some();
-                if let Some(&(x, y, planes)) = p {
-                    coord.x.next = (x as u64).into();
-                    coord.y.next = (y as u64).into();
-                    coord.sw_a.next = from_i64::<40>(planes.sw.a);
-                    coord.sw_b.next = from_i64::<40>(planes.sw.b);
-                    coord.sw_c.next = from_i64::<56>(planes.sw.c);
-                    coord.tw_a.next = from_i64::<40>(planes.tw.a);
-                    coord.tw_b.next = from_i64::<40>(planes.tw.b);
-                    coord.tw_c.next = from_i64::<56>(planes.tw.c);
-                    coord.q_a.next = from_i64::<40>(planes.q.a);
-                    coord.q_b.next = from_i64::<40>(planes.q.b);
-                    coord.q_c.next = from_i64::<56>(planes.q.c);
-                }
-                // tex_lod takes tex_coord's outputs with the gradients of the pixel that entered l1
-                // cycles ago.
-                lod.valid_in.next = coord.valid_out.val();
-                lod.s.next = coord.s.val();
-                lod.t.next = coord.t.val();
-                lod.m.next = coord.m.val();
-                lod.e.next = coord.e.val();
-                lod.w_log2.next = (w_log2 as u64).into();
-                lod.h_log2.next = (h_log2 as u64).into();
-                if let Some(&(_, _, planes)) = t.checked_sub(l1).and_then(|k| pixels.get(k)) {
-                    lod.sw_a.next = from_i64::<40>(planes.sw.a);
-                    lod.sw_b.next = from_i64::<40>(planes.sw.b);
-                    lod.tw_a.next = from_i64::<40>(planes.tw.a);
-                    lod.tw_b.next = from_i64::<40>(planes.tw.b);
-                    lod.q_a.next = from_i64::<40>(planes.q.a);
-                    lod.q_b.next = from_i64::<40>(planes.q.b);
-                }
-                coord.clock.next = false.into();
-                lod.clock.next = false.into();
-                assert!(simulate(&mut coord, 200) && simulate(&mut lod, 200));
-                // The same again, now that tex_coord's outputs have settled for this cycle.
-                lod.valid_in.next = coord.valid_out.val();
-                lod.s.next = coord.s.val();
-                lod.t.next = coord.t.val();
-                lod.m.next = coord.m.val();
-                lod.e.next = coord.e.val();
-                assert!(simulate(&mut lod, 200));
-                if let Some(&(x, y, planes)) = t.checked_sub(l1).and_then(|k| pixels.get(k)) {
-                    let c = planes.coord(x, y);
-                    assert_eq!((coord.s.val().to_u64() as u32 as i32, coord.t.val().to_u64() as u32 as i32), (c.s, c.t), "tex_coord at ({x}, {y})");
-                }
-                if let Some(&(x, y, planes)) = t.checked_sub(total).and_then(|k| pixels.get(k)) {
-                    let want = planes.eval(x, y, w_log2, h_log2);
-                    assert!(lod.valid_out.val(), "cycle {t}");
-                    assert_eq!(lod.lod.val().to_u64() as u8, want.lod, "pixel ({x}, {y}), texture 2^{w_log2} x 2^{h_log2}");
-                    levels.insert(want.lod >> 4);
-                    checked += 1;
-                }
-                coord.clock.next = true.into();
-                lod.clock.next = true.into();
-                assert!(simulate(&mut coord, 200) && simulate(&mut lod, 200));
+        (render(&mesh, &plain).unwrap(), frame, pixels)
+    }
+
+    /// `tex_coord` and `tex_lod` in a chain, as they will sit in the CS (the planes' gradients wait
+    /// `TEX_COORD_LATENCY` cycles beside the first block), one pixel per clock: each pixel's (s, t,
+    /// lod) is checked against `TexPlanes::eval` as it leaves, and returned.
+    fn chain(pixels: &[(u32, u32, TexPlanes)], w_log2: u32, h_log2: u32) -> Vec<golden::texcoord::TexCoord> {
+        use hdl::cs::tex_coord::{TexCoord, TEX_COORD_LATENCY};
+        let mut coord = TexCoord::default();
+        let mut lod = TexLod::default();
+        coord.connect_all();
+        lod.connect_all();
+        let (l1, total) = (TEX_COORD_LATENCY as usize, (TEX_COORD_LATENCY + TEX_LOD_LATENCY) as usize);
+        let mut out = Vec::with_capacity(pixels.len());
+        for t in 0..pixels.len() + total {
+            let p = pixels.get(t);
+            coord.valid_in.next = p.is_some();
+            if let Some(&(x, y, planes)) = p {
+                coord.x.next = (x as u64).into();
+                coord.y.next = (y as u64).into();
+                coord.sw_a.next = from_i64::<40>(planes.sw.a);
+                coord.sw_b.next = from_i64::<40>(planes.sw.b);
+                coord.sw_c.next = from_i64::<56>(planes.sw.c);
+                coord.tw_a.next = from_i64::<40>(planes.tw.a);
+                coord.tw_b.next = from_i64::<40>(planes.tw.b);
+                coord.tw_c.next = from_i64::<56>(planes.tw.c);
+                coord.q_a.next = from_i64::<40>(planes.q.a);
+                coord.q_b.next = from_i64::<40>(planes.q.b);
+                coord.q_c.next = from_i64::<56>(planes.q.c);
             }
-            assert_eq!(checked, pixels.len());
-            println!("texture 2^{w_log2} x 2^{h_log2}: {checked} pixels, levels {levels:?}");
+            lod.w_log2.next = (w_log2 as u64).into();
+            lod.h_log2.next = (h_log2 as u64).into();
+            // The gradients of the pixel that entered l1 cycles ago.
+            if let Some(&(_, _, planes)) = t.checked_sub(l1).and_then(|k| pixels.get(k)) {
+                lod.sw_a.next = from_i64::<40>(planes.sw.a);
+                lod.sw_b.next = from_i64::<40>(planes.sw.b);
+                lod.tw_a.next = from_i64::<40>(planes.tw.a);
+                lod.tw_b.next = from_i64::<40>(planes.tw.b);
+                lod.q_a.next = from_i64::<40>(planes.q.a);
+                lod.q_b.next = from_i64::<40>(planes.q.b);
+            }
+            coord.clock.next = false.into();
+            lod.clock.next = false.into();
+            assert!(simulate(&mut coord, 200));
+            // tex_lod takes tex_coord's outputs of this cycle.
+            lod.valid_in.next = coord.valid_out.val();
+            lod.s.next = coord.s.val();
+            lod.t.next = coord.t.val();
+            lod.m.next = coord.m.val();
+            lod.e.next = coord.e.val();
+            assert!(simulate(&mut lod, 200));
+            if let Some(&(x, y, planes)) = t.checked_sub(l1).and_then(|k| pixels.get(k)) {
+                let c = planes.coord(x, y);
+                assert_eq!((coord.s.val().to_u64() as u32 as i32, coord.t.val().to_u64() as u32 as i32), (c.s, c.t), "tex_coord at ({x}, {y})");
+            }
+            if let Some(&(x, y, planes)) = t.checked_sub(total).and_then(|k| pixels.get(k)) {
+                let want = planes.eval(x, y, w_log2, h_log2);
+                assert!(lod.valid_out.val(), "cycle {t}");
+                assert_eq!(lod.lod.val().to_u64() as u8, want.lod, "pixel ({x}, {y}), texture 2^{w_log2} x 2^{h_log2}");
+                out.push(want);
+            }
+            coord.clock.next = true.into();
+            lod.clock.next = true.into();
+            assert!(simulate(&mut coord, 200) && simulate(&mut lod, 200));
+        }
+        assert_eq!(out.len(), pixels.len());
+        out
+    }
+
+    /// The two blocks in a chain on every covered pixel of a golden teapot-floor frame (31,099 pixels,
+    /// the planes its colour setup made), textures 256x256 and 1024x64: (s, t, lod) = `eval`.
+    #[test]
+    fn tex_coord_and_tex_lod_together_give_golden_eval_on_every_pixel_of_a_textured_frame() {
+        let (_, _, pixels) = floor_frame(golden::texture::Filter::Trilinear);
+        for (w_log2, h_log2) in [(8, 8), (10, 6)] {
+            let levels: std::collections::BTreeSet<u8> = chain(&pixels, w_log2, h_log2).iter().map(|c| c.lod >> 4).collect();
+            println!("texture 2^{w_log2} x 2^{h_log2}: {} pixels, levels {levels:?}", pixels.len());
             assert!(levels.len() >= 4, "the frame should span several mipmap levels: {levels:?}");
+        }
+    }
+
+    /// The whole per-pixel texture path in RTL: `tex_coord`, `tex_lod` and `texture_sampler` (with its
+    /// four banks) give every covered pixel of the golden textured teapot-floor frame at 320x200, for
+    /// nearest, bilinear and trilinear. The texture unit is checked against its cycle model on every
+    /// port in every cycle (`texture_sampler_bench::run`), fed with the chain's (s, t, lod) and the
+    /// untextured frame's colour, and each pixel's colour from the model is the textured frame's.
+    #[test]
+    fn the_rtl_texture_path_reproduces_every_pixel_of_golden_textured_frames() {
+        use crate::cs::texture_sampler_bench::{run, Run};
+        use golden::cycle::texture_sampler::SamplerPixel;
+        use golden::texture::{checker, modulate, Filter, Wrap};
+        for filter in [Filter::Nearest, Filter::Bilinear, Filter::Trilinear] {
+            let (plain, textured, pixels) = floor_frame(filter);
+            let coords = chain(&pixels, 8, 8);
+            let colour = |x: u32, y: u32, f: &golden::render::Frame| {
+                let p = 3 * (y * 320 + x) as usize;
+                [f.rgb[p], f.rgb[p + 1], f.rgb[p + 2]]
+            };
+            let run_pixels: Vec<(usize, SamplerPixel)> = pixels.iter().zip(&coords).map(|(&(x, y, _), c)| (0, SamplerPixel { s: c.s, t: c.t, lod: c.lod, colour: colour(x, y, &plain) })).collect();
+            let r = Run { texture: checker(), filter, wrap: Wrap::Repeat, pixels: run_pixels };
+            let (_, m) = run(&r, r.model(), 1, None).unwrap();
+            assert_eq!(m.pixels, pixels.len() as u64);
+            let mut wrong = 0;
+            for (&(x, y, _), c) in pixels.iter().zip(&coords) {
+                let rgb = modulate(r.texture.sample(c.s, c.t, c.lod, filter, Wrap::Repeat), colour(x, y, &plain));
+                wrong += (rgb != colour(x, y, &textured)) as u32;
+            }
+            println!("{filter:?}: {} pixels, {} cycles, {} bank words, {wrong} different from the golden frame", m.pixels, m.cycles, m.bank_words);
+            assert_eq!(wrong, 0, "{filter:?}");
         }
     }
 
