@@ -244,17 +244,16 @@ mod tests {
 
     /// A golden teapot-floor frame at 320x200 textured with `filter` (and the same frame untextured),
     /// and its covered pixels with the texture planes its colour setup made.
-    fn floor_frame(filter: golden::texture::Filter) -> (golden::render::Frame, golden::render::Frame, Vec<(u32, u32, TexPlanes)>) {
+    fn floor_frame(filter: golden::texture::Filter, coords: golden::texcoord::Coords) -> (golden::render::Frame, golden::render::Frame, Vec<(u32, u32, TexPlanes)>) {
         use golden::format::Screen;
         use golden::render::{render, render_with, GoldenChipset, RenderOptions, Texturing};
         use golden::scene::builtin;
         use golden::shade::Shading;
-        use golden::texcoord::Coords;
         use golden::texture::{checker, Wrap};
         let mesh = builtin::teapot_floor();
         let screen = Screen::new(320, 200).unwrap();
         let plain = RenderOptions { texturing: None, ..RenderOptions::for_scene(&mesh, screen, Shading::Gouraud) };
-        let texturing = Texturing { texture: std::sync::Arc::new(checker()), source: "test".into(), filter, coords: Coords::Perspective, wrap: Wrap::Repeat };
+        let texturing = Texturing { texture: std::sync::Arc::new(checker()), source: "test".into(), filter, coords, wrap: Wrap::Repeat };
         let opts = RenderOptions { texturing: Some(texturing), ..plain.clone() };
         let mut chip = GoldenChipset::new(screen);
         let frame = render_with(&mesh, &opts, &mut chip).unwrap();
@@ -336,10 +335,14 @@ mod tests {
     }
 
     /// The two blocks in a chain on every covered pixel of a golden teapot-floor frame (31,099 pixels,
-    /// the planes its colour setup made), textures 256x256 and 1024x64: (s, t, lod) = `eval`.
+    /// the planes its colour setup made), textures 256x256 and 1024x64, and of the frame with affine
+    /// coordinates (1/w = 2^24 at every vertex): (s, t, lod) = `eval`.
     #[test]
     fn tex_coord_and_tex_lod_together_give_golden_eval_on_every_pixel_of_a_textured_frame() {
-        let (_, _, pixels) = floor_frame(golden::texture::Filter::Trilinear);
+        use golden::texcoord::Coords;
+        let (_, _, affine) = floor_frame(golden::texture::Filter::Trilinear, Coords::Affine);
+        chain(&affine, 8, 8);
+        let (_, _, pixels) = floor_frame(golden::texture::Filter::Trilinear, Coords::Perspective);
         for (w_log2, h_log2) in [(8, 8), (10, 6)] {
             let levels: std::collections::BTreeSet<u8> = chain(&pixels, w_log2, h_log2).iter().map(|c| c.lod >> 4).collect();
             println!("texture 2^{w_log2} x 2^{h_log2}: {} pixels, levels {levels:?}", pixels.len());
@@ -358,7 +361,7 @@ mod tests {
         use golden::cycle::texture_sampler::SamplerPixel;
         use golden::texture::{checker, modulate, Filter, Wrap};
         for filter in [Filter::Nearest, Filter::Bilinear, Filter::Trilinear] {
-            let (plain, textured, pixels) = floor_frame(filter);
+            let (plain, textured, pixels) = floor_frame(filter, golden::texcoord::Coords::Perspective);
             let coords = chain(&pixels, 8, 8);
             let colour = |x: u32, y: u32, f: &golden::render::Frame| {
                 let p = 3 * (y * 320 + x) as usize;
