@@ -26,6 +26,12 @@
 //!
 //! A pixel accepted in cycle c leaves in cycle c + [`TEX_LOD_LATENCY`]. Exponents are 9-bit two's
 //! complement; they are compared with their sign bit flipped.
+//!
+//! Naming: a register is `<what><stage>_<lane>` (`mant2_6`: stage 2's mantissa of operand 6, s),
+//! a combinational local of stage n ends in n or carries the lane. Operands 0..7 are sw.a, sw.b, tw.a,
+//! tw.b, q.a, q.b, s, t; lanes 0..3 of stages 3-9 are the numerators of ds/dx, ds/dy, dt/dx, dt/dy.
+//! The lanes are written out rather than looped over because rust-hdl's `hdl_gen` cannot take a loop
+//! index inside a cast (`bit_cast`), and most statements here have one.
 
 use crate::common::{LeftAlign, MulU, Normalize18};
 use rust_hdl::prelude::*;
