@@ -14,6 +14,7 @@ pub mod color_shader_bench;
 pub mod colour_setup_bench;
 pub mod frames;
 pub mod pack;
+pub mod pipeline;
 pub mod replay;
 
 pub mod stimulus;

@@ -5,14 +5,14 @@
 //! cycles. The RustHDL simulation against `golden::texcoord::TexPlanes::coord` delayed by the block's
 //! latency, on every output port in every cycle; the same vectors recorded for the Verilog replay.
 
-use crate::common::{Rng, Trace};
+use crate::common::Rng;
 use crate::cs::pack::BitVector;
+use crate::cs::pipeline::Pipeline;
 use crate::cs::replay::{port, PortSpec, Recording};
 use golden::format::{Plane, WinVertex, SUBPIXEL_ONE};
 use golden::texcoord::{fit, setup, vertex_values, Coords, PixelCoord, TexPlanes};
 use hdl::common::from_i64;
 use hdl::cs::tex_coord::{TexCoord, TEX_COORD_LATENCY};
-use rust_hdl::prelude::*;
 
 /// One cycle's inputs.
 #[derive(Copy, Clone, Debug, Default)]
@@ -141,59 +141,40 @@ fn got(uut: &TexCoord) -> (bool, u64, u64, u64, u64) {
     (uut.valid_out.val(), uut.s.val().to_u64(), uut.t.val().to_u64(), uut.m.val().to_u64(), uut.e.val().to_u64())
 }
 
+/// One cycle's replay vectors.
+fn vectors(inp: &CoordIn, want: &(bool, u64, u64, u64, u64)) -> (BitVector, BitVector) {
+    let mut vin = BitVector::default();
+    vin.push(inp.valid as u128, 1);
+    vin.push(inp.x as u128, 11);
+    vin.push(inp.y as u128, 11);
+    for p in [inp.planes.sw, inp.planes.tw, inp.planes.q] {
+        vin.push_signed(p.a, 40);
+        vin.push_signed(p.b, 40);
+        vin.push_signed(p.c, 56);
+    }
+    let mut vout = BitVector::default();
+    vout.push(want.0 as u128, 1);
+    vout.push(want.1 as u128, 32);
+    vout.push(want.2 as u128, 32);
+    vout.push(want.3 as u128, 25);
+    vout.push(want.4 as u128, 6);
+    (vin, vout)
+}
+
 /// Run `inputs` through the RustHDL block, comparing every cycle with `model` (of the inputs
 /// `TEX_COORD_LATENCY` cycles earlier; `golden` passes [`expected`]). Returns the recording.
 pub fn run(inputs: &[CoordIn], model: &dyn Fn(Option<&CoordIn>) -> Option<PixelCoord>, vcd: Option<&std::path::Path>) -> Result<Recording, String> {
-    let mut uut = TexCoord::default();
-    uut.connect_all();
-    check_all(&uut).map_err(|e| format!("tex_coord design check: {e:?}"))?;
-    let mut trace = Trace::new(&uut, vcd)?;
-    let (i, o) = replay_ports();
-    let mut rec = Recording::new(i, o);
-    let lat = TEX_COORD_LATENCY as usize;
-    for (t, inp) in inputs.iter().enumerate() {
-        drive(&mut uut, inp);
-        uut.clock.next = false.into();
-        if !simulate(&mut uut, 200) {
-            return Err(format!("tex_coord did not settle in cycle {t}"));
-        }
-        trace.dump(&uut, 10 * t as u64)?;
-        let want = outputs(model(if t >= lat { inputs.get(t - lat) } else { None }));
-        let now = got(&uut);
-        if now != want {
-            return Err(trace.fail(
-                t as u64,
-                format!(
-                    "(valid_out, s, t, m, e) = {now:x?}, expected {want:x?} (inputs of cycle {}: {:?})",
-                    t as i64 - lat as i64,
-                    t.checked_sub(lat).map(|k| inputs[k])
-                ),
-            ));
-        }
-        let mut vin = BitVector::default();
-        vin.push(inp.valid as u128, 1);
-        vin.push(inp.x as u128, 11);
-        vin.push(inp.y as u128, 11);
-        for p in [inp.planes.sw, inp.planes.tw, inp.planes.q] {
-            vin.push_signed(p.a, 40);
-            vin.push_signed(p.b, 40);
-            vin.push_signed(p.c, 56);
-        }
-        let mut vout = BitVector::default();
-        vout.push(want.0 as u128, 1);
-        vout.push(want.1 as u128, 32);
-        vout.push(want.2 as u128, 32);
-        vout.push(want.3 as u128, 25);
-        vout.push(want.4 as u128, 6);
-        rec.push(vin, vout);
-        uut.clock.next = true.into();
-        if !simulate(&mut uut, 200) {
-            return Err(format!("tex_coord did not settle in cycle {t}"));
-        }
-        trace.dump(&uut, 10 * t as u64 + 5)?;
+    Pipeline {
+        name: "tex_coord",
+        latency: TEX_COORD_LATENCY as usize,
+        drive,
+        clock: |u: &mut TexCoord, c: bool| u.clock.next = c.into(),
+        read: got,
+        outputs: "(valid_out, s, t, m, e)",
+        vectors,
+        ports: replay_ports(),
     }
-    trace.end(10 * inputs.len() as u64);
-    Ok(rec)
+    .run(inputs, &|earlier| outputs(model(earlier)), vcd)
 }
 
 #[cfg(test)]

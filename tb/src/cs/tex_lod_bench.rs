@@ -5,15 +5,15 @@
 //! `golden::texcoord::TexPlanes::lod` delayed by the block's latency, on every output port in every
 //! cycle; the same vectors recorded for the Verilog replay.
 
-use crate::common::{Rng, Trace};
+use crate::common::Rng;
 use crate::cs::pack::BitVector;
+use crate::cs::pipeline::Pipeline;
 use crate::cs::replay::{port, PortSpec, Recording};
 use crate::cs::tex_coord_bench::{raw, triangle};
 use golden::format::Plane;
 use golden::texcoord::{PixelCoord, TexPlanes};
 use hdl::common::from_i64;
 use hdl::cs::tex_lod::{TexLod, TEX_LOD_LATENCY};
-use rust_hdl::prelude::*;
 
 /// One cycle's inputs.
 #[derive(Copy, Clone, Debug, Default)]
@@ -91,65 +91,46 @@ fn drive(uut: &mut TexLod, i: &LodIn) {
     uut.q_b.next = from_i64::<40>(p.q.b);
 }
 
+/// One cycle's replay vectors.
+fn vectors(inp: &LodIn, want: &(bool, u64)) -> (BitVector, BitVector) {
+    let mut vin = BitVector::default();
+    vin.push(inp.valid as u128, 1);
+    vin.push(inp.coord.s as u32 as u128, 32);
+    vin.push(inp.coord.t as u32 as u128, 32);
+    vin.push(inp.coord.m as u128, 25);
+    vin.push(inp.coord.e as u128, 6);
+    vin.push(inp.w_log2 as u128, 4);
+    vin.push(inp.h_log2 as u128, 4);
+    let p = &inp.planes;
+    for g in [p.sw.a, p.sw.b, p.tw.a, p.tw.b, p.q.a, p.q.b] {
+        vin.push_signed(g, 40);
+    }
+    let mut vout = BitVector::default();
+    vout.push(want.0 as u128, 1);
+    vout.push(want.1 as u128, 8);
+    (vin, vout)
+}
+
 /// Run `inputs` through the RustHDL block, comparing every cycle with `model` (of the inputs
 /// `TEX_LOD_LATENCY` cycles earlier; `golden` passes [`expected`]). Returns the recording.
 pub fn run(inputs: &[LodIn], model: &dyn Fn(Option<&LodIn>) -> Option<u8>, vcd: Option<&std::path::Path>) -> Result<Recording, String> {
-    let mut uut = TexLod::default();
-    uut.connect_all();
-    check_all(&uut).map_err(|e| format!("tex_lod design check: {e:?}"))?;
-    let mut trace = Trace::new(&uut, vcd)?;
-    let (i, o) = replay_ports();
-    let mut rec = Recording::new(i, o);
-    let lat = TEX_LOD_LATENCY as usize;
-    for (t, inp) in inputs.iter().enumerate() {
-        drive(&mut uut, inp);
-        uut.clock.next = false.into();
-        if !simulate(&mut uut, 200) {
-            return Err(format!("tex_lod did not settle in cycle {t}"));
-        }
-        trace.dump(&uut, 10 * t as u64)?;
-        let want = model(if t >= lat { inputs.get(t - lat) } else { None });
-        let want = (want.is_some(), want.unwrap_or(0) as u64);
-        let now = (uut.valid_out.val(), uut.lod.val().to_u64());
-        if now != want {
-            return Err(trace.fail(
-                t as u64,
-                format!(
-                    "(valid_out, lod) = {now:?}, expected {want:?} (inputs of cycle {}: {:?})",
-                    t as i64 - lat as i64,
-                    t.checked_sub(lat).map(|k| inputs[k])
-                ),
-            ));
-        }
-        let mut vin = BitVector::default();
-        vin.push(inp.valid as u128, 1);
-        vin.push(inp.coord.s as u32 as u128, 32);
-        vin.push(inp.coord.t as u32 as u128, 32);
-        vin.push(inp.coord.m as u128, 25);
-        vin.push(inp.coord.e as u128, 6);
-        vin.push(inp.w_log2 as u128, 4);
-        vin.push(inp.h_log2 as u128, 4);
-        let p = &inp.planes;
-        for g in [p.sw.a, p.sw.b, p.tw.a, p.tw.b, p.q.a, p.q.b] {
-            vin.push_signed(g, 40);
-        }
-        let mut vout = BitVector::default();
-        vout.push(want.0 as u128, 1);
-        vout.push(want.1 as u128, 8);
-        rec.push(vin, vout);
-        uut.clock.next = true.into();
-        if !simulate(&mut uut, 200) {
-            return Err(format!("tex_lod did not settle in cycle {t}"));
-        }
-        trace.dump(&uut, 10 * t as u64 + 5)?;
+    Pipeline {
+        name: "tex_lod",
+        latency: TEX_LOD_LATENCY as usize,
+        drive,
+        clock: |u: &mut TexLod, c: bool| u.clock.next = c.into(),
+        read: |u: &TexLod| (u.valid_out.val(), u.lod.val().to_u64()),
+        outputs: "(valid_out, lod)",
+        vectors,
+        ports: replay_ports(),
     }
-    trace.end(10 * inputs.len() as u64);
-    Ok(rec)
+    .run(inputs, &|earlier| model(earlier).map_or((false, 0), |l| (true, l as u64)), vcd)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rust_hdl::prelude::*;
     use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted};
     use crate::cs::replay::replay_iverilog;
 

@@ -5,13 +5,13 @@
 //! the same vectors recorded for the Verilog replay. A chain test puts the address unit, a four-bank
 //! memory and `texel_filter` together and checks the colours against `Texture::sample_level`.
 
-use crate::common::{Rng, Trace};
+use crate::common::Rng;
 use crate::cs::pack::BitVector;
+use crate::cs::pipeline::Pipeline;
 use crate::cs::replay::{port, PortSpec, Recording};
 use golden::texbank::{footprint, Footprint, LevelGeom};
 use golden::texture::Wrap;
 use hdl::cs::texel_address::{TexelAddress, TEXEL_ADDRESS_LATENCY};
-use rust_hdl::prelude::*;
 
 /// One cycle's inputs.
 #[derive(Copy, Clone, Debug)]
@@ -115,68 +115,50 @@ fn got(uut: &TexelAddress) -> (bool, u64, [u64; 4], u64, u64, u64) {
     )
 }
 
+/// One cycle's replay vectors.
+fn vectors(inp: &AddressIn, want: &(bool, u64, [u64; 4], u64, u64, u64)) -> (BitVector, BitVector) {
+    let mut vin = BitVector::default();
+    vin.push(inp.valid as u128, 1);
+    vin.push(inp.s as u32 as u128, 32);
+    vin.push(inp.t as u32 as u128, 32);
+    vin.push(inp.geom.w_log2 as u128, 4);
+    vin.push(inp.geom.h_log2 as u128, 4);
+    vin.push(inp.geom.base as u128, 20);
+    vin.push(inp.bilinear as u128, 1);
+    vin.push((inp.wrap == Wrap::ClampToEdge) as u128, 1);
+    let mut vout = BitVector::default();
+    vout.push(want.0 as u128, 1);
+    vout.push(want.1 as u128, 4);
+    for a in want.2 {
+        vout.push(a as u128, 20);
+    }
+    vout.push(want.3 as u128, 8);
+    vout.push(want.4 as u128, 8);
+    vout.push(want.5 as u128, 8);
+    (vin, vout)
+}
+
 /// Run `inputs` through the RustHDL block, comparing every cycle with `model` (the block computes it
 /// of the inputs `TEXEL_ADDRESS_LATENCY` cycles earlier; `golden` passes [`expected`]). Returns the
 /// recording.
 pub fn run(inputs: &[AddressIn], model: &dyn Fn(Option<&AddressIn>) -> Option<Footprint>, vcd: Option<&std::path::Path>) -> Result<Recording, String> {
-    let mut uut = TexelAddress::default();
-    uut.connect_all();
-    check_all(&uut).map_err(|e| format!("texel_address design check: {e:?}"))?;
-    let mut trace = Trace::new(&uut, vcd)?;
-    let (i, o) = replay_ports();
-    let mut rec = Recording::new(i, o);
-    let lat = TEXEL_ADDRESS_LATENCY as usize;
-    for (t, inp) in inputs.iter().enumerate() {
-        drive(&mut uut, inp);
-        uut.clock.next = false.into();
-        if !simulate(&mut uut, 200) {
-            return Err(format!("texel_address did not settle in cycle {t}"));
-        }
-        trace.dump(&uut, 10 * t as u64)?;
-        let want = outputs(model(if t >= lat { inputs.get(t - lat) } else { None }));
-        let now = got(&uut);
-        if now != want {
-            return Err(trace.fail(
-                t as u64,
-                format!(
-                    "(valid_out, rd, addr0..3, route, fx, fy) = {now:?}, expected {want:?} (inputs of cycle {}: {:?})",
-                    t as i64 - lat as i64,
-                    t.checked_sub(lat).map(|k| inputs[k])
-                ),
-            ));
-        }
-        let mut vin = BitVector::default();
-        vin.push(inp.valid as u128, 1);
-        vin.push(inp.s as u32 as u128, 32);
-        vin.push(inp.t as u32 as u128, 32);
-        vin.push(inp.geom.w_log2 as u128, 4);
-        vin.push(inp.geom.h_log2 as u128, 4);
-        vin.push(inp.geom.base as u128, 20);
-        vin.push(inp.bilinear as u128, 1);
-        vin.push((inp.wrap == Wrap::ClampToEdge) as u128, 1);
-        let mut vout = BitVector::default();
-        vout.push(want.0 as u128, 1);
-        vout.push(want.1 as u128, 4);
-        for a in want.2 {
-            vout.push(a as u128, 20);
-        }
-        vout.push(want.3 as u128, 8);
-        vout.push(want.4 as u128, 8);
-        vout.push(want.5 as u128, 8);
-        rec.push(vin, vout);
-        uut.clock.next = true.into();
-        if !simulate(&mut uut, 200) {
-            return Err(format!("texel_address did not settle in cycle {t}"));
-        }
-        trace.dump(&uut, 10 * t as u64 + 5)?;
+    Pipeline {
+        name: "texel_address",
+        latency: TEXEL_ADDRESS_LATENCY as usize,
+        drive,
+        clock: |u: &mut TexelAddress, c: bool| u.clock.next = c.into(),
+        read: got,
+        outputs: "(valid_out, rd, addr0..3, route, fx, fy)",
+        vectors,
+        ports: replay_ports(),
     }
-    trace.end(10 * inputs.len() as u64);
-    Ok(rec)
+    .run(inputs, &|earlier| outputs(model(earlier)), vcd)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rust_hdl::prelude::*;
     use crate::common::{require_tools, scratch_dir, vcd_path, vcd_wanted};
     use crate::cs::pack::rgb888 as pack;
     use crate::cs::replay::replay_iverilog;

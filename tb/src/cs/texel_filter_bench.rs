@@ -3,12 +3,12 @@
 //! simulation against `golden::texture::{bilinear, modulate}` delayed by the block's latency, on both
 //! output ports in every cycle; the same vectors recorded for the Verilog replay.
 
-use crate::common::{Rng, Trace};
+use crate::common::Rng;
 use crate::cs::pack::{rgb888 as pack, BitVector};
+use crate::cs::pipeline::Pipeline;
 use crate::cs::replay::{port, PortSpec, Recording};
 use golden::texture::{bilinear, modulate};
 use hdl::cs::texel_filter::{TexelFilter, TEXEL_FILTER_LATENCY};
-use rust_hdl::prelude::*;
 
 /// One cycle's inputs.
 #[derive(Copy, Clone, Debug, Default)]
@@ -57,55 +57,48 @@ pub fn stimulus(rng: &mut Rng, cycles: usize, valid_percent: u64) -> Vec<FilterI
         .collect()
 }
 
+/// Drive one cycle's inputs.
+fn drive(uut: &mut TexelFilter, inp: &FilterIn) {
+    uut.valid_in.next = inp.valid;
+    uut.t00.next = pack(inp.texels[0]).into();
+    uut.t10.next = pack(inp.texels[1]).into();
+    uut.t01.next = pack(inp.texels[2]).into();
+    uut.t11.next = pack(inp.texels[3]).into();
+    uut.fx.next = (inp.fx as u64).into();
+    uut.fy.next = (inp.fy as u64).into();
+    uut.colour.next = pack(inp.colour).into();
+}
+
+/// One cycle's replay vectors.
+fn vectors(inp: &FilterIn, want: &(bool, u64)) -> (BitVector, BitVector) {
+    let mut vin = BitVector::default();
+    vin.push(inp.valid as u128, 1);
+    for k in 0..4 {
+        vin.push(pack(inp.texels[k]) as u128, 24);
+    }
+    vin.push(inp.fx as u128, 8);
+    vin.push(inp.fy as u128, 8);
+    vin.push(pack(inp.colour) as u128, 24);
+    let mut vout = BitVector::default();
+    vout.push(want.0 as u128, 1);
+    vout.push(want.1 as u128, 24);
+    (vin, vout)
+}
+
 /// Run `inputs` through the RustHDL block, comparing every cycle with the reference (the block
 /// computes `model` of the inputs; `golden` passes [`expected`]). Returns the recording.
 pub fn run(inputs: &[FilterIn], model: &dyn Fn(Option<&FilterIn>) -> (bool, u64), vcd: Option<&std::path::Path>) -> Result<Recording, String> {
-    let mut uut = TexelFilter::default();
-    uut.connect_all();
-    check_all(&uut).map_err(|e| format!("texel_filter design check: {e:?}"))?;
-    let mut trace = Trace::new(&uut, vcd)?;
-    let (i, o) = replay_ports();
-    let mut rec = Recording::new(i, o);
-    let lat = TEXEL_FILTER_LATENCY as usize;
-    for (t, inp) in inputs.iter().enumerate() {
-        uut.valid_in.next = inp.valid;
-        uut.t00.next = pack(inp.texels[0]).into();
-        uut.t10.next = pack(inp.texels[1]).into();
-        uut.t01.next = pack(inp.texels[2]).into();
-        uut.t11.next = pack(inp.texels[3]).into();
-        uut.fx.next = (inp.fx as u64).into();
-        uut.fy.next = (inp.fy as u64).into();
-        uut.colour.next = pack(inp.colour).into();
-        uut.clock.next = false.into();
-        if !simulate(&mut uut, 200) {
-            return Err(format!("texel_filter did not settle in cycle {t}"));
-        }
-        trace.dump(&uut, 10 * t as u64)?;
-        let want = model(if t >= lat { inputs.get(t - lat) } else { None });
-        let got = (uut.valid_out.val(), uut.rgb_out.val().to_u64());
-        if got != want {
-            return Err(trace.fail(t as u64, format!("valid_out, rgb_out = {got:?}, expected {want:?} (inputs of cycle {}: {:?})", t as i64 - lat as i64, t.checked_sub(lat).map(|k| inputs[k]))));
-        }
-        let mut vin = BitVector::default();
-        vin.push(inp.valid as u128, 1);
-        for k in 0..4 {
-            vin.push(pack(inp.texels[k]) as u128, 24);
-        }
-        vin.push(inp.fx as u128, 8);
-        vin.push(inp.fy as u128, 8);
-        vin.push(pack(inp.colour) as u128, 24);
-        let mut vout = BitVector::default();
-        vout.push(want.0 as u128, 1);
-        vout.push(want.1 as u128, 24);
-        rec.push(vin, vout);
-        uut.clock.next = true.into();
-        if !simulate(&mut uut, 200) {
-            return Err(format!("texel_filter did not settle in cycle {t}"));
-        }
-        trace.dump(&uut, 10 * t as u64 + 5)?;
+    Pipeline {
+        name: "texel_filter",
+        latency: TEXEL_FILTER_LATENCY as usize,
+        drive,
+        clock: |u: &mut TexelFilter, c: bool| u.clock.next = c.into(),
+        read: |u: &TexelFilter| (u.valid_out.val(), u.rgb_out.val().to_u64()),
+        outputs: "(valid_out, rgb_out)",
+        vectors,
+        ports: replay_ports(),
     }
-    trace.end(10 * inputs.len() as u64);
-    Ok(rec)
+    .run(inputs, model, vcd)
 }
 
 #[cfg(test)]
