@@ -121,7 +121,8 @@ pub fn stimulus(rng: &mut Rng, cycles: usize, valid_percent: u64) -> Vec<CoordIn
     out
 }
 
-fn drive(uut: &mut TexCoord, inp: &CoordIn) {
+/// Drive one cycle's inputs.
+pub fn drive(uut: &mut TexCoord, inp: &CoordIn) {
     uut.valid_in.next = inp.valid;
     uut.x.next = (inp.x as u64).into();
     uut.y.next = (inp.y as u64).into();

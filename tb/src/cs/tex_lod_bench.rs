@@ -253,6 +253,7 @@ mod tests {
     /// `TEX_COORD_LATENCY` cycles beside the first block), one pixel per clock: each pixel's (s, t,
     /// lod) is checked against `TexPlanes::eval` as it leaves, and returned.
     fn chain(pixels: &[(u32, u32, TexPlanes)], w_log2: u32, h_log2: u32) -> Vec<golden::texcoord::TexCoord> {
+        use crate::cs::tex_coord_bench::CoordIn;
         use hdl::cs::tex_coord::{TexCoord, TEX_COORD_LATENCY};
         let mut coord = TexCoord::default();
         let mut lod = TexLod::default();
@@ -261,21 +262,8 @@ mod tests {
         let (l1, total) = (TEX_COORD_LATENCY as usize, (TEX_COORD_LATENCY + TEX_LOD_LATENCY) as usize);
         let mut out = Vec::with_capacity(pixels.len());
         for t in 0..pixels.len() + total {
-            let p = pixels.get(t);
-            coord.valid_in.next = p.is_some();
-            if let Some(&(x, y, planes)) = p {
-                coord.x.next = (x as u64).into();
-                coord.y.next = (y as u64).into();
-                coord.sw_a.next = from_i64::<40>(planes.sw.a);
-                coord.sw_b.next = from_i64::<40>(planes.sw.b);
-                coord.sw_c.next = from_i64::<56>(planes.sw.c);
-                coord.tw_a.next = from_i64::<40>(planes.tw.a);
-                coord.tw_b.next = from_i64::<40>(planes.tw.b);
-                coord.tw_c.next = from_i64::<56>(planes.tw.c);
-                coord.q_a.next = from_i64::<40>(planes.q.a);
-                coord.q_b.next = from_i64::<40>(planes.q.b);
-                coord.q_c.next = from_i64::<56>(planes.q.c);
-            }
+            let inp = pixels.get(t).map_or(CoordIn::default(), |&(x, y, planes)| CoordIn { valid: true, x, y, planes });
+            crate::cs::tex_coord_bench::drive(&mut coord, &inp);
             lod.w_log2.next = (w_log2 as u64).into();
             lod.h_log2.next = (h_log2 as u64).into();
             // The gradients of the pixel that entered l1 cycles ago.
