@@ -132,52 +132,89 @@ pub struct SetupOutputs {
     pub tdbs_write: TdbsWrite,
 }
 
-/// The cycle-accurate model.
-#[derive(Clone, Debug, Default)]
-pub struct ColourSetupModel {
+/// The timing both setup blocks share (colour setup here, texture setup in
+/// [`crate::cycle::tex_setup`]): a command taken when `ready`, at most one per `interval` cycles, its
+/// record written `latency` cycles after the cycle it was taken in, `busy` in between.
+#[derive(Clone, Debug)]
+pub struct SetupPipe<R> {
+    latency: u64,
+    interval: u64,
     /// Commands in flight: (cycles left until the write cycle, index, record); the write cycle itself
     /// has 1 left.
-    flight: std::collections::VecDeque<(u64, u16, TdbsEntry)>,
-    /// Cycles since the last command was taken (saturating; `SETUP_INTERVAL` or more: ready).
+    flight: std::collections::VecDeque<(u64, u16, R)>,
+    /// Cycles since the last command was taken (saturating; `interval` or more: ready).
     since: u64,
     /// Commands taken so far.
     pub taken: u64,
 }
 
-impl ColourSetupModel {
-    pub fn new() -> ColourSetupModel {
-        ColourSetupModel { since: SETUP_INTERVAL, ..Default::default() }
+impl<R: Copy> SetupPipe<R> {
+    pub fn new(latency: u64, interval: u64) -> SetupPipe<R> {
+        SetupPipe { latency, interval, flight: Default::default(), since: interval, taken: 0 }
     }
 
-    /// The outputs in the current cycle (they depend on the state only).
-    pub fn outputs(&self) -> SetupOutputs {
-        let write = self.flight.front().filter(|f| f.0 == 1);
-        SetupOutputs {
-            cmd_ready: self.since >= SETUP_INTERVAL,
-            busy: !self.flight.is_empty(),
-            tdbs_write: match write {
-                Some(&(_, address, data)) => TdbsWrite { enable: true, address, data },
-                None => TdbsWrite::default(),
-            },
-        }
+    /// This cycle's (ready, busy, write): they depend on the state only.
+    pub fn outputs(&self) -> (bool, bool, Option<(u16, R)>) {
+        let write = self.flight.front().filter(|f| f.0 == 1).map(|&(_, a, r)| (a, r));
+        (self.since >= self.interval, !self.flight.is_empty(), write)
     }
 
-    /// One clock: returns this cycle's outputs, then takes the rising edge with `inp`.
-    pub fn step(&mut self, inp: &SetupInputs) -> SetupOutputs {
+    /// One clock: this cycle's outputs, then the rising edge, taking `cmd` (index and the record it
+    /// will write) if it is valid and the block ready.
+    pub fn step(&mut self, cmd: Option<(u16, R)>) -> (bool, bool, Option<(u16, R)>) {
         let out = self.outputs();
-        if out.tdbs_write.enable {
+        if out.2.is_some() {
             self.flight.pop_front();
         }
         for f in self.flight.iter_mut() {
             f.0 -= 1;
         }
-        self.since = (self.since + 1).min(SETUP_INTERVAL);
-        if out.cmd_ready && inp.cmd_valid {
-            self.flight.push_back((SETUP_LATENCY, inp.cmd.index, inp.cmd.record()));
+        self.since = (self.since + 1).min(self.interval);
+        if let (true, Some((index, record))) = (out.0, cmd) {
+            self.flight.push_back((self.latency, index, record));
             self.since = 1;
             self.taken += 1;
         }
         out
+    }
+}
+
+/// The cycle-accurate model.
+#[derive(Clone, Debug)]
+pub struct ColourSetupModel {
+    pipe: SetupPipe<TdbsEntry>,
+}
+
+impl Default for ColourSetupModel {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl ColourSetupModel {
+    pub fn new() -> ColourSetupModel {
+        ColourSetupModel { pipe: SetupPipe::new(SETUP_LATENCY, SETUP_INTERVAL) }
+    }
+
+    /// Commands taken so far.
+    pub fn taken(&self) -> u64 {
+        self.pipe.taken
+    }
+
+    fn outputs_of((cmd_ready, busy, write): (bool, bool, Option<(u16, TdbsEntry)>)) -> SetupOutputs {
+        let tdbs_write = write.map_or(TdbsWrite::default(), |(address, data)| TdbsWrite { enable: true, address, data });
+        SetupOutputs { cmd_ready, busy, tdbs_write }
+    }
+
+    /// The outputs in the current cycle (they depend on the state only).
+    pub fn outputs(&self) -> SetupOutputs {
+        Self::outputs_of(self.pipe.outputs())
+    }
+
+    /// One clock: returns this cycle's outputs, then takes the rising edge with `inp`.
+    pub fn step(&mut self, inp: &SetupInputs) -> SetupOutputs {
+        let cmd = (inp.cmd_valid && self.pipe.outputs().0).then(|| (inp.cmd.index, inp.cmd.record()));
+        Self::outputs_of(self.pipe.step(cmd))
     }
 }
 

@@ -4,4 +4,5 @@
 pub mod rc;
 pub mod colour_setup;
 pub mod color_shader;
+pub mod tex_setup;
 pub mod texture_sampler;

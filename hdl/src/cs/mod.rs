@@ -36,6 +36,7 @@ pub mod plane_round;
 pub mod colour_setup;
 pub mod tex_coord;
 pub mod tex_lod;
+pub mod tex_setup;
 pub mod texel_address;
 pub mod texel_filter;
 pub mod texture_sampler;
@@ -147,6 +148,53 @@ pub struct SetupCommand {
 /// Width of a packed [`SetupCommand`].
 pub const SETUP_COMMAND_BITS: usize = 297;
 
+/// One TdbT record (the texture half of the triangle database, issue 17): the planes s/w, t/w and
+/// 1/w of `golden::texcoord::TexPlanes`, each `a`, `b` (40 bits) and `c` (56 bits) as in
+/// [`TdbsRecord`]. Packed layout (408 bits, LSB first): `s_a s_b s_c` 135:0, `t_a t_b t_c` 271:136,
+/// `q_a q_b q_c` 407:272.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct TdbtRecord {
+    pub s_a: Bits<40>,
+    pub s_b: Bits<40>,
+    pub s_c: Bits<56>,
+    pub t_a: Bits<40>,
+    pub t_b: Bits<40>,
+    pub t_c: Bits<56>,
+    pub q_a: Bits<40>,
+    pub q_b: Bits<40>,
+    pub q_c: Bits<56>,
+}
+
+/// Width of a packed [`TdbtRecord`].
+pub const TDBT_RECORD_BITS: usize = 408;
+
+/// One texture-setup command (`golden::cycle::tex_setup::TexSetupCmd`): the triangle's index and
+/// window coordinates as in [`SetupCommand`], and per vertex s/w, t/w and 1/w in 33-bit two's
+/// complement. Packed layout (409 bits, LSB first): `index` 15:0, `x0 y0 x1 y1 x2 y2` 111:16,
+/// `v0s v0t v0q v1s v1t v1q v2s v2t v2q` 408:112 (33 bits each, in that order).
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct TexSetupCommand {
+    pub index: Bits<16>,
+    pub x0: Bits<16>,
+    pub y0: Bits<16>,
+    pub x1: Bits<16>,
+    pub y1: Bits<16>,
+    pub x2: Bits<16>,
+    pub y2: Bits<16>,
+    pub v0s: Bits<33>,
+    pub v0t: Bits<33>,
+    pub v0q: Bits<33>,
+    pub v1s: Bits<33>,
+    pub v1t: Bits<33>,
+    pub v1q: Bits<33>,
+    pub v2s: Bits<33>,
+    pub v2t: Bits<33>,
+    pub v2q: Bits<33>,
+}
+
+/// Width of a packed [`TexSetupCommand`].
+pub const TEX_SETUP_COMMAND_BITS: usize = 409;
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -155,6 +203,8 @@ mod tests {
     fn packed_widths_are_the_documented_ones() {
         assert_eq!(TdbsRecord::BITS, TDBS_RECORD_BITS);
         assert_eq!(SetupCommand::BITS, SETUP_COMMAND_BITS);
+        assert_eq!(TdbtRecord::BITS, TDBT_RECORD_BITS);
+        assert_eq!(TexSetupCommand::BITS, TEX_SETUP_COMMAND_BITS);
         let r = TdbsRecord { material: 0xabcd.into(), ..Default::default() };
         let b: Bits<TDBS_RECORD_BITS> = r.into();
         assert_eq!(b.get_bits::<16>(408).to_u64(), 0xabcd);

@@ -71,6 +71,71 @@ impl Logic for PlaneRound {
     }
 }
 
+/// `PlaneRound` for texture setup's wider products (`tex_setup`: a 52-bit numerator times the 26-bit
+/// reciprocal, |p| < 2^75), on 78-bit two's-complement `Bits`. Same rounding, shift and saturation.
+#[derive(LogicBlock)]
+pub struct PlaneRoundWide {
+    /// The product n * mant, two's complement.
+    pub p: Signal<In, Bits<78>>,
+    /// The shift, at least 1.
+    pub sh: Signal<In, Bits<7>>,
+    /// The rounded, shifted, saturated gradient (two's complement).
+    pub out: Signal<Out, Bits<40>>,
+    sh_m1: Signal<Local, Bits<7>>,
+    half: Signal<Local, Bits<78>>,
+    y: Signal<Local, Bits<78>>,
+    ys: Signal<Local, Bits<78>>,
+    top: Signal<Local, Bits<39>>,
+    o40: Signal<Local, Bits<40>>,
+    k1_7: Constant<Bits<7>>,
+    k1_78: Constant<Bits<78>>,
+    kmin_40: Constant<Bits<40>>,
+    kmax_40: Constant<Bits<40>>,
+}
+
+impl Default for PlaneRoundWide {
+    fn default() -> Self {
+        Self {
+            p: Default::default(),
+            sh: Default::default(),
+            out: Default::default(),
+            sh_m1: Default::default(),
+            half: Default::default(),
+            y: Default::default(),
+            ys: Default::default(),
+            top: Default::default(),
+            o40: Default::default(),
+            k1_7: Constant::new(1.into()),
+            k1_78: Constant::new(crate::common::bits_from_u128::<78>(1)),
+            kmin_40: Constant::new((1u64 << 39).into()),
+            kmax_40: Constant::new(((1u64 << 39) - 1).into()),
+        }
+    }
+}
+
+impl Logic for PlaneRoundWide {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.sh_m1.next = self.sh.val() - self.k1_7.val();
+        self.half.next = self.k1_78.val() << self.sh_m1.val();
+        self.y.next = self.p.val() + self.half.val();
+        self.ys.next = self.y.val() >> self.sh.val();
+        if self.y.val().get_bit(77) {
+            self.ys.next = !((!self.y.val()) >> self.sh.val());
+        }
+        self.top.next = self.ys.val().get_bits::<39>(39);
+        self.o40.next = self.ys.val().get_bits::<40>(0);
+        if !(self.top.val().all() | !self.top.val().any()) {
+            if self.ys.val().get_bit(77) {
+                self.o40.next = self.kmin_40.val();
+            } else {
+                self.o40.next = self.kmax_40.val();
+            }
+        }
+        self.out.next = self.o40.val();
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -87,6 +152,23 @@ mod tests {
                 assert!(simulate(&mut u, 100));
                 // Round half up, then clamp to 40 signed bits (written out here: hdl does not use golden).
                 let want = ((p as i128 + (1i128 << (sh - 1))) >> sh).clamp(-(1i128 << 39), (1i128 << 39) - 1) as i64;
+                let got = to_i64(signed_cast(u.out.val()));
+                assert_eq!(got, want, "p {p} sh {sh}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_wide_plane_round_is_the_same_rounding_on_78_bits() {
+        let mut u = PlaneRoundWide::default();
+        u.connect_all();
+        let big = 1i128 << 74;
+        for p in [0i128, 1, -1, 7, 8, -8, -9, 123456789, -123456789, (1 << 57) - 1, -(1 << 57), big - 1, -big, (1i128 << 60) + 12345, -(1i128 << 44) - 3, 1i128 << 43, -(1i128 << 43)] {
+            for sh in [4u64, 5, 17, 36, 37] {
+                u.p.next = crate::common::bits_from_u128::<78>(p as u128);
+                u.sh.next = sh.into();
+                assert!(simulate(&mut u, 100));
+                let want = ((p + (1i128 << (sh - 1))) >> sh).clamp(-(1i128 << 39), (1i128 << 39) - 1) as i64;
                 let got = to_i64(signed_cast(u.out.val()));
                 assert_eq!(got, want, "p {p} sh {sh}");
             }

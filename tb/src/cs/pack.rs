@@ -2,10 +2,12 @@
 //! and bit vectors for the Verilog replay. One place, so that a packing error shows up in every bench.
 
 use golden::cycle::colour_setup::SetupCmd;
+use golden::cycle::tex_setup::TexSetupCmd;
 use golden::format::Plane;
 use golden::shade::TdbsEntry;
 use hdl::common::{from_i64, to_i64};
-use hdl::cs::{SetupCommand, TdbsRecord};
+use golden::texcoord::TexPlanes;
+use hdl::cs::{SetupCommand, TdbsRecord, TdbtRecord, TexSetupCommand};
 use rust_hdl::prelude::*;
 
 fn bits_of<const N: usize>(v: i64) -> Bits<N> {
@@ -73,6 +75,39 @@ pub fn command_of(c: &SetupCmd) -> SetupCommand {
     }
 }
 
+/// The RTL's TdbT record as golden texture planes.
+pub fn tex_planes_of(r: &TdbtRecord) -> TexPlanes {
+    TexPlanes {
+        sw: Plane { a: signed_of(r.s_a), b: signed_of(r.s_b), c: signed_of(r.s_c) },
+        tw: Plane { a: signed_of(r.t_a), b: signed_of(r.t_b), c: signed_of(r.t_c) },
+        q: Plane { a: signed_of(r.q_a), b: signed_of(r.q_b), c: signed_of(r.q_c) },
+    }
+}
+
+/// A texture-setup command as the RTL's stream word.
+pub fn tex_command_of(c: &TexSetupCmd) -> TexSetupCommand {
+    let s = |v: i16| -> Bits<16> { (v as u16 as u64).into() };
+    let v = |k: usize, ch: usize| -> Bits<33> { bits_of(c.values[k][ch]) };
+    TexSetupCommand {
+        index: (c.index as u64).into(),
+        x0: s(c.x[0]),
+        y0: s(c.y[0]),
+        x1: s(c.x[1]),
+        y1: s(c.y[1]),
+        x2: s(c.x[2]),
+        y2: s(c.y[2]),
+        v0s: v(0, 0),
+        v0t: v(0, 1),
+        v0q: v(0, 2),
+        v1s: v(1, 0),
+        v1t: v(1, 1),
+        v1q: v(1, 2),
+        v2s: v(2, 0),
+        v2t: v(2, 1),
+        v2q: v(2, 2),
+    }
+}
+
 /// RGB888 as the texture path's ports take it (texels, colours: R 23:16, G 15:8, B 7:0).
 pub fn rgb888(c: [u8; 3]) -> u64 {
     (c[0] as u64) << 16 | (c[1] as u64) << 8 | c[2] as u64
@@ -128,6 +163,27 @@ impl BitVector {
         self.push(c.flat as u128, 1);
         for ch in 0..3 {
             self.push(c.flat_rgb[ch] as u128, 8);
+        }
+    }
+    /// Append texture planes in the TdbT record's packed layout (408 bits).
+    pub fn push_tex_planes(&mut self, t: &TexPlanes) {
+        for p in [&t.sw, &t.tw, &t.q] {
+            self.push_signed(p.a, 40);
+            self.push_signed(p.b, 40);
+            self.push_signed(p.c, 56);
+        }
+    }
+    /// Append a texture-setup command in its packed layout (409 bits).
+    pub fn push_tex_command(&mut self, c: &TexSetupCmd) {
+        self.push(c.index as u128, 16);
+        for k in 0..3 {
+            self.push(c.x[k] as u16 as u128, 16);
+            self.push(c.y[k] as u16 as u128, 16);
+        }
+        for vk in &c.values {
+            for &v in vk {
+                self.push_signed(v, 33);
+            }
         }
     }
     pub fn len(&self) -> usize {
@@ -195,6 +251,35 @@ mod tests {
         assert_eq!(v.len(), 297);
         for i in 0..297 {
             assert_eq!(packed.get_bit(i), v.0[i], "bit {i}");
+        }
+    }
+
+    #[test]
+    fn texture_commands_and_records_pack_as_the_rtl_structs_do() {
+        let c = TexSetupCmd { index: 0xfedc, x: [-16384, 32767, 5], y: [-1, 0, 100], values: [[-(1 << 32), (1 << 32) - 1, 1], [7, -8, 1 << 24], [123456789, -987654321, 3]] };
+        let packed: Bits<409> = tex_command_of(&c).into();
+        let mut v = BitVector::default();
+        v.push_tex_command(&c);
+        assert_eq!(v.len(), 409);
+        for i in 0..409 {
+            assert_eq!(packed.get_bit(i), v.0[i], "command bit {i}");
+        }
+        let t = TexPlanes {
+            sw: Plane { a: -(1 << 39), b: (1 << 39) - 1, c: -(1 << 55) },
+            tw: Plane { a: 12345, b: -6789, c: (1 << 55) - 1 },
+            q: Plane { a: -1, b: 0, c: 255 << 16 },
+        };
+        let r = TdbtRecord {
+            s_a: bits_of(t.sw.a), s_b: bits_of(t.sw.b), s_c: bits_of(t.sw.c),
+            t_a: bits_of(t.tw.a), t_b: bits_of(t.tw.b), t_c: bits_of(t.tw.c),
+            q_a: bits_of(t.q.a), q_b: bits_of(t.q.b), q_c: bits_of(t.q.c),
+        };
+        assert_eq!(tex_planes_of(&r), t);
+        let packed: Bits<408> = r.into();
+        let mut v = BitVector::default();
+        v.push_tex_planes(&t);
+        for i in 0..408 {
+            assert_eq!(packed.get_bit(i), v.0[i], "record bit {i}");
         }
     }
 
