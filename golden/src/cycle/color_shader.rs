@@ -42,9 +42,32 @@
 //! * With `tready` always high a pixel is issued every cycle (27 pending < 32): a W x H frame takes
 //!   W*H + 27 cycles from the first issue to the last beat taken. `busy` is high from the cycle after
 //!   the start until the last beat is taken.
+//!
+//! ## Texture (issue 17; the RTL does not have it yet: this is its specification)
+//! A frame started while the model holds a texture ([`ColorShaderModel::set_texturing`], the host's
+//! texture settings and level table, loaded while the CS is idle) is textured:
+//! * t+2: the TdbT read port (`tdbt_read_enable`, `tdbt_read_address` = the index) beside TdbS;
+//!   t+3: the record ([`TexPlanes`]) arrives with the TdbS record.
+//! * t+3 .. t+28: the per-pixel coordinate unit (`tex_coord`, 14 cycles; `tex_lod`, 12) beside the
+//!   colour (flat, Gouraud or Phong, as untextured, then delayed to match).
+//! * t+29: the pixel is offered to the texture unit ([`TextureSamplerModel`]: its bank ports are the
+//!   CS's texture port, `tex_banks`); a background pixel (index 0) passes through it untextured. A
+//!   trilinear pixel between two levels is taken in t+30 (the unit's `ready` is low for one cycle).
+//! * The unit's colour (MODULATE of texel and colour) 8 cycles after it took the pixel enters the
+//!   output FIFO: with `tready` high the beat is on the video port in t+38 ([`CS_PIPELINE_CYCLES_TEX`]),
+//!   or t+39 for a pixel between two levels.
+//! * The credit is [`CS_FIFO_DEPTH_TEX`] = 64 pending pixels (the output FIFO is 64 deep), so that
+//!   nearest and bilinear keep one pixel per clock; a trilinear frame issues a pixel every other
+//!   cycle at most (one every two clocks, the issue's floor), which leaves the unit's second cycle
+//!   free without stalling the fixed pipeline in front of it.
 
+use crate::cycle::texture_sampler::{SamplerPixel, TextureSamplerModel};
 use crate::format::{Plane, CS_GLOSS_LOG2_MAX, CS_LIGHTS, CS_MATERIALS, DEPTH_MAX, MAX_SCREEN};
+use crate::render::Texturing;
 use crate::shade::{PhongLights, PhongMaterial, TdbsEntry};
+use crate::texbank::Footprint;
+use crate::texcoord::TexPlanes;
+use crate::texture::Filter;
 use std::collections::VecDeque;
 
 /// Depth of the output FIFO, and the limit of pending pixels (the credit that makes back-pressure
@@ -52,6 +75,13 @@ use std::collections::VecDeque;
 pub const CS_FIFO_DEPTH: usize = 32;
 /// Cycles from a pixel's issue to the first cycle its beat can be on the video port.
 pub const CS_PIPELINE_CYCLES: u64 = 27;
+/// The output FIFO's depth and the credit of a textured frame.
+pub const CS_FIFO_DEPTH_TEX: usize = 64;
+/// Cycles of the per-pixel coordinate unit, from the TdbT record (t+3) to the texture unit (t+29).
+pub const CS_TEX_COORD_CYCLES: u64 = 26;
+/// Textured: cycles from a pixel's issue to the first cycle its beat can be on the video port
+/// (t+3, the coordinate unit, the texture unit's 8, the FIFO's 1).
+pub const CS_PIPELINE_CYCLES_TEX: u64 = 3 + CS_TEX_COORD_CYCLES + 8 + 1;
 
 /// One write to the CS's Phong constants (one cycle of `light_write_*` or `material_write_*`).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -112,6 +142,8 @@ pub struct CsInputs {
     pub clear_behind: bool,
     pub ibuf_read_data: u16,
     pub tdbs_read_data: TdbsEntry,
+    /// The TdbT record (textured frames).
+    pub tdbt_read_data: TexPlanes,
     pub video_tready: bool,
     pub shading_phong: bool,
     pub config: Option<CsConfigWrite>,
@@ -140,6 +172,10 @@ pub struct CsOutputs {
     pub size_error: bool,
     pub ibuf_read: ReadPort,
     pub tdbs_read: ReadPort,
+    /// Textured frames: the TdbT read, in the cycle of the TdbS read.
+    pub tdbt_read: ReadPort,
+    /// Textured frames: the texture banks' read port (the texture unit's).
+    pub tex_banks: Footprint,
     pub ibuf_write: WritePort,
     pub zbuf_write: WritePort,
     pub video_tvalid: bool,
@@ -183,6 +219,20 @@ pub struct ColorShaderModel {
     material_words: [[[u16; 6]; 1 + CS_LIGHTS]; CS_MATERIALS],
     /// Beats taken by the consumer since construction.
     pub beats: u64,
+    /// The texture the next frame is started with.
+    texturing: Option<Texturing>,
+    /// This frame's texture unit (a textured frame).
+    sampler: Option<TextureSamplerModel>,
+    /// This frame's level-0 size, log2.
+    tex_size_log2: (u32, u32),
+    /// Trilinear: the cycle after an issue issues nothing.
+    trilinear: bool,
+    issued_last: bool,
+    /// Textured: the pixels in the coordinate unit, the oldest first, then the one offered to the
+    /// texture unit and the (sof, eol) of those it has taken.
+    tex_line: VecDeque<Option<(SamplerPixel, (bool, bool))>>,
+    offer: Option<(SamplerPixel, (bool, bool))>,
+    in_sampler: VecDeque<(bool, bool)>,
 }
 
 /// The colour of one pixel: background where the index is 0, else the three planes evaluated at the
@@ -200,6 +250,20 @@ pub fn pixel_colour(index: u16, record: &TdbsEntry, x: u32, y: u32, background: 
 impl ColorShaderModel {
     pub fn new() -> ColorShaderModel {
         ColorShaderModel { post: vec![None; CS_PIPELINE_CYCLES as usize - 4].into(), ..Default::default() }
+    }
+
+    /// Load (or with `None` remove) the texture for the frames started from now on (host side: the
+    /// texture's settings and level table; its texels are in the banks behind `tex_banks`).
+    pub fn set_texturing(&mut self, texturing: Option<Texturing>) {
+        self.texturing = texturing;
+    }
+
+    fn credit(&self) -> usize {
+        if self.sampler.is_some() {
+            CS_FIFO_DEPTH_TEX
+        } else {
+            CS_FIFO_DEPTH
+        }
     }
 
     /// The Phong constants as the hardware holds them, in the golden model's form. A log2 gloss
@@ -225,7 +289,7 @@ impl ColorShaderModel {
     }
 
     fn issuing(&self) -> bool {
-        self.running && self.pending < CS_FIFO_DEPTH
+        self.running && self.pending < self.credit() && !(self.trilinear && self.issued_last)
     }
 
     /// The outputs in the current cycle.
@@ -242,6 +306,9 @@ impl ColorShaderModel {
         }
         if let Some((_, idx)) = self.s2 {
             o.tdbs_read = ReadPort { enable: true, address: idx as u32 };
+            if self.sampler.is_some() {
+                o.tdbt_read = o.tdbs_read;
+            }
         }
         if let Some(b) = self.fifo.front() {
             o.video_tvalid = true;
@@ -252,7 +319,7 @@ impl ColorShaderModel {
 
     /// One clock: returns this cycle's outputs, then takes the rising edge with `inp`.
     pub fn step(&mut self, inp: &CsInputs) -> CsOutputs {
-        let out = self.outputs();
+        let mut out = self.outputs();
         let size_mask = (1u32 << CS_SIZE_BITS) - 1;
         // Video: the head beat leaves.
         if out.video_tvalid && inp.video_tready {
@@ -265,6 +332,26 @@ impl ColorShaderModel {
             assert!(self.fifo.len() < CS_FIFO_DEPTH, "CS model: output FIFO overflow (credit accounting broken)");
             self.fifo.push_back(b);
         }
+        if let Some(sampler) = self.sampler.as_mut() {
+            let so = sampler.step(self.offer.as_ref().map(|o| &o.0));
+            out.tex_banks = so.banks;
+            if so.ready {
+                if let Some((_, meta)) = self.offer.take() {
+                    self.in_sampler.push_back(meta);
+                }
+            }
+            if let Some(rgb) = so.rgb {
+                let (sof, eol) = self.in_sampler.pop_front().expect("CS model: a texture unit colour with no pixel");
+                assert!(self.fifo.len() < CS_FIFO_DEPTH_TEX, "CS model: output FIFO overflow (credit accounting broken)");
+                self.fifo.push_back(VideoBeat { rgb, sof, eol });
+            }
+            if let Some(next) = self.tex_line.pop_front().flatten() {
+                assert!(self.offer.is_none(), "CS model: a pixel reached the texture unit while the last waits");
+                self.offer = Some(next);
+            }
+        }
+        let (w_log2, h_log2) = self.tex_size_log2;
+        let textured = self.sampler.is_some();
         let beat = self.s3.take().map(|(p, idx)| {
             let rec = &inp.tdbs_read_data;
             let rgb = if self.phong && idx != 0 {
@@ -273,12 +360,21 @@ impl ColorShaderModel {
             } else {
                 pixel_colour(idx, rec, p.x, p.y, self.background)
             };
-            VideoBeat { rgb, sof: p.sof, eol: p.eol }
+            let planes = inp.tdbt_read_data;
+            let tex = (textured && idx != 0).then(|| planes.eval(p.x, p.y, w_log2, h_log2));
+            let sample = SamplerPixel { s: tex.map_or(0, |c| c.s), t: tex.map_or(0, |c| c.t), lod: tex.map_or(0, |c| c.lod), colour: rgb, textured: tex.is_some() };
+            (VideoBeat { rgb, sof: p.sof, eol: p.eol }, sample)
         });
-        self.post.push_back(beat);
+        if textured {
+            self.tex_line.push_back(beat.map(|(b, sample)| (sample, (b.sof, b.eol))));
+            self.post.push_back(None);
+        } else {
+            self.post.push_back(beat.map(|b| b.0));
+        }
         self.s3 = self.s2.take();
         self.s2 = self.s1.take().map(|p| (p, inp.ibuf_read_data));
         // Issue.
+        self.issued_last = out.ibuf_read.enable;
         if out.ibuf_read.enable {
             let eol = self.x + 1 == self.width;
             self.s1 = Some(Pixel { x: self.x, y: self.y, address: self.address, sof: self.x == 0 && self.y == 0, eol });
@@ -320,6 +416,13 @@ impl ColorShaderModel {
                 self.x = 0;
                 self.y = 0;
                 self.address = 0;
+                self.sampler = self.texturing.as_ref().map(|tx| TextureSamplerModel::new((*tx.texture).clone(), tx.filter, tx.wrap));
+                self.tex_size_log2 = self.texturing.as_ref().map_or((0, 0), |tx| (tx.texture.levels[0].w_log2, tx.texture.levels[0].h_log2));
+                self.trilinear = self.texturing.as_ref().is_some_and(|tx| tx.filter == Filter::Trilinear);
+                self.issued_last = false;
+                self.tex_line = vec![None; CS_TEX_COORD_CYCLES as usize - 1].into();
+                self.offer = None;
+                self.in_sampler.clear();
             } else {
                 self.size_error = true;
             }
@@ -336,13 +439,24 @@ pub struct CsMemories {
     pub ibuf: Vec<u16>,
     pub zbuf: Vec<u32>,
     pub tdbs: Vec<TdbsEntry>,
+    /// TdbT (textured frames; empty otherwise).
+    pub tdbt: Vec<TexPlanes>,
     ibuf_data: u16,
     tdbs_data: TdbsEntry,
+    tdbt_data: TexPlanes,
 }
 
 impl CsMemories {
     pub fn new(ibuf: Vec<u16>, zbuf: Vec<u32>, tdbs: Vec<TdbsEntry>) -> CsMemories {
-        CsMemories { ibuf, zbuf, tdbs, ibuf_data: 0, tdbs_data: TdbsEntry::default() }
+        CsMemories { ibuf, zbuf, tdbs, tdbt: Vec::new(), ibuf_data: 0, tdbs_data: TdbsEntry::default(), tdbt_data: TexPlanes::default() }
+    }
+    /// The same with a TdbT.
+    pub fn with_tdbt(self, tdbt: Vec<TexPlanes>) -> CsMemories {
+        CsMemories { tdbt, ..self }
+    }
+    /// The TdbT read data in the current cycle.
+    pub fn tdbt_data(&self) -> TexPlanes {
+        self.tdbt_data
     }
     /// The read data the memories show in the current cycle.
     pub fn read_data(&self) -> (u16, TdbsEntry) {
@@ -356,6 +470,9 @@ impl CsMemories {
         }
         if o.tdbs_read.enable {
             self.tdbs_data = self.tdbs.get(o.tdbs_read.address as usize).copied().unwrap_or_default();
+        }
+        if o.tdbt_read.enable {
+            self.tdbt_data = self.tdbt.get(o.tdbt_read.address as usize).copied().unwrap_or_default();
         }
         if o.ibuf_write.enable {
             if let Some(v) = self.ibuf.get_mut(o.ibuf_write.address as usize) {
@@ -383,9 +500,50 @@ pub fn scan_frame(
     background: [u8; 3],
     clear_behind: bool,
     phong: Option<&[CsConfigWrite]>,
-    mut tready: impl FnMut(u64) -> bool,
+    tready: impl FnMut(u64) -> bool,
 ) -> Result<(Vec<u8>, u64), String> {
+    scan(mem, width, height, background, clear_behind, phong, None, tready).map(|s| (s.rgb, s.cycles))
+}
+
+/// What [`scan_textured_frame`] measured.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Scan {
+    /// RGB888 in raster order.
+    pub rgb: Vec<u8>,
+    /// Cycles from the first pixel's issue to the last beat taken, both included.
+    pub cycles: u64,
+    /// Words read at the texture port.
+    pub bank_words: u64,
+}
+
+/// [`scan_frame`] of a textured frame (`mem` holds its TdbT): also the words read at the texture
+/// port.
+pub fn scan_textured_frame(
+    mem: &mut CsMemories,
+    width: u32,
+    height: u32,
+    background: [u8; 3],
+    phong: Option<&[CsConfigWrite]>,
+    texturing: &Texturing,
+    tready: impl FnMut(u64) -> bool,
+) -> Result<Scan, String> {
+    scan(mem, width, height, background, false, phong, Some(texturing), tready)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn scan(
+    mem: &mut CsMemories,
+    width: u32,
+    height: u32,
+    background: [u8; 3],
+    clear_behind: bool,
+    phong: Option<&[CsConfigWrite]>,
+    texturing: Option<&Texturing>,
+    mut tready: impl FnMut(u64) -> bool,
+) -> Result<Scan, String> {
     let mut m = ColorShaderModel::new();
+    m.set_texturing(texturing.cloned());
+    let mut bank_words = 0u64;
     let config = phong.unwrap_or(&[]);
     let start = config.len() as u64;
     let mut rgb = Vec::with_capacity((width * height * 3) as usize);
@@ -403,11 +561,13 @@ pub fn scan_frame(
             clear_behind,
             ibuf_read_data,
             tdbs_read_data,
+            tdbt_read_data: mem.tdbt_data(),
             video_tready: ready,
             shading_phong: phong.is_some(),
             config: config.get(cycle as usize).copied(),
         };
         let o = m.step(&inp);
+        bank_words += o.tex_banks.reads() as u64;
         if o.ibuf_read.enable && first_issue.is_none() {
             first_issue = Some(cycle);
         }
@@ -420,7 +580,7 @@ pub fn scan_frame(
             if o.size_error {
                 return Err(format!("the CS refused the screen size {width}x{height} (1..={MAX_SCREEN} each)"));
             }
-            return Ok((rgb, last_beat + 1 - first_issue.unwrap_or(last_beat + 1)));
+            return Ok(Scan { rgb, cycles: last_beat + 1 - first_issue.unwrap_or(last_beat + 1), bank_words });
         }
         cycle += 1;
         if cycle > limit {
@@ -496,6 +656,58 @@ mod tests {
         assert!(cycles > 96 * 64 * 4 / 3, "back-pressure had no effect ({cycles} cycles)");
         assert!(mem.ibuf.iter().all(|&i| i == 0), "I-buffer not cleared behind the scan");
         assert!(mem.zbuf.iter().all(|&z| z == DEPTH_MAX), "Z-buffer not cleared behind the scan");
+    }
+
+    const BG: [u8; 3] = [24, 24, 40];
+
+    /// teapot-floor at 320x200, Gouraud, textured with the built-in checker (`filter`, perspective),
+    /// its golden frame and chipset, and the memories the CS scans.
+    fn textured(filter: Filter) -> (crate::render::Frame, Texturing, CsMemories) {
+        let mesh = builtin::teapot_floor();
+        let screen = Screen::new(320, 200).unwrap();
+        let texturing = Texturing { texture: std::sync::Arc::new(crate::texture::checker()), source: "test".into(), filter, coords: crate::texcoord::Coords::Perspective, wrap: crate::texture::Wrap::Repeat };
+        let opts = RenderOptions { texturing: Some(texturing.clone()), background: BG, ..RenderOptions::for_scene(&mesh, screen, Shading::Gouraud) };
+        let mut chip = GoldenChipset::new(screen);
+        let f = render_with(&mesh, &opts, &mut chip).unwrap();
+        let tdbt = chip.tdbt.iter().map(|t| t.unwrap_or_default()).collect();
+        let mem = memories(&chip, &f).with_tdbt(tdbt);
+        (f, texturing, mem)
+    }
+
+    #[test]
+    fn the_textured_color_shader_model_scans_out_golden_textured_frames_at_the_stated_rates() {
+        for filter in [Filter::Nearest, Filter::Bilinear, Filter::Trilinear] {
+            let (f, tx, mut mem) = textured(filter);
+            let counts = f.stats.texture.clone().expect("a textured frame counts its texels");
+            let scan = scan_textured_frame(&mut mem, 320, 200, BG, None, &tx, |_| true).unwrap();
+            assert!(scan.rgb == f.rgb, "{filter:?}: the model's image differs from the golden one");
+            assert_eq!(scan.bank_words, counts.bank_words_read, "{filter:?}: words read at the texture port");
+            println!("{filter:?}: {} cycles, {} words at the texture port", scan.cycles, scan.bank_words);
+            let n = 320 * 200;
+            match filter {
+                // One pixel per clock; the last beat CS_PIPELINE_CYCLES_TEX after the last issue.
+                Filter::Nearest | Filter::Bilinear => assert_eq!(scan.cycles, n + CS_PIPELINE_CYCLES_TEX, "{filter:?}"),
+                // One pixel every two clocks; a last pixel between two levels one cycle later.
+                Filter::Trilinear => assert!((2 * n - 1 + CS_PIPELINE_CYCLES_TEX..=2 * n + CS_PIPELINE_CYCLES_TEX).contains(&scan.cycles), "{} cycles", scan.cycles),
+            }
+        }
+    }
+
+    #[test]
+    fn a_textured_frame_under_back_pressure_loses_and_repeats_no_pixel() {
+        for filter in [Filter::Bilinear, Filter::Trilinear] {
+            let (f, tx, mut mem) = textured(filter);
+            let mut x = 0x9e3779b97f4a7c15u64;
+            let scan = scan_textured_frame(&mut mem, 320, 200, BG, None, &tx, |_| {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                x % 4 != 0
+            })
+            .unwrap();
+            assert!(scan.rgb == f.rgb, "{filter:?}: image under back-pressure differs");
+            assert!(scan.cycles > 320 * 200 * 5 / 4, "{filter:?}: back-pressure had no effect ({} cycles)", scan.cycles);
+        }
     }
 
     #[test]

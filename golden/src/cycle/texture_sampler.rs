@@ -32,6 +32,9 @@ pub struct SamplerPixel {
     /// Q4.4.
     pub lod: u8,
     pub colour: [u8; 3],
+    /// False for a pixel that passes through untextured (the background in the Color Shader): no
+    /// footprint, `colour` out after the same latency.
+    pub textured: bool,
 }
 
 /// The unit's outputs in one cycle.
@@ -45,6 +48,7 @@ pub struct SamplerOut {
 }
 
 /// The texture unit, for one texture and its settings.
+#[derive(Clone, Debug)]
 pub struct TextureSamplerModel {
     texture: Texture,
     geoms: Vec<LevelGeom>,
@@ -75,7 +79,10 @@ impl TextureSamplerModel {
     /// One clock: `offer` is the pixel on the input (valid), held by the caller until `ready`.
     pub fn step(&mut self, offer: Option<&SamplerPixel>) -> SamplerOut {
         let mut ready = true;
-        if let Some(p) = offer {
+        if let Some(p) = offer.filter(|p| !p.textured) {
+            self.pending = false;
+            self.colours.push_back((self.cycle + TEXTURE_SAMPLER_LATENCY, p.colour));
+        } else if let Some(p) = offer {
             let (level, second) = self.texture.levels_for(p.lod, self.filter);
             let issue = match second {
                 Some((next, _)) if self.pending => next,
@@ -121,7 +128,7 @@ mod tests {
     fn a_trilinear_pixel_between_two_levels_takes_two_cycles_and_others_one() {
         let tex = Texture::new(4, 4, vec![[50, 100, 150]; 16]).unwrap();
         let mut m = TextureSamplerModel::new(tex, Filter::Trilinear, Wrap::Repeat);
-        let between = SamplerPixel { s: 1 << 14, t: 1 << 14, lod: 0x18, colour: [255; 3] };
+        let between = SamplerPixel { s: 1 << 14, t: 1 << 14, lod: 0x18, colour: [255; 3], textured: true };
         let whole = SamplerPixel { lod: 0x10, ..between };
         let beyond = SamplerPixel { lod: 0x28, ..between }; // level 2 is the last (1x1)
         assert!(!m.step(Some(&between)).ready);

@@ -245,6 +245,10 @@ fn rtl_outputs(u: &ColorShader) -> CsOutputs {
         },
         video_tvalid: u.video_tvalid.val(),
         video: VideoBeat { rgb: crate::cs::pack::rgb_of(t), sof: u.video_tuser.val(), eol: u.video_tlast.val() },
+        // The RTL has no TdbT or texture port yet; the bench's frames are untextured, where the model
+        // leaves them idle.
+        tdbt_read: Default::default(),
+        tex_banks: Default::default(),
     }
 }
 
@@ -353,6 +357,7 @@ fn run_inner(
             clear_behind: if busy { rng.chance(50) } else { s.clear_behind },
             ibuf_read_data,
             tdbs_read_data,
+            tdbt_read_data: Default::default(),
             video_tready: !rng.chance(drive.stall_percent),
             shading_phong: if busy { rng.chance(50) } else { s.phong },
             config: cfg,

@@ -336,7 +336,7 @@ mod tests {
                 let p = 3 * (y * 320 + x) as usize;
                 [f.rgb[p], f.rgb[p + 1], f.rgb[p + 2]]
             };
-            let run_pixels: Vec<(usize, SamplerPixel)> = pixels.iter().zip(&coords).map(|(&(x, y, _), c)| (0, SamplerPixel { s: c.s, t: c.t, lod: c.lod, colour: colour(x, y, &plain) })).collect();
+            let run_pixels: Vec<(usize, SamplerPixel)> = pixels.iter().zip(&coords).map(|(&(x, y, _), c)| (0, SamplerPixel { s: c.s, t: c.t, lod: c.lod, colour: colour(x, y, &plain), textured: true })).collect();
             let r = Run { texture: checker(), filter, wrap: Wrap::Repeat, pixels: run_pixels };
             let (_, m) = run(&r, r.model(), 1, None).unwrap();
             assert_eq!(m.pixels, pixels.len() as u64);

@@ -75,7 +75,7 @@ pub fn pixels(rng: &mut Rng, n: usize, gap_percent: u64) -> Vec<(usize, SamplerP
             let coord = |rng: &mut Rng| if rng.chance(10) { rng.next_u64() as i32 } else { (rng.below(6 << 16) as i64 - (2 << 16)) as i32 };
             let lod = if rng.chance(25) { (rng.below(12) << LOD_FRAC) as u8 } else { rng.below(176) as u8 };
             let colour = [rng.below(256) as u8, rng.below(256) as u8, rng.below(256) as u8];
-            (gap, SamplerPixel { s: coord(rng), t: coord(rng), lod, colour })
+            (gap, SamplerPixel { s: coord(rng), t: coord(rng), lod, colour, textured: true })
         })
         .collect()
 }
@@ -117,7 +117,7 @@ pub fn run(r: &Run, mut model: TextureSamplerModel, seed: u64, vcd: Option<&std:
         uut.filter.next = filter_code.into();
         uut.clamp.next = r.wrap == Wrap::ClampToEdge;
         let offer = if !loading && next < r.pixels.len() && gap_left == 0 { Some(r.pixels[next].1) } else { None };
-        let p = offer.unwrap_or(SamplerPixel { s: 0, t: 0, lod: 0, colour: [0; 3] });
+        let p = offer.unwrap_or(SamplerPixel { s: 0, t: 0, lod: 0, colour: [0; 3], textured: true });
         uut.valid_in.next = offer.is_some();
         uut.s.next = (p.s as u32 as u64).into();
         uut.t.next = (p.t as u32 as u64).into();
