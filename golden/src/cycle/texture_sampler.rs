@@ -68,7 +68,7 @@ impl TextureSamplerModel {
 
     /// Whether `p` takes two cycles (trilinear between two levels).
     pub fn takes_two_cycles(&self, p: &SamplerPixel) -> bool {
-        self.texture.levels_for(p.lod, self.filter).1.is_some()
+        p.textured && self.texture.levels_for(p.lod, self.filter).1.is_some()
     }
 
     /// Whether nothing is in flight.

@@ -5,7 +5,8 @@
 //! sample` followed by `golden::texture::modulate` is the reference. Nearest and bilinear take one
 //! pixel per clock; a trilinear pixel between two levels takes two (its two footprints go through the
 //! same address unit and filter one after the other: `ready` is low in the first), one on a whole level
-//! or at the last level. Not yet instantiated in the CS (the per-pixel reciprocal that makes s, t and
+//! or at the last level. A pixel with `textured` low (the CS's background) reads no texel and leaves with
+//! its colour unchanged (MODULATE with white), after the same latency. Not yet instantiated in the CS (the per-pixel reciprocal that makes s, t and
 //! the level of detail comes next; docs/texture.md).
 //!
 //! ```text
@@ -53,6 +54,9 @@ pub struct TextureSampler {
     /// Level of detail, Q4.4.
     pub lod: Signal<In, Bits<8>>,
     pub colour: Signal<In, Bits<24>>,
+    /// Low: the pixel passes untextured (the CS's background): no footprint, `colour` out after the
+    /// same latency (MODULATE with a white texel).
+    pub textured: Signal<In, Bit>,
     // The texture's settings.
     pub w0_log2: Signal<In, Bits<4>>,
     pub h0_log2: Signal<In, Bits<4>>,
@@ -99,6 +103,7 @@ pub struct TextureSampler {
     tag_second: [DFF<Bit>; TO_FILTER_OUT],
     tag_f: [DFF<Bits<4>>; TO_FILTER_OUT],
     tag_colour: [DFF<Bits<24>>; TO_FILTER_OUT],
+    tag_white: [DFF<Bit>; TO_FILTER_OUT],
     // Bank data to the filter's slots, with the footprint delayed by the read.
     route_q: DFF<Bits<8>>,
     fx_q: DFF<Bits<8>>,
@@ -122,6 +127,7 @@ pub struct TextureSampler {
     texel_packed: Signal<Local, Bits<24>>,
     modulate: Modulate,
     k1_16: Constant<Bits<16>>,
+    k255_8: Constant<Bits<8>>,
     k2_2: Constant<Bits<2>>,
     k0_2: Constant<Bits<2>>,
     k1_4: Constant<Bits<4>>,
@@ -140,6 +146,7 @@ impl Default for TextureSampler {
             t: Default::default(),
             lod: Default::default(),
             colour: Default::default(),
+            textured: Default::default(),
             w0_log2: Default::default(),
             h0_log2: Default::default(),
             last_level: Default::default(),
@@ -178,6 +185,7 @@ impl Default for TextureSampler {
             tag_second: Default::default(),
             tag_f: Default::default(),
             tag_colour: Default::default(),
+            tag_white: Default::default(),
             route_q: Default::default(),
             fx_q: Default::default(),
             fy_q: Default::default(),
@@ -199,6 +207,7 @@ impl Default for TextureSampler {
             texel_packed: Default::default(),
             modulate: Default::default(),
             k1_16: Constant::new(1u64.into()),
+            k255_8: Constant::new(255.into()),
             k2_2: Constant::new(2u64.into()),
             k0_2: Constant::new(0u64.into()),
             k1_4: Constant::new(1u64.into()),
@@ -223,6 +232,7 @@ impl Logic for TextureSampler {
             self.tag_second[k].clock.next = self.clock.val();
             self.tag_f[k].clock.next = self.clock.val();
             self.tag_colour[k].clock.next = self.clock.val();
+            self.tag_white[k].clock.next = self.clock.val();
         }
         for c in 0..3 {
             self.texel_q[c].clock.next = self.clock.val();
@@ -245,7 +255,7 @@ impl Logic for TextureSampler {
         if self.lvl_raw.val() > self.last_level.val() {
             self.lvl.next = self.last_level.val();
         }
-        self.pair.next = (self.filter.val() == self.k2_2.val()) & self.lod_frac.val().any() & (self.lvl_raw.val() < self.last_level.val());
+        self.pair.next = (self.filter.val() == self.k2_2.val()) & self.lod_frac.val().any() & (self.lvl_raw.val() < self.last_level.val()) & self.textured.val();
         self.issue_lvl.next = self.lvl.val();
         if self.pending.q.val() {
             self.issue_lvl.next = self.lvl.val() + self.k1_4.val();
@@ -269,7 +279,7 @@ impl Logic for TextureSampler {
                 self.addr.base.next = self.bases[k].q.val();
             }
         }
-        self.addr.valid_in.next = self.valid_in.val();
+        self.addr.valid_in.next = self.valid_in.val() & self.textured.val();
         self.addr.s.next = self.s.val();
         self.addr.t.next = self.t.val();
         self.addr.w_log2.next = self.w_sub.val();
@@ -282,11 +292,13 @@ impl Logic for TextureSampler {
         self.tag_second[0].d.next = self.accept.val() & self.pending.q.val();
         self.tag_f[0].d.next = self.lod_frac.val();
         self.tag_colour[0].d.next = self.colour.val();
+        self.tag_white[0].d.next = !self.textured.val();
         for k in 1..6 {
             self.tag_out[k].d.next = self.tag_out[k - 1].q.val();
             self.tag_second[k].d.next = self.tag_second[k - 1].q.val();
             self.tag_f[k].d.next = self.tag_f[k - 1].q.val();
             self.tag_colour[k].d.next = self.tag_colour[k - 1].q.val();
+            self.tag_white[k].d.next = self.tag_white[k - 1].q.val();
         }
 
         // The banks.
@@ -350,6 +362,9 @@ impl Logic for TextureSampler {
             self.texel_q[c].d.next = 0.into();
             if self.tag_out[5].q.val() {
                 self.texel_q[c].d.next = self.b_chan[c].val();
+                if self.tag_white[5].q.val() {
+                    self.texel_q[c].d.next = self.k255_8.val();
+                }
             }
         }
         self.colour_q.d.next = self.tag_colour[5].q.val();

@@ -49,6 +49,7 @@ pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
             port("t", 32),
             port("lod", 8),
             port("colour", 24),
+            port("textured", 1),
             port("w0_log2", 4),
             port("h0_log2", 4),
             port("last_level", 4),
@@ -75,7 +76,8 @@ pub fn pixels(rng: &mut Rng, n: usize, gap_percent: u64) -> Vec<(usize, SamplerP
             let coord = |rng: &mut Rng| if rng.chance(10) { rng.next_u64() as i32 } else { (rng.below(6 << 16) as i64 - (2 << 16)) as i32 };
             let lod = if rng.chance(25) { (rng.below(12) << LOD_FRAC) as u8 } else { rng.below(176) as u8 };
             let colour = [rng.below(256) as u8, rng.below(256) as u8, rng.below(256) as u8];
-            (gap, SamplerPixel { s: coord(rng), t: coord(rng), lod, colour, textured: true })
+            // One in ten passes untextured (the CS's background), whatever its coordinates say.
+            (gap, SamplerPixel { s: coord(rng), t: coord(rng), lod, colour, textured: !rng.chance(10) })
         })
         .collect()
 }
@@ -123,6 +125,7 @@ pub fn run(r: &Run, mut model: TextureSamplerModel, seed: u64, vcd: Option<&std:
         uut.t.next = (p.t as u32 as u64).into();
         uut.lod.next = (p.lod as u64).into();
         uut.colour.next = pack(p.colour).into();
+        uut.textured.next = p.textured;
         let mut data = [0u64; 4];
         for b in 0..TEXTURE_BANKS {
             data[b] = match read_prev {
@@ -173,6 +176,7 @@ pub fn run(r: &Run, mut model: TextureSamplerModel, seed: u64, vcd: Option<&std:
         vin.push(p.t as u32 as u128, 32);
         vin.push(p.lod as u128, 8);
         vin.push(pack(p.colour) as u128, 24);
+        vin.push(p.textured as u128, 1);
         vin.push(w0 as u128, 4);
         vin.push(h0 as u128, 4);
         vin.push(last as u128, 4);
