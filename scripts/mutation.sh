@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Mutation cover of one top's generated netlist (YosysHQ mcy's method; too long for CI):
-#   bash scripts/mutation.sh TOP N [--seed S] [--jobs J] [--only I,J,...] [--replay-only]     TOP: rc, rc3, colour_setup, cs, opp
+#   bash scripts/mutation.sh TOP N [--seed S] [--jobs J] [--only I,J,...] [--replay-only]     TOP: rc, rc3, colour_setup, cs, opp, tex_setup
 # Yosys draws N mutations of the top's netlist; each mutant is replayed under Icarus on the recorded
 # stimulus and the cycle model's expected outputs (killed when any port differs in any cycle); a
 # survivor is tried for equivalence (its cell dead in the flattened top, else Yosys's equiv_* passes over

@@ -9,7 +9,8 @@
 //! never called equivalent ([`CLOCK_UNDECIDED`]).
 //!
 //! Run by `bash scripts/mutation.sh TOP N` (`tb/src/bin/mutation.rs`); results in
-//! `target/mutation/TOP.json`. The tops: `rc`, `rc3`, `colour_setup`, `cs`, `opp`.
+//! `target/mutation/TOP.json`. The tops: `rc`, `rc3`, `colour_setup`, `cs`, `opp`, and the texture
+//! setup block `tex_setup` (not yet in a `verilog` top).
 
 use crate::common::{workspace_target, Rng};
 use golden::format::Screen;
@@ -17,7 +18,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// The tops this cover knows, with the stimulus each is replayed on.
-pub const TOPS: [&str; 5] = ["rc", "rc3", "colour_setup", "cs", "opp"];
+pub const TOPS: [&str; 6] = ["rc", "rc3", "colour_setup", "cs", "opp", "tex_setup"];
 
 type Replay = Box<dyn Fn(&str, &Path) -> Result<(), String> + Send + Sync>;
 
@@ -64,6 +65,16 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
             Ok(Target { top: "cs", verilog: hdl::verilog_top("cs")?, stimulus, replay })
         }
         "opp" => opp_target(dir),
+        "tex_setup" => {
+            // The random test's kinds (both signs of det, zero area, saturating and real-range values).
+            let mut rng = crate::common::Rng::new(0x7E5E);
+            let cmds = crate::cs::tex_setup_bench::random_commands(600, &mut rng);
+            let run = crate::cs::tex_setup_bench::run("mutation_tex_setup", &cmds, &cmds, 30, 0x7E5E, true)?;
+            let rec = run.recording.expect("recorded");
+            let stimulus = format!("{} cycles: 600 random commands of the texture setup bench's kinds, 30% gaps", rec.cycles());
+            let replay: Replay = Box::new(move |v, d| crate::cs::replay::replay_iverilog(v, "tex_setup", &rec, d).map(|_| ()));
+            Ok(Target { top: "tex_setup", verilog: hdl::cs::tex_setup::verilog()?, stimulus, replay })
+        }
         _ => Err(format!("unknown top '{top}': the mutation cover knows {}", TOPS.join(", "))),
     }
 }

@@ -11,7 +11,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use tb::mutation::{draw, judge, target, work_dir, write_mutants, yosys_netlist, Outcome, TOPS};
 
-const USAGE: &str = "usage: mutation TOP N [--seed S] [--jobs J] [--only I,J,...] [--replay-only]   (TOP: rc, rc3, colour_setup, cs, opp; N mutants, at least 1; --only: judge only these mutant numbers, each below N)";
+const USAGE: &str = "usage: mutation TOP N [--seed S] [--jobs J] [--only I,J,...] [--replay-only]   (TOP: rc, rc3, colour_setup, cs, opp, tex_setup; N mutants, at least 1; --only: judge only these mutant numbers, each below N)";
 
 fn main() {
     if let Err(e) = run() {
