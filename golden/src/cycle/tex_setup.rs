@@ -114,6 +114,30 @@ impl TexSetupModel {
     }
 }
 
+/// Colour setup and texture setup on one command stream (`hdl::cs::textured_setup`): a colour-setup
+/// command with its texture values beside it, taken by both in the same cycle.
+#[derive(Clone, Debug, Default)]
+pub struct TexturedSetupModel {
+    pub colour: crate::cycle::colour_setup::ColourSetupModel,
+    pub texture: TexSetupModel,
+}
+
+impl TexturedSetupModel {
+    /// One clock: `cmd` (if valid) with its texture values; this cycle's outputs of both blocks.
+    pub fn step(&mut self, cmd: Option<(&SetupCmd, &[[i64; 3]; 3])>) -> (crate::cycle::colour_setup::SetupOutputs, TexSetupOutputs) {
+        use crate::cycle::colour_setup::SetupInputs;
+        let (c, values) = match cmd {
+            Some((c, v)) => (*c, *v),
+            None => (SetupCmd::default(), [[0; 3]; 3]),
+        };
+        let t = TexSetupCmd { index: c.index, x: c.x, y: c.y, values };
+        let a = self.colour.step(&SetupInputs { cmd_valid: cmd.is_some(), cmd: c });
+        let b = self.texture.step(&TexSetupInputs { cmd_valid: cmd.is_some(), cmd: t });
+        assert_eq!(a.cmd_ready, b.cmd_ready, "the two setup blocks share one handshake");
+        (a, b)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -37,6 +37,7 @@ pub mod colour_setup;
 pub mod tex_coord;
 pub mod tex_lod;
 pub mod tex_setup;
+pub mod textured_setup;
 pub mod texel_address;
 pub mod texel_filter;
 pub mod texture_sampler;

@@ -21,6 +21,7 @@ pub mod stimulus;
 pub mod tex_coord_bench;
 pub mod tex_lod_bench;
 pub mod tex_setup_bench;
+pub mod textured_setup_bench;
 pub mod texel_address_bench;
 pub mod texel_filter_bench;
 pub mod texture_sampler_bench;
