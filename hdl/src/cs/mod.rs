@@ -169,19 +169,10 @@ pub struct TdbtRecord {
 /// Width of a packed [`TdbtRecord`].
 pub const TDBT_RECORD_BITS: usize = 408;
 
-/// One texture-setup command (`golden::cycle::tex_setup::TexSetupCmd`): the triangle's index and
-/// window coordinates as in [`SetupCommand`], and per vertex s/w, t/w and 1/w in 33-bit two's
-/// complement. Packed layout (409 bits, LSB first): `index` 15:0, `x0 y0 x1 y1 x2 y2` 111:16,
-/// `v0s v0t v0q v1s v1t v1q v2s v2t v2q` 408:112 (33 bits each, in that order).
+/// The texture values of a triangle's three vertices: s/w, t/w and 1/w, 33-bit two's complement.
+/// Packed layout (297 bits, LSB first): `v0s v0t v0q v1s v1t v1q v2s v2t v2q`.
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
-pub struct TexSetupCommand {
-    pub index: Bits<16>,
-    pub x0: Bits<16>,
-    pub y0: Bits<16>,
-    pub x1: Bits<16>,
-    pub y1: Bits<16>,
-    pub x2: Bits<16>,
-    pub y2: Bits<16>,
+pub struct TexValues {
     pub v0s: Bits<33>,
     pub v0t: Bits<33>,
     pub v0q: Bits<33>,
@@ -191,6 +182,24 @@ pub struct TexSetupCommand {
     pub v2s: Bits<33>,
     pub v2t: Bits<33>,
     pub v2q: Bits<33>,
+}
+
+/// Width of a packed [`TexValues`].
+pub const TEX_VALUES_BITS: usize = 297;
+
+/// One texture-setup command (`golden::cycle::tex_setup::TexSetupCmd`): the triangle's index and
+/// window coordinates as in [`SetupCommand`], and its [`TexValues`]. Packed layout (409 bits, LSB
+/// first): `index` 15:0, `x0 y0 x1 y1 x2 y2` 111:16, `values` 408:112.
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct TexSetupCommand {
+    pub index: Bits<16>,
+    pub x0: Bits<16>,
+    pub y0: Bits<16>,
+    pub x1: Bits<16>,
+    pub y1: Bits<16>,
+    pub x2: Bits<16>,
+    pub y2: Bits<16>,
+    pub values: TexValues,
 }
 
 /// Width of a packed [`TexSetupCommand`].
@@ -206,6 +215,7 @@ mod tests {
         assert_eq!(SetupCommand::BITS, SETUP_COMMAND_BITS);
         assert_eq!(TdbtRecord::BITS, TDBT_RECORD_BITS);
         assert_eq!(TexSetupCommand::BITS, TEX_SETUP_COMMAND_BITS);
+        assert_eq!(TexValues::BITS, TEX_VALUES_BITS);
         let r = TdbsRecord { material: 0xabcd.into(), ..Default::default() };
         let b: Bits<TDBS_RECORD_BITS> = r.into();
         assert_eq!(b.get_bits::<16>(408).to_u64(), 0xabcd);

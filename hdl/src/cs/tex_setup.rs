@@ -28,7 +28,7 @@
 
 use crate::common::{signed_bit_cast_safe, MulS, StreamIn};
 use crate::cs::plane_round::PlaneRoundWide;
-use crate::cs::{TdbtRecord, TexSetupCommand};
+use crate::cs::{TdbtRecord, TexSetupCommand, TexValues};
 use crate::rc::reciprocal::Reciprocal;
 use rust_hdl::prelude::*;
 
@@ -123,6 +123,7 @@ pub struct TexSetup {
     ey10: Signal<Local, Signed<18>>,
     ex20: Signal<Local, Signed<18>>,
     ey20: Signal<Local, Signed<18>>,
+    vals4: Signal<Local, TexValues>,
     vs0: Signal<Local, Bits<33>>,
     vs1: Signal<Local, Bits<33>>,
     vs2: Signal<Local, Bits<33>>,
@@ -254,6 +255,7 @@ impl Default for TexSetup {
             ey10: Default::default(),
             ex20: Default::default(),
             ey20: Default::default(),
+            vals4: Default::default(),
             vs0: Default::default(),
             vs1: Default::default(),
             vs2: Default::default(),
@@ -511,18 +513,19 @@ impl Logic for TexSetup {
         self.dy10.next = signed_bit_cast_safe::<18, 16>(self.gy1.val()) - signed_bit_cast_safe::<18, 16>(self.gy0.val());
         self.dx20.next = signed_bit_cast_safe::<18, 16>(self.gx2.val()) - signed_bit_cast_safe::<18, 16>(self.gx0.val());
         self.dy20.next = signed_bit_cast_safe::<18, 16>(self.gy2.val()) - signed_bit_cast_safe::<18, 16>(self.gy0.val());
-        self.vs0.next = self.cmd4.q.val().v0s;
-        self.vs1.next = self.cmd4.q.val().v1s;
-        self.vs2.next = self.cmd4.q.val().v2s;
+        self.vals4.next = self.cmd4.q.val().values;
+        self.vs0.next = self.vals4.val().v0s;
+        self.vs1.next = self.vals4.val().v1s;
+        self.vs2.next = self.vals4.val().v2s;
         if self.tok.q.val().get_bit(13) {
-            self.vs0.next = self.cmd4.q.val().v0t;
-            self.vs1.next = self.cmd4.q.val().v1t;
-            self.vs2.next = self.cmd4.q.val().v2t;
+            self.vs0.next = self.vals4.val().v0t;
+            self.vs1.next = self.vals4.val().v1t;
+            self.vs2.next = self.vals4.val().v2t;
         }
         if self.tok.q.val().get_bit(14) {
-            self.vs0.next = self.cmd4.q.val().v0q;
-            self.vs1.next = self.cmd4.q.val().v1q;
-            self.vs2.next = self.cmd4.q.val().v2q;
+            self.vs0.next = self.vals4.val().v0q;
+            self.vs1.next = self.vals4.val().v1q;
+            self.vs2.next = self.vals4.val().v2q;
         }
         self.sv0.next = signed_cast(self.vs0.val());
         self.sv1.next = signed_cast(self.vs1.val());

@@ -13,26 +13,8 @@
 use crate::common::StreamIn;
 use crate::cs::colour_setup::ColourSetup;
 use crate::cs::tex_setup::TexSetup;
-use crate::cs::{SetupCommand, TdbsRecord, TdbtRecord};
+use crate::cs::{SetupCommand, TdbsRecord, TdbtRecord, TexValues};
 use rust_hdl::prelude::*;
-
-/// The texture values of a command's three vertices (s/w, t/w, 1/w; 33-bit two's complement).
-/// Packed layout (297 bits, LSB first): `v0s v0t v0q v1s v1t v1q v2s v2t v2q`.
-#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
-pub struct TexValues {
-    pub v0s: Bits<33>,
-    pub v0t: Bits<33>,
-    pub v0q: Bits<33>,
-    pub v1s: Bits<33>,
-    pub v1t: Bits<33>,
-    pub v1q: Bits<33>,
-    pub v2s: Bits<33>,
-    pub v2t: Bits<33>,
-    pub v2q: Bits<33>,
-}
-
-/// Width of a packed [`TexValues`].
-pub const TEX_VALUES_BITS: usize = 297;
 
 #[derive(LogicBlock, Default)]
 pub struct TexturedSetup {
@@ -68,15 +50,7 @@ impl Logic for TexturedSetup {
         self.texture.cmd.data.next.y1 = self.cmd.data.val().y1;
         self.texture.cmd.data.next.x2 = self.cmd.data.val().x2;
         self.texture.cmd.data.next.y2 = self.cmd.data.val().y2;
-        self.texture.cmd.data.next.v0s = self.tex.val().v0s;
-        self.texture.cmd.data.next.v0t = self.tex.val().v0t;
-        self.texture.cmd.data.next.v0q = self.tex.val().v0q;
-        self.texture.cmd.data.next.v1s = self.tex.val().v1s;
-        self.texture.cmd.data.next.v1t = self.tex.val().v1t;
-        self.texture.cmd.data.next.v1q = self.tex.val().v1q;
-        self.texture.cmd.data.next.v2s = self.tex.val().v2s;
-        self.texture.cmd.data.next.v2t = self.tex.val().v2t;
-        self.texture.cmd.data.next.v2q = self.tex.val().v2q;
+        self.texture.cmd.data.next.values = self.tex.val();
         // The two ready signals are equal (one handshake rule); taking both keeps that visible.
         self.cmd.ready.next = self.colour.cmd.ready.val() & self.texture.cmd.ready.val();
         self.tdbs_write_enable.next = self.colour.tdbs_write_enable.val();
@@ -94,16 +68,4 @@ pub fn verilog() -> Result<String, String> {
     let mut uut = TexturedSetup::default();
     uut.connect_all();
     crate::common::verilog_named(&uut, "textured_setup")
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_texture_values_pack_to_the_documented_width() {
-        assert_eq!(TexValues::BITS, TEX_VALUES_BITS);
-        let b: Bits<TEX_VALUES_BITS> = TexValues { v2q: 1.into(), ..Default::default() }.into();
-        assert!(b.get_bit(264));
-    }
 }

@@ -7,7 +7,7 @@ use golden::format::Plane;
 use golden::shade::TdbsEntry;
 use hdl::common::{from_i64, to_i64};
 use golden::texcoord::TexPlanes;
-use hdl::cs::{SetupCommand, TdbsRecord, TdbtRecord, TexSetupCommand};
+use hdl::cs::{SetupCommand, TdbsRecord, TdbtRecord, TexSetupCommand, TexValues};
 use rust_hdl::prelude::*;
 
 fn bits_of<const N: usize>(v: i64) -> Bits<N> {
@@ -84,10 +84,15 @@ pub fn tex_planes_of(r: &TdbtRecord) -> TexPlanes {
     }
 }
 
+/// Texture values as the RTL's port word.
+pub fn tex_values_of(v: &[[i64; 3]; 3]) -> TexValues {
+    let b = |k: usize, ch: usize| -> Bits<33> { bits_of(v[k][ch]) };
+    TexValues { v0s: b(0, 0), v0t: b(0, 1), v0q: b(0, 2), v1s: b(1, 0), v1t: b(1, 1), v1q: b(1, 2), v2s: b(2, 0), v2t: b(2, 1), v2q: b(2, 2) }
+}
+
 /// A texture-setup command as the RTL's stream word.
 pub fn tex_command_of(c: &TexSetupCmd) -> TexSetupCommand {
     let s = |v: i16| -> Bits<16> { (v as u16 as u64).into() };
-    let v = |k: usize, ch: usize| -> Bits<33> { bits_of(c.values[k][ch]) };
     TexSetupCommand {
         index: (c.index as u64).into(),
         x0: s(c.x[0]),
@@ -96,15 +101,7 @@ pub fn tex_command_of(c: &TexSetupCmd) -> TexSetupCommand {
         y1: s(c.y[1]),
         x2: s(c.x[2]),
         y2: s(c.y[2]),
-        v0s: v(0, 0),
-        v0t: v(0, 1),
-        v0q: v(0, 2),
-        v1s: v(1, 0),
-        v1t: v(1, 1),
-        v1q: v(1, 2),
-        v2s: v(2, 0),
-        v2t: v(2, 1),
-        v2q: v(2, 2),
+        values: tex_values_of(&c.values),
     }
 }
 

@@ -5,11 +5,11 @@
 //! Verilog replay.
 
 use crate::common::{vcd_path, vcd_wanted, Rng, Trace, Watchdog};
-use crate::cs::pack::{command_of, entry_of, tex_planes_of, BitVector};
+use crate::cs::pack::{command_of, entry_of, tex_planes_of, tex_values_of, BitVector};
 use crate::cs::replay::{port, PortSpec, Recording};
 use golden::cycle::colour_setup::{SetupCmd, SetupOutputs, SETUP_LATENCY};
 use golden::cycle::tex_setup::{TexSetupOutputs, TexturedSetupModel};
-use hdl::cs::textured_setup::{TexValues, TexturedSetup};
+use hdl::cs::textured_setup::TexturedSetup;
 use rust_hdl::prelude::*;
 
 /// A command and its texture values.
@@ -18,7 +18,7 @@ pub type Command = (SetupCmd, [[i64; 3]; 3]);
 /// Ports of the `textured_setup` top in the replay's order.
 pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
     (
-        vec![port("cmd$valid", 1), port("cmd$data", hdl::cs::SETUP_COMMAND_BITS), port("tex", hdl::cs::textured_setup::TEX_VALUES_BITS)],
+        vec![port("cmd$valid", 1), port("cmd$data", hdl::cs::SETUP_COMMAND_BITS), port("tex", hdl::cs::TEX_VALUES_BITS)],
         vec![
             port("cmd$ready", 1),
             port("busy", 1),
@@ -30,11 +30,6 @@ pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
             port("tdbt_write_data", hdl::cs::TDBT_RECORD_BITS),
         ],
     )
-}
-
-fn tex_values(v: &[[i64; 3]; 3]) -> TexValues {
-    let b = |x: i64| -> Bits<33> { unsigned_cast(hdl::common::from_i64::<33>(x)) };
-    TexValues { v0s: b(v[0][0]), v0t: b(v[0][1]), v0q: b(v[0][2]), v1s: b(v[1][0]), v1t: b(v[1][1]), v1q: b(v[1][2]), v2s: b(v[2][0]), v2t: b(v[2][1]), v2q: b(v[2][2]) }
 }
 
 /// This cycle's ports, as (name, value): the model's and the RTL's are compared by these strings.
@@ -104,7 +99,7 @@ pub fn run(test: &str, cmds: &[Command], gap_percent: u64, seed: u64, record: bo
         let (c, v) = offer.copied().unwrap_or_default();
         uut.cmd.valid.next = presenting;
         uut.cmd.data.next = command_of(&c);
-        uut.tex.next = tex_values(&v);
+        uut.tex.next = tex_values_of(&v);
         uut.clock.next = false.into();
         if !simulate(&mut uut, 200) {
             return Err(format!("textured_setup did not settle in cycle {cycle}"));
@@ -209,18 +204,18 @@ mod tests {
     }
 
     #[test]
-    fn the_textured_setup_verilog_replays_the_vectors_and_a_swapped_texture_value_is_caught() {
-        if !require_tools("the_textured_setup_verilog_replays_the_vectors_and_a_swapped_texture_value_is_caught", &["iverilog"]) {
+    fn the_textured_setup_verilog_replays_the_vectors_and_a_miswired_coordinate_is_caught() {
+        if !require_tools("the_textured_setup_verilog_replays_the_vectors_and_a_miswired_coordinate_is_caught", &["iverilog"]) {
             return;
         }
         let rec = run("textured_setup_replay", &random(120, 0x7E57), 30, 1, true).unwrap().recording.unwrap();
         let v = hdl::cs::textured_setup::verilog().unwrap();
         let r = replay_iverilog(&v, "textured_setup", &rec, &scratch_dir("cs/textured_setup_replay")).unwrap();
         println!("textured_setup Verilog (iverilog): {} cycles replayed in {:.2} s, 0 mismatches", r.cycles, r.seconds);
-        // Vertex 1's t/w wired from vertex 1's s/w: the replay must fail on TdbT.
-        let wire = "texture$cmd$data[(64'hf4)+:(33)] = tex[(64'h84)+:(33)];";
-        let swapped = "texture$cmd$data[(64'hf4)+:(33)] = tex[(64'h63)+:(33)];";
-        assert!(v.contains(wire), "the wiring of v1t (`{wire}`) is not in the Verilog");
+        // Texture setup's y1 wired from y2: the replay must fail on TdbT.
+        let wire = "texture$cmd$data[(64'h40)+:(16)] = cmd$data[(64'h40)+:(16)];";
+        let swapped = "texture$cmd$data[(64'h40)+:(16)] = cmd$data[(64'h60)+:(16)];";
+        assert!(v.contains(wire), "the wiring of y1 (`{wire}`) is not in the Verilog");
         let e = replay_iverilog(&v.replacen(wire, swapped, 1), "textured_setup", &rec, &scratch_dir("cs/textured_setup_replay_broken")).unwrap_err();
         assert!(e.contains("port tdbt_write_data"), "{e}");
     }
