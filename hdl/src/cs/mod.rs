@@ -33,6 +33,7 @@ pub mod modulate;
 pub mod normalizer;
 pub mod plane_mul;
 pub mod plane_round;
+pub mod scan_pipe;
 pub mod colour_setup;
 pub mod tex_coord;
 pub mod tex_lod;

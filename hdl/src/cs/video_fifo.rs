@@ -1,10 +1,11 @@
-//! `video_fifo`: the Color Shader's output FIFO, 32 entries of 26 bits (RGB888 + SOF + EOL), held in
-//! registers so that the head is on the output in the cycle after it was written (show-ahead).
+//! `video_fifo`: the Color Shader's output FIFO, 2^P entries of 26 bits (RGB888 + SOF + EOL), held in
+//! registers so that the head is on the output in the cycle after it was written (show-ahead). The
+//! untextured CS uses 32 entries ([`VideoFifo32`]), the textured one 64 ([`VideoFifo64`]).
 //!
 //! ```text
 //!               +---------------------+
 //!  write ------>|                     |---> read_valid   (not empty)
-//!  write_data ->|  32 x 26 registers  |---> read_data    (the head; 0 when empty)
+//!  write_data ->| 2^P x 26 registers  |---> read_data    (the head; 0 when empty)
 //!               |  wr_ptr rd_ptr count|<--- read         (pop the head if not empty)
 //!  clock ------>|                     |---> overflow     (sticky: a write while full was dropped)
 //!               +---------------------+
@@ -15,13 +16,18 @@
 
 use rust_hdl::prelude::*;
 
-/// Entries.
+/// Entries of the untextured CS's FIFO.
 pub const VIDEO_FIFO_DEPTH: usize = 32;
+/// The untextured CS's FIFO: 32 entries (5-bit pointers, 6-bit count).
+pub type VideoFifo32 = VideoFifo<5, 6>;
+/// The textured CS's FIFO: 64 entries.
+pub type VideoFifo64 = VideoFifo<6, 7>;
 /// Entry width: RGB888 (bits 23:0), SOF (24), EOL (25).
 pub const VIDEO_FIFO_BITS: usize = 26;
 
 #[derive(LogicBlock)]
-pub struct VideoFifo {
+/// `P`: pointer bits (2^P entries); `C` = P + 1: count bits.
+pub struct VideoFifo<const P: usize, const C: usize> {
     pub clock: Signal<In, Clock>,
     // From the producer
     /// Push `write_data` at the edge (dropped, and `overflow` set, if full).
@@ -37,22 +43,22 @@ pub struct VideoFifo {
     /// Sticky: some write found the FIFO full.
     pub overflow: Signal<Out, Bit>,
 
-    mem: [DFF<Bits<26>>; 32],
-    wr_ptr: DFF<Bits<5>>,
-    rd_ptr: DFF<Bits<5>>,
-    count: DFF<Bits<6>>,
+    mem: Vec<DFF<Bits<26>>>,
+    wr_ptr: DFF<Bits<P>>,
+    rd_ptr: DFF<Bits<P>>,
+    count: DFF<Bits<C>>,
     overflowed: DFF<Bit>,
     push: Signal<Local, Bit>,
     pop: Signal<Local, Bit>,
     full: Signal<Local, Bit>,
-    k0_6: Constant<Bits<6>>,
-    k1_6: Constant<Bits<6>>,
-    kdepth_6: Constant<Bits<6>>,
-    k1_5: Constant<Bits<5>>,
+    k0_c: Constant<Bits<C>>,
+    k1_c: Constant<Bits<C>>,
+    kdepth_c: Constant<Bits<C>>,
+    k1_p: Constant<Bits<P>>,
     k0_26: Constant<Bits<26>>,
 }
 
-impl Default for VideoFifo {
+impl<const P: usize, const C: usize> Default for VideoFifo<P, C> {
     fn default() -> Self {
         Self {
             clock: Default::default(),
@@ -62,7 +68,7 @@ impl Default for VideoFifo {
             read_data: Default::default(),
             read: Default::default(),
             overflow: Default::default(),
-            mem: Default::default(),
+            mem: (0..1usize << P).map(|_| Default::default()).collect(),
             wr_ptr: Default::default(),
             rd_ptr: Default::default(),
             count: Default::default(),
@@ -70,29 +76,29 @@ impl Default for VideoFifo {
             push: Default::default(),
             pop: Default::default(),
             full: Default::default(),
-            k0_6: Constant::new(0.into()),
-            k1_6: Constant::new(1.into()),
-            kdepth_6: Constant::new((VIDEO_FIFO_DEPTH as u64).into()),
-            k1_5: Constant::new(1.into()),
+            k0_c: Constant::new(0.into()),
+            k1_c: Constant::new(1.into()),
+            kdepth_c: Constant::new((1u64 << P).into()),
+            k1_p: Constant::new(1.into()),
             k0_26: Constant::new(0.into()),
         }
     }
 }
 
-impl Logic for VideoFifo {
+impl<const P: usize, const C: usize> Logic for VideoFifo<P, C> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, wr_ptr, rd_ptr, count, overflowed);
-        for i in 0..32 {
+        for i in 0..self.mem.len() {
             self.mem[i].clock.next = self.clock.val();
             self.mem[i].d.next = self.mem[i].q.val();
         }
-        self.full.next = self.count.q.val() == self.kdepth_6.val();
-        self.read_valid.next = self.count.q.val() != self.k0_6.val();
+        self.full.next = self.count.q.val() == self.kdepth_c.val();
+        self.read_valid.next = self.count.q.val() != self.k0_c.val();
         self.push.next = self.write.val() & !self.full.val();
         self.pop.next = self.read.val() & self.read_valid.val();
         self.read_data.next = self.k0_26.val();
-        for i in 0..32 {
+        for i in 0..self.mem.len() {
             if self.read_valid.val() & (self.rd_ptr.q.val().index() == i) {
                 self.read_data.next = self.mem[i].q.val();
             }
@@ -101,16 +107,16 @@ impl Logic for VideoFifo {
             }
         }
         if self.push.val() {
-            self.wr_ptr.d.next = self.wr_ptr.q.val() + self.k1_5.val();
+            self.wr_ptr.d.next = self.wr_ptr.q.val() + self.k1_p.val();
         }
         if self.pop.val() {
-            self.rd_ptr.d.next = self.rd_ptr.q.val() + self.k1_5.val();
+            self.rd_ptr.d.next = self.rd_ptr.q.val() + self.k1_p.val();
         }
         if self.push.val() & !self.pop.val() {
-            self.count.d.next = self.count.q.val() + self.k1_6.val();
+            self.count.d.next = self.count.q.val() + self.k1_c.val();
         }
         if !self.push.val() & self.pop.val() {
-            self.count.d.next = self.count.q.val() - self.k1_6.val();
+            self.count.d.next = self.count.q.val() - self.k1_c.val();
         }
         if self.write.val() & self.full.val() {
             self.overflowed.d.next = true;
@@ -126,17 +132,24 @@ mod tests {
 
     #[test]
     fn video_fifo_behaves_as_a_queue_under_random_pushes_and_pops() {
-        let mut uut = VideoFifo::default();
+        queue_test(VideoFifo32::default(), VIDEO_FIFO_DEPTH);
+        queue_test(VideoFifo64::default(), 64);
+    }
+
+    fn queue_test<const P: usize, const C: usize>(mut uut: VideoFifo<P, C>, depth: usize) {
         uut.connect_all();
         let mut q: VecDeque<u64> = VecDeque::new();
         let mut x = 0x1234_5678_9abc_def1u64;
         let mut next = 1u64;
+        let mut full_seen = false;
         for cycle in 0..5000 {
             x ^= x << 13;
             x ^= x >> 7;
             x ^= x << 17;
-            let write = x & 3 != 0 && q.len() < VIDEO_FIFO_DEPTH;
-            let read = (x >> 8) & 3 != 0;
+            let write = x & 3 != 0 && q.len() < depth;
+            // Reads are rare in the first 600 cycles of every 2000, so the queue fills up.
+            let read = if cycle % 2000 < 600 { (x >> 8) & 3 == 0 } else { (x >> 8) & 3 != 0 };
+            full_seen |= q.len() == depth;
             uut.write.next = write;
             uut.write_data.next = next.into();
             uut.read.next = read;
@@ -156,5 +169,6 @@ mod tests {
             assert!(simulate(&mut uut, 100));
         }
         assert!(!uut.overflow.val());
+        assert!(full_seen, "the {depth}-entry queue never filled");
     }
 }
