@@ -27,6 +27,7 @@
 //! behind ports, because they do not fit FPGA block RAM; the testbenches model them.
 
 pub mod color_shader;
+pub mod color_shader_tex;
 pub mod gloss_square;
 pub mod light_unit;
 pub mod modulate;

@@ -11,7 +11,11 @@ use crate::cs::pack::{record_of, tdata_of, BitVector};
 use crate::cs::replay::{port, PortSpec, Recording};
 use golden::cycle::color_shader::{ColorShaderModel, CsConfigWrite, CsInputs, CsMemories, CsOutputs, ReadPort, VideoBeat, WritePort};
 use hdl::cs::{LightVectors, MaterialWord};
+use golden::render::Texturing;
+use golden::texbank::{banks, layout, Footprint};
+use golden::texture::{Filter, Wrap};
 use hdl::cs::color_shader::ColorShader;
+use hdl::cs::color_shader_tex::ColorShaderTex;
 use rust_hdl::prelude::*;
 use std::path::PathBuf;
 
@@ -157,6 +161,7 @@ macro_rules! config_ports_of {
     };
 }
 config_ports_of!(ColorShader);
+config_ports_of!(ColorShaderTex);
 config_ports_of!(hdl::chipset::Chipset);
 config_ports_of!(hdl::chipset::chipset3::Chipset3);
 
@@ -226,58 +231,38 @@ fn out_vector(o: &CsOutputs) -> BitVector {
     v
 }
 
-fn rtl_outputs(u: &ColorShader) -> CsOutputs {
-    let t = u.video_tdata.val().to_u64() as u32;
-    CsOutputs {
-        busy: u.busy.val(),
-        size_error: u.size_error.val(),
-        ibuf_read: ReadPort { enable: u.ibuf_read_enable.val(), address: u.ibuf_read_address.val().to_u64() as u32 },
-        tdbs_read: ReadPort { enable: u.tdbs_read_enable.val(), address: u.tdbs_read_address.val().to_u64() as u32 },
-        ibuf_write: WritePort {
-            enable: u.ibuf_write_enable.val(),
-            address: u.ibuf_write_address.val().to_u64() as u32,
-            data: u.ibuf_write_data.val().to_u64() as u32,
-        },
-        zbuf_write: WritePort {
-            enable: u.zbuf_write_enable.val(),
-            address: u.zbuf_write_address.val().to_u64() as u32,
-            data: u.zbuf_write_data.val().to_u64() as u32,
-        },
-        video_tvalid: u.video_tvalid.val(),
-        video: VideoBeat { rgb: crate::cs::pack::rgb_of(t), sof: u.video_tuser.val(), eol: u.video_tlast.val() },
-        // The RTL has no TdbT or texture port yet; the bench's frames are untextured, where the model
-        // leaves them idle.
-        tdbt_read: Default::default(),
-        tex_banks: Default::default(),
-    }
-}
-
-/// Cycles in which the CS may do nothing at its ports (no memory access, no beat) before the bench
-/// stops it: its pipeline is a few stages deep, and a 95 % stalled video port still takes a beat
-/// within 1024 cycles with probability 1 - 1e-22.
-const PROGRESS_LIMIT: u64 = 1024;
-
-struct Rtl {
-    uut: ColorShader,
-    trace: Trace,
-}
-
-impl Rtl {
-    fn new(vcd: Option<&PathBuf>) -> Result<Rtl, String> {
-        let mut uut = ColorShader::default();
-        uut.connect_all();
-        check_all(&uut).map_err(|e| format!("cs design check: {e:?}"))?;
-        let trace = Trace::new(&uut, vcd.map(PathBuf::as_path))?;
-        Ok(Rtl { uut, trace })
-    }
-    fn settle(&mut self, t: u64) -> Result<(), String> {
-        if !simulate(&mut self.uut, 200) {
-            return Err(format!("cs did not settle at time {t}"));
+/// The output ports both CS tops share.
+macro_rules! cs_outputs {
+    ($u:expr) => {{
+        let u = $u;
+        let t = u.video_tdata.val().to_u64() as u32;
+        CsOutputs {
+            busy: u.busy.val(),
+            size_error: u.size_error.val(),
+            ibuf_read: ReadPort { enable: u.ibuf_read_enable.val(), address: u.ibuf_read_address.val().to_u64() as u32 },
+            tdbs_read: ReadPort { enable: u.tdbs_read_enable.val(), address: u.tdbs_read_address.val().to_u64() as u32 },
+            ibuf_write: WritePort {
+                enable: u.ibuf_write_enable.val(),
+                address: u.ibuf_write_address.val().to_u64() as u32,
+                data: u.ibuf_write_data.val().to_u64() as u32,
+            },
+            zbuf_write: WritePort {
+                enable: u.zbuf_write_enable.val(),
+                address: u.zbuf_write_address.val().to_u64() as u32,
+                data: u.zbuf_write_data.val().to_u64() as u32,
+            },
+            video_tvalid: u.video_tvalid.val(),
+            video: VideoBeat { rgb: crate::cs::pack::rgb_of(t), sof: u.video_tuser.val(), eol: u.video_tlast.val() },
+            tdbt_read: Default::default(),
+            tex_banks: Default::default(),
         }
-        self.trace.dump(&self.uut, t)
-    }
-    fn cycle(&mut self, cycle: u64, i: &CsInputs) -> Result<CsOutputs, String> {
-        let u = &mut self.uut;
+    }};
+}
+
+/// The input ports both CS tops share.
+macro_rules! drive_cs_inputs {
+    ($u:expr, $i:expr) => {{
+        let (u, i) = ($u, $i);
         u.start.next = i.start;
         u.width.next = (i.width as u64 & 0x7ff).into();
         u.height.next = (i.height as u64 & 0x7ff).into();
@@ -288,14 +273,138 @@ impl Rtl {
         u.ibuf_read_data.next = (i.ibuf_read_data as u64).into();
         u.tdbs_read_data.next = record_of(&i.tdbs_read_data);
         u.video_tready.next = i.video_tready;
-        u.clock.next = false.into();
+    }};
+}
+
+/// What a textured CS's texture ports get in a cycle (besides [`CsInputs`]).
+#[derive(Clone, Debug, Default)]
+pub struct TexInputs {
+    pub enable: bool,
+    pub w0_log2: u32,
+    pub h0_log2: u32,
+    pub last_level: u32,
+    /// 0 nearest, 1 bilinear, 2 trilinear.
+    pub filter: u64,
+    pub clamp: bool,
+    /// A level-table write: (level, its first word).
+    pub base: Option<(u32, u32)>,
+    /// The four banks' read data (latency 1).
+    pub data: [u64; 4],
+}
+
+/// A CS top the bench can drive: `cs` or `cs_tex`.
+pub trait CsUut: Block + Default {
+    /// The top's name (the VCD directory, messages).
+    const NAME: &'static str;
+    fn drive(&mut self, i: &CsInputs, tex: &TexInputs);
+    fn outputs(&self) -> CsOutputs;
+    fn set_clock(&mut self, c: bool);
+}
+
+impl CsUut for ColorShader {
+    const NAME: &'static str = "cs";
+    fn drive(&mut self, i: &CsInputs, _tex: &TexInputs) {
+        drive_cs_inputs!(self, i);
+    }
+    fn outputs(&self) -> CsOutputs {
+        // No TdbT or texture port: the model leaves them idle in untextured frames, the only ones a
+        // `cs` run has.
+        cs_outputs!(self)
+    }
+    fn set_clock(&mut self, c: bool) {
+        self.clock.next = c.into();
+    }
+}
+
+impl CsUut for ColorShaderTex {
+    const NAME: &'static str = "cs_tex";
+    fn drive(&mut self, i: &CsInputs, tex: &TexInputs) {
+        drive_cs_inputs!(&mut *self, i);
+        self.tdbt_read_data.next = crate::cs::pack::tdbt_record_of(&i.tdbt_read_data);
+        self.texture_enable.next = tex.enable;
+        self.tex_w0_log2.next = (tex.w0_log2 as u64).into();
+        self.tex_h0_log2.next = (tex.h0_log2 as u64).into();
+        self.tex_last_level.next = (tex.last_level as u64).into();
+        self.tex_filter.next = tex.filter.into();
+        self.tex_clamp.next = tex.clamp;
+        let (sel, base) = tex.base.unwrap_or((0, 0));
+        self.tex_base_we.next = tex.base.is_some();
+        self.tex_base_sel.next = (sel as u64).into();
+        self.tex_base_data.next = (base as u64).into();
+        self.tex_data0.next = tex.data[0].into();
+        self.tex_data1.next = tex.data[1].into();
+        self.tex_data2.next = tex.data[2].into();
+        self.tex_data3.next = tex.data[3].into();
+    }
+    fn outputs(&self) -> CsOutputs {
+        let mut o = cs_outputs!(self);
+        o.tdbt_read = ReadPort { enable: self.tdbt_read_enable.val(), address: self.tdbt_read_address.val().to_u64() as u32 };
+        let rd = self.tex_rd.val().to_u64();
+        o.tex_banks.read = [0, 1, 2, 3].map(|k| rd >> k & 1 == 1);
+        o.tex_banks.addr = [&self.tex_addr0, &self.tex_addr1, &self.tex_addr2, &self.tex_addr3].map(|a| a.val().to_u64() as u32);
+        o
+    }
+    fn set_clock(&mut self, c: bool) {
+        self.clock.next = c.into();
+    }
+}
+
+/// Cycles in which the CS may do nothing at its ports (no memory access, no beat) before the bench
+/// stops it: its pipeline is a few stages deep, and a 95 % stalled video port still takes a beat
+/// within 1024 cycles with probability 1 - 1e-22.
+const PROGRESS_LIMIT: u64 = 1024;
+
+struct Rtl<U: CsUut> {
+    uut: U,
+    trace: Trace,
+}
+
+impl<U: CsUut> Rtl<U> {
+    fn new(vcd: Option<&PathBuf>) -> Result<Rtl<U>, String> {
+        let mut uut = U::default();
+        uut.connect_all();
+        check_all(&uut).map_err(|e| format!("{} design check: {e:?}", U::NAME))?;
+        let trace = Trace::new(&uut, vcd.map(PathBuf::as_path))?;
+        Ok(Rtl { uut, trace })
+    }
+    fn settle(&mut self, t: u64) -> Result<(), String> {
+        if !simulate(&mut self.uut, 200) {
+            return Err(format!("{} did not settle at time {t}", U::NAME));
+        }
+        self.trace.dump(&self.uut, t)
+    }
+    fn cycle(&mut self, cycle: u64, i: &CsInputs, tex: &TexInputs) -> Result<CsOutputs, String> {
+        self.uut.drive(i, tex);
+        self.uut.set_clock(false);
         self.settle(cycle * 10)?;
-        Ok(rtl_outputs(&self.uut))
+        Ok(self.uut.outputs())
     }
     fn rising_edge(&mut self, cycle: u64) -> Result<(), String> {
-        self.uut.clock.next = true.into();
+        self.uut.set_clock(true);
         self.settle(cycle * 10 + 5)
     }
+}
+
+/// A textured run: the texture, and per frame whether it is textured.
+#[derive(Clone, Debug)]
+pub struct TexRun {
+    pub texturing: Texturing,
+    pub textured: Vec<bool>,
+}
+
+/// The texture ports that are not in [`port_values`]: (name, value, width).
+fn tex_port_values(o: &CsOutputs) -> [(&'static str, u64, usize); 7] {
+    let rd = (0..4).map(|k| (o.tex_banks.read[k] as u64) << k).sum::<u64>();
+    let a = |k: usize| o.tex_banks.addr[k] as u64;
+    [
+        ("tdbt_read_enable", o.tdbt_read.enable as u64, 1),
+        ("tdbt_read_address", o.tdbt_read.address as u64, 16),
+        ("tex_rd", rd, 4),
+        ("tex_addr0", a(0), 20),
+        ("tex_addr1", a(1), 20),
+        ("tex_addr2", a(2), 20),
+        ("tex_addr3", a(3), 20),
+    ]
 }
 
 enum Stop {
@@ -303,18 +412,44 @@ enum Stop {
     Error(String),
 }
 
-fn run_inner(
+#[allow(clippy::too_many_arguments)]
+fn run_inner<U: CsUut>(
     mem: &mut CsMemories,
     frames: &[FrameSpec],
     config: &[CsConfigWrite],
+    tex: Option<&TexRun>,
     drive: CsDrive,
     with_rtl: bool,
     vcd: Option<&PathBuf>,
     record: bool,
 ) -> Result<CsRun, Stop> {
     let mut rng = Rng::new(drive.seed);
+    let mut noise = Rng::new(drive.seed ^ 0x7E47);
     let mut model = ColorShaderModel::new();
-    let mut rtl = if with_rtl { Some(Rtl::new(vcd).map_err(Stop::Error)?) } else { None };
+    let mut rtl = if with_rtl { Some(Rtl::<U>::new(vcd).map_err(Stop::Error)?) } else { None };
+    // The texture: its level table (written in the first cycles, beside the constants), its banks
+    // and settings; the banks answer the last cycle's footprint.
+    let geoms = tex.map_or(Vec::new(), |t| layout(&t.texturing.texture));
+    let banks = tex.map(|t| banks(&t.texturing.texture));
+    let mut footprint = Footprint::default();
+    let settings = |on: bool| -> TexInputs {
+        match tex {
+            Some(t) => TexInputs {
+                enable: on,
+                w0_log2: geoms[0].w_log2,
+                h0_log2: geoms[0].h_log2,
+                last_level: geoms.len() as u32 - 1,
+                filter: match t.texturing.filter {
+                    Filter::Nearest => 0,
+                    Filter::Bilinear => 1,
+                    Filter::Trilinear => 2,
+                },
+                clamp: t.texturing.wrap == Wrap::ClampToEdge,
+                ..Default::default()
+            },
+            None => TexInputs::default(),
+        }
+    };
     let mut rec = if record {
         let (i, o) = replay_ports();
         Some(Recording::new(i, o))
@@ -342,8 +477,10 @@ fn run_inner(
         let spec = frames.get(next).copied();
         // The Phong constants go in first, one write per cycle, while the CS is idle.
         let cfg = config.get(cycle as usize).copied();
+        let base = geoms.get(cycle as usize).map(|g| (cycle as u32, g.base));
+        let textured = tex.is_some_and(|t| t.textured.get(next).copied().unwrap_or(false));
         let start = match spec {
-            _ if cfg.is_some() => false,
+            _ if cfg.is_some() || base.is_some() => false,
             Some(_) if !busy => idle == 0,
             _ => busy && drive.start_while_busy_percent > 0 && rng.chance(drive.start_while_busy_percent),
         };
@@ -357,17 +494,32 @@ fn run_inner(
             clear_behind: if busy { rng.chance(50) } else { s.clear_behind },
             ibuf_read_data,
             tdbs_read_data,
-            tdbt_read_data: Default::default(),
+            tdbt_read_data: mem.tdbt_data(),
             video_tready: !rng.chance(drive.stall_percent),
             shading_phong: if busy { rng.chance(50) } else { s.phong },
             config: cfg,
         };
+        // The model takes the texture with the start of a textured frame; the RTL its settings, held
+        // (random while busy: they are latched at start).
+        if !busy {
+            model.set_texturing(tex.filter(|_| textured).map(|t| t.texturing.clone()));
+        }
+        let mut tin = settings(if busy { rng.chance(50) } else { textured });
+        tin.base = base;
+        for (k, d) in tin.data.iter_mut().enumerate() {
+            *d = match &banks {
+                Some(b) if footprint.read[k] => tdata_of(b[k][footprint.addr[k] as usize]) as u64,
+                _ => noise.next_u64() & 0xff_ffff,
+            };
+        }
         let expected = model.step(&inp);
+        footprint = expected.tex_banks;
         if let Some(r) = rtl.as_mut() {
-            let actual = r.cycle(cycle, &inp).map_err(Stop::Error)?;
-            for ((p, e, _), (_, a, _)) in port_values(&expected).iter().zip(port_values(&actual).iter()) {
+            let actual = r.cycle(cycle, &inp, &tin).map_err(Stop::Error)?;
+            let (e_all, a_all) = (port_values(&expected).into_iter().chain(tex_port_values(&expected)), port_values(&actual).into_iter().chain(tex_port_values(&actual)));
+            for ((p, e, _), (_, a, _)) in e_all.zip(a_all) {
                 if e != a {
-                    return Err(Stop::Mismatch(cycle, p, *e, *a));
+                    return Err(Stop::Mismatch(cycle, p, e, a));
                 }
             }
             r.rising_edge(cycle).map_err(Stop::Error)?;
@@ -400,6 +552,7 @@ fn run_inner(
         // the driver itself waiting between frames.
         let progress = (start && !busy)
             || cfg.is_some()
+            || base.is_some()
             || expected.ibuf_read.enable
             || expected.tdbs_read.enable
             || expected.ibuf_write.enable
@@ -429,7 +582,7 @@ fn run_inner(
 
 /// The cycle model alone.
 pub fn run_model(mem: &mut CsMemories, frames: &[FrameSpec], config: &[CsConfigWrite], drive: CsDrive) -> Result<CsRun, String> {
-    run_inner(mem, frames, config, drive, false, None, false).map_err(|s| match s {
+    run_inner::<ColorShader>(mem, frames, config, None, drive, false, None, false).map_err(|s| match s {
         Stop::Error(e) => e,
         Stop::Mismatch(..) => unreachable!(),
     })
@@ -446,17 +599,43 @@ pub fn run_rtl_vs_model(
     drive: CsDrive,
     record: bool,
 ) -> Result<CsRun, String> {
-    let path = vcd_path("cs", test);
+    run_top::<ColorShader>(test, mem, frames, config, None, drive, record)
+}
+
+/// [`run_rtl_vs_model`] for the textured CS (`cs_tex`): `tex` gives the texture and which frames use
+/// it (`mem` holds their TdbT); its level table is written before the first frame.
+pub fn run_tex_rtl_vs_model(
+    test: &str,
+    mem: &mut CsMemories,
+    frames: &[FrameSpec],
+    config: &[CsConfigWrite],
+    tex: &TexRun,
+    drive: CsDrive,
+) -> Result<CsRun, String> {
+    run_top::<ColorShaderTex>(test, mem, frames, config, Some(tex), drive, false)
+}
+
+fn run_top<U: CsUut>(
+    test: &str,
+    mem: &mut CsMemories,
+    frames: &[FrameSpec],
+    config: &[CsConfigWrite],
+    tex: Option<&TexRun>,
+    drive: CsDrive,
+    record: bool,
+) -> Result<CsRun, String> {
+    let path = vcd_path(U::NAME, test);
     let vcd = if vcd_wanted() { Some(&path) } else { None };
     let start_mem = mem.clone();
-    match run_inner(mem, frames, config, drive, true, vcd, record) {
+    match run_inner::<U>(mem, frames, config, tex, drive, true, vcd, record) {
         Ok(r) => Ok(r),
         Err(Stop::Error(e)) => Err(e),
         Err(Stop::Mismatch(cycle, port, e, a)) => {
             let mut again = start_mem;
-            let _ = run_inner(&mut again, frames, config, drive, true, Some(&path), false);
+            let _ = run_inner::<U>(&mut again, frames, config, tex, drive, true, Some(&path), false);
             Err(format!(
-                "cs differs from its cycle model in cycle {cycle} (seed {}), port {port}: expected {e:#x}, actual {a:#x}\n  VCD: {}",
+                "{} differs from its cycle model in cycle {cycle} (seed {}), port {port}: expected {e:#x}, actual {a:#x}\n  VCD: {}",
+                U::NAME,
                 drive.seed,
                 path.display()
             ))

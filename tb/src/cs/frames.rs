@@ -6,7 +6,7 @@ use golden::cycle::color_shader::CsMemories;
 use golden::format::Screen;
 use golden::host::Camera;
 use golden::raster::{CullMode, FrontFace};
-use golden::render::{render_with, Frame, GoldenChipset, RenderOptions};
+use golden::render::{render_with, Frame, GoldenChipset, RenderOptions, Texturing};
 use golden::scene::{builtin, Winding};
 use golden::shade::{PhongLights, Shading};
 
@@ -29,6 +29,24 @@ impl RecordedFrame {
         let ibuf = self.frame.hw_index.iter().map(|&i| i as u16).collect();
         CsMemories::new(ibuf, self.frame.zbuf.clone(), self.chip.tdbs.clone())
     }
+
+    /// The same with the TdbT of a textured frame (records of untextured triangles are 0).
+    pub fn textured_memories(&self) -> CsMemories {
+        let tdbt = self.chip.tdbt.iter().map(|t| t.unwrap_or_default()).collect();
+        self.memories().with_tdbt(tdbt)
+    }
+}
+
+/// The textured built-in scene (teapot-floor) rendered with `texturing` at `width` x `height`.
+pub fn record_textured(shading: Shading, texturing: &Texturing, width: u32, height: u32) -> Result<RecordedFrame, String> {
+    let mesh = builtin::teapot_floor();
+    let screen = Screen::new(width, height)?;
+    let background = [24, 24, 40];
+    let opts = RenderOptions { texturing: Some(texturing.clone()), background, ..RenderOptions::for_scene(&mesh, screen, shading) };
+    let mut chip = GoldenChipset::new(screen);
+    let frame = render_with(&mesh, &opts, &mut chip)?;
+    let lights = PhongLights::new(&opts.lighting, &mesh.materials);
+    Ok(RecordedFrame { frame, chip, background, lights })
 }
 
 /// Render built-in scene `name` (the teapot at grid 6 to keep benches short) at `width` x `height`.

@@ -75,6 +75,21 @@ pub fn command_of(c: &SetupCmd) -> SetupCommand {
     }
 }
 
+/// Golden texture planes as the RTL's TdbT record.
+pub fn tdbt_record_of(t: &TexPlanes) -> TdbtRecord {
+    TdbtRecord {
+        s_a: bits_of(t.sw.a),
+        s_b: bits_of(t.sw.b),
+        s_c: bits_of(t.sw.c),
+        t_a: bits_of(t.tw.a),
+        t_b: bits_of(t.tw.b),
+        t_c: bits_of(t.tw.c),
+        q_a: bits_of(t.q.a),
+        q_b: bits_of(t.q.b),
+        q_c: bits_of(t.q.c),
+    }
+}
+
 /// The RTL's TdbT record as golden texture planes.
 pub fn tex_planes_of(r: &TdbtRecord) -> TexPlanes {
     TexPlanes {
@@ -266,11 +281,7 @@ mod tests {
             tw: Plane { a: 12345, b: -6789, c: (1 << 55) - 1 },
             q: Plane { a: -1, b: 0, c: 255 << 16 },
         };
-        let r = TdbtRecord {
-            s_a: bits_of(t.sw.a), s_b: bits_of(t.sw.b), s_c: bits_of(t.sw.c),
-            t_a: bits_of(t.tw.a), t_b: bits_of(t.tw.b), t_c: bits_of(t.tw.c),
-            q_a: bits_of(t.q.a), q_b: bits_of(t.q.b), q_c: bits_of(t.q.c),
-        };
+        let r = tdbt_record_of(&t);
         assert_eq!(tex_planes_of(&r), t);
         let packed: Bits<408> = r.into();
         let mut v = BitVector::default();

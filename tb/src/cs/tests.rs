@@ -312,3 +312,53 @@ fn a_cs_run_that_stops_making_progress_ends_at_once_naming_the_phase_and_the_wav
     assert!(e.contains("cycle 10"), "stopped late: {e}");
     assert!(e.contains("waveform"), "{e}");
 }
+
+/// The built-in checker with `filter` and `wrap`, perspective-correct.
+fn checker_texturing(filter: golden::texture::Filter, wrap: golden::texture::Wrap) -> golden::render::Texturing {
+    golden::render::Texturing {
+        texture: std::sync::Arc::new(golden::texture::checker()),
+        source: "built-in checker".into(),
+        filter,
+        coords: golden::texcoord::Coords::Perspective,
+        wrap,
+    }
+}
+
+#[test]
+fn cs_tex_matches_its_cycle_model_every_cycle_on_textured_and_untextured_frames_under_back_pressure() {
+    use golden::texture::{Filter, Wrap};
+    let seed = seed_for("cs_tex", 17);
+    let (w, h) = (64, 40);
+    for (filter, wrap, shading) in [
+        (Filter::Nearest, Wrap::ClampToEdge, Shading::Gouraud),
+        (Filter::Bilinear, Wrap::Repeat, Shading::Phong),
+        (Filter::Trilinear, Wrap::Repeat, Shading::Gouraud),
+    ] {
+        let tx = checker_texturing(filter, wrap);
+        let f = super::frames::record_textured(shading, &tx, w, h).unwrap();
+        let mut mem = f.textured_memories();
+        let reference = mem.clone();
+        let is_phong = shading == Shading::Phong;
+        let config = if is_phong { phong_config(&f.lights).unwrap() } else { Vec::new() };
+        let spec = FrameSpec { width: w, height: h, background: f.background, clear_behind: false, phong: is_phong };
+        // Textured, untextured (the same memories, scanned as `cs` would), textured again.
+        let tex = csb::TexRun { texturing: tx, textured: vec![true, false, true] };
+        let drive = CsDrive { stall_percent: 30, start_while_busy_percent: 10, max_idle: 3, seed };
+        let test = format!("cs_tex_{filter:?}_{shading:?}").to_lowercase();
+        let run = csb::run_tex_rtl_vs_model(&test, &mut mem, &[spec; 3], &config, &tex, drive).unwrap();
+        assert_eq!(run.frames.len(), 3);
+        for k in [0, 2] {
+            let img = csb::frame_image(&run.frames[k], w, h).unwrap();
+            assert!(img == f.frame.rgb, "{filter:?} {shading:?}: textured frame {k} differs from golden");
+        }
+        if !is_phong {
+            let img = csb::frame_image(&run.frames[1], w, h).unwrap();
+            for (i, px) in img.chunks(3).enumerate() {
+                let idx = reference.ibuf[i];
+                let want = golden::cycle::color_shader::pixel_colour(idx, &reference.tdbs[idx as usize], i as u32 % w, i as u32 / w, f.background);
+                assert_eq!(px, want, "{filter:?}: untextured frame, pixel {i}");
+            }
+        }
+        println!("cs_tex {filter:?} {wrap:?} {shading:?}: {} cycles, RustHDL {:.0} cycles/s", run.cycles, run.rtl_cycles_per_second);
+    }
+}
