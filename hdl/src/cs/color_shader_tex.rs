@@ -137,7 +137,7 @@ pub struct ColorShaderTex {
 
     pipe: ScanPipe,
     coord: TexCoord,
-    lod: TexLod,
+    lod_unit: TexLod,
     sampler: TextureSampler,
     fifo: VideoFifo64,
     /// Pixels issued and not yet taken by the consumer.
@@ -176,6 +176,13 @@ pub struct ColorShaderTex {
     visible: Signal<Local, Bit>,
     beat: Signal<Local, Bits<27>>,
     offer: Signal<Local, Bits<28>>,
+    credit_ok: Signal<Local, Bit>,
+    o_valid: Signal<Local, Bit>,
+    o_tex: Signal<Local, Bit>,
+    o_colour: Signal<Local, Bits<24>>,
+    o_s: Signal<Local, Bits<32>>,
+    o_t: Signal<Local, Bits<32>>,
+    o_lod: Signal<Local, Bits<8>>,
     offer_tex: Signal<Local, Bits<28>>,
     hold_tex: Signal<Local, Bits<28>>,
     hold_tags: Signal<Local, Bits<28>>,
@@ -194,7 +201,6 @@ pub struct ColorShaderTex {
     k2_2: Constant<Bits<2>>,
     k0_16: Constant<Bits<16>>,
     k0_28: Constant<Bits<28>>,
-    k0_26: Constant<Bits<26>>,
     kvalid_27: Constant<Bits<27>>,
     kvalid_28: Constant<Bits<28>>,
     ktex_28: Constant<Bits<28>>,
@@ -259,7 +265,7 @@ impl Default for ColorShaderTex {
             video_tlast: Default::default(),
             pipe: Default::default(),
             coord: Default::default(),
-            lod: Default::default(),
+            lod_unit: Default::default(),
             sampler: Default::default(),
             fifo: Default::default(),
             pending: Default::default(),
@@ -288,6 +294,13 @@ impl Default for ColorShaderTex {
             visible: Default::default(),
             beat: Default::default(),
             offer: Default::default(),
+            credit_ok: Default::default(),
+            o_valid: Default::default(),
+            o_tex: Default::default(),
+            o_colour: Default::default(),
+            o_s: Default::default(),
+            o_t: Default::default(),
+            o_lod: Default::default(),
             offer_tex: Default::default(),
             hold_tex: Default::default(),
             hold_tags: Default::default(),
@@ -307,7 +320,6 @@ impl Default for ColorShaderTex {
             k2_2: Constant::new(2.into()),
             k0_16: Constant::new(0.into()),
             k0_28: Constant::new(0.into()),
-            k0_26: Constant::new(0.into()),
             kvalid_27: Constant::new((1u64 << 26).into()),
             kvalid_28: Constant::new((1u64 << 27).into()),
             ktex_28: Constant::new((1u64 << 26).into()),
@@ -322,7 +334,7 @@ impl Logic for ColorShaderTex {
             self, clock, pending, issued_last, tex_on, w0_log2, h0_log2, last_level, filter, clamp, hold, hold_s,
             hold_t, hold_lod
         );
-        clock!(self, clock, pipe, coord, lod, sampler, fifo);
+        clock!(self, clock, pipe, coord, lod_unit, sampler, fifo);
         for i in 0..14 {
             self.g_sw_a[i].clock.next = self.clock.val();
             self.g_sw_b[i].clock.next = self.clock.val();
@@ -371,14 +383,17 @@ impl Logic for ColorShaderTex {
         // Credit: 32 pending pixels, 64 in a textured frame; a trilinear frame issues at most every
         // other cycle. A pixel stops pending when taken.
         self.trilinear.next = self.tex_on.q.val() & (self.filter.q.val() == self.k2_2.val());
-        self.pipe.issue_ok.next = !(self.trilinear.val() & self.issued_last.q.val());
+        // (Computed in a local and passed once: a child input assigned twice in one evaluation glitches,
+        // and through the child's combinational output Icarus would re-run this block for ever.)
+        self.credit_ok.next = !(self.trilinear.val() & self.issued_last.q.val());
         if self.tex_on.q.val() {
             if self.pending.q.val() == self.k64_7.val() {
-                self.pipe.issue_ok.next = false;
+                self.credit_ok.next = false;
             }
         } else if self.pending.q.val() == self.k32_7.val() {
-            self.pipe.issue_ok.next = false;
+            self.credit_ok.next = false;
         }
+        self.pipe.issue_ok.next = self.credit_ok.val();
         self.issue.next = self.pipe.ibuf_read_enable.val();
         self.issued_last.d.next = self.issue.val();
         self.pop.next = self.fifo.read_valid.val() & self.video_tready.val();
@@ -437,20 +452,20 @@ impl Logic for ColorShaderTex {
             self.g_q_b[i].d.next = self.g_q_b[i - 1].q.val();
         }
         // t+17: the level of detail, with the gradients that waited.
-        self.lod.valid_in.next = self.coord.valid_out.val();
-        self.lod.s.next = self.coord.s.val();
-        self.lod.t.next = self.coord.t.val();
-        self.lod.m.next = self.coord.m.val();
-        self.lod.e.next = self.coord.e.val();
-        self.lod.w_log2.next = self.w0_log2.q.val();
-        self.lod.h_log2.next = self.h0_log2.q.val();
+        self.lod_unit.valid_in.next = self.coord.valid_out.val();
+        self.lod_unit.s.next = self.coord.s.val();
+        self.lod_unit.t.next = self.coord.t.val();
+        self.lod_unit.m.next = self.coord.m.val();
+        self.lod_unit.e.next = self.coord.e.val();
+        self.lod_unit.w_log2.next = self.w0_log2.q.val();
+        self.lod_unit.h_log2.next = self.h0_log2.q.val();
         for i in 13..14 {
-            self.lod.sw_a.next = self.g_sw_a[i].q.val();
-            self.lod.sw_b.next = self.g_sw_b[i].q.val();
-            self.lod.tw_a.next = self.g_tw_a[i].q.val();
-            self.lod.tw_b.next = self.g_tw_b[i].q.val();
-            self.lod.q_a.next = self.g_q_a[i].q.val();
-            self.lod.q_b.next = self.g_q_b[i].q.val();
+            self.lod_unit.sw_a.next = self.g_sw_a[i].q.val();
+            self.lod_unit.sw_b.next = self.g_sw_b[i].q.val();
+            self.lod_unit.tw_a.next = self.g_tw_a[i].q.val();
+            self.lod_unit.tw_b.next = self.g_tw_b[i].q.val();
+            self.lod_unit.q_a.next = self.g_q_a[i].q.val();
+            self.lod_unit.q_b.next = self.g_q_b[i].q.val();
         }
         // s and t wait beside tex_lod (which passes neither): {t, s}.
         self.st_in.next = (bit_cast::<64, 32>(self.coord.t.val()) << 32) | bit_cast::<64, 32>(self.coord.s.val());
@@ -479,41 +494,48 @@ impl Logic for ColorShaderTex {
             self.st_out.next = self.st[i].q.val();
         }
         self.offer_tex.next = self.k0_28.val();
-        if self.lod.valid_out.val() {
+        if self.lod_unit.valid_out.val() {
             self.offer_tex.next = self.ktex_28.val();
         }
         self.offer.next = self.k0_28.val();
         if self.col_out.val().get_bit(26) {
             self.offer.next = self.kvalid_28.val() | self.offer_tex.val() | bit_cast::<28, 26>(self.col_out.val().get_bits::<26>(0));
         }
-        self.sampler.valid_in.next = self.offer.val().get_bit(27);
-        self.sampler.textured.next = self.offer.val().get_bit(26);
-        self.sampler.colour.next = self.offer.val().get_bits::<24>(0);
-        self.sampler.s.next = self.st_out.val().get_bits::<32>(0);
-        self.sampler.t.next = self.st_out.val().get_bits::<32>(32);
-        self.sampler.lod.next = self.lod.lod.val();
+        self.o_valid.next = self.offer.val().get_bit(27);
+        self.o_tex.next = self.offer.val().get_bit(26);
+        self.o_colour.next = self.offer.val().get_bits::<24>(0);
+        self.o_s.next = self.st_out.val().get_bits::<32>(0);
+        self.o_t.next = self.st_out.val().get_bits::<32>(32);
+        self.o_lod.next = self.lod_unit.lod.val();
         self.tag_in.next = self.offer.val().get_bits::<2>(24);
         if self.hold.q.val().get_bit(27) {
-            self.sampler.valid_in.next = true;
-            self.sampler.textured.next = self.hold.q.val().get_bit(26);
-            self.sampler.colour.next = self.hold.q.val().get_bits::<24>(0);
-            self.sampler.s.next = self.hold_s.q.val();
-            self.sampler.t.next = self.hold_t.q.val();
-            self.sampler.lod.next = self.hold_lod.q.val();
+            self.o_valid.next = true;
+            self.o_tex.next = self.hold.q.val().get_bit(26);
+            self.o_colour.next = self.hold.q.val().get_bits::<24>(0);
+            self.o_s.next = self.hold_s.q.val();
+            self.o_t.next = self.hold_t.q.val();
+            self.o_lod.next = self.hold_lod.q.val();
             self.tag_in.next = self.hold.q.val().get_bits::<2>(24);
         }
-        self.taken.next = self.sampler.valid_in.val() & self.sampler.ready.val();
+        // Each of the unit's inputs assigned once (its `ready` depends on them combinationally).
+        self.sampler.valid_in.next = self.o_valid.val();
+        self.sampler.textured.next = self.o_tex.val();
+        self.sampler.colour.next = self.o_colour.val();
+        self.sampler.s.next = self.o_s.val();
+        self.sampler.t.next = self.o_t.val();
+        self.sampler.lod.next = self.o_lod.val();
+        self.taken.next = self.o_valid.val() & self.sampler.ready.val();
         self.hold_tex.next = self.k0_28.val();
-        if self.sampler.textured.val() {
+        if self.o_tex.val() {
             self.hold_tex.next = self.ktex_28.val();
         }
         self.hold_tags.next = bit_cast::<28, 2>(self.tag_in.val()) << 24;
         self.hold.d.next = self.k0_28.val();
-        if self.sampler.valid_in.val() & !self.sampler.ready.val() {
-            self.hold.d.next = self.kvalid_28.val() | self.hold_tex.val() | self.hold_tags.val() | bit_cast::<28, 24>(self.sampler.colour.val());
-            self.hold_s.d.next = self.sampler.s.val();
-            self.hold_t.d.next = self.sampler.t.val();
-            self.hold_lod.d.next = self.sampler.lod.val();
+        if self.o_valid.val() & !self.sampler.ready.val() {
+            self.hold.d.next = self.kvalid_28.val() | self.hold_tex.val() | self.hold_tags.val() | bit_cast::<28, 24>(self.o_colour.val());
+            self.hold_s.d.next = self.o_s.val();
+            self.hold_t.d.next = self.o_t.val();
+            self.hold_lod.d.next = self.o_lod.val();
         }
         self.sampler.w0_log2.next = self.w0_log2.q.val();
         self.sampler.h0_log2.next = self.h0_log2.q.val();
@@ -558,4 +580,11 @@ impl Logic for ColorShaderTex {
         self.video_tuser.next = self.fifo.read_data.val().get_bit(24);
         self.video_tlast.next = self.fifo.read_data.val().get_bit(25);
     }
+}
+
+/// The `cs_tex` top's Verilog.
+pub fn verilog() -> Result<String, String> {
+    let mut uut = ColorShaderTex::default();
+    uut.connect_all();
+    crate::common::verilog_named(&uut, "cs_tex")
 }

@@ -62,6 +62,8 @@ pub struct CsRun {
     pub frame_cycles: Vec<u64>,
     pub rtl_cycles_per_second: f64,
     pub recording: Option<Recording>,
+    /// Words read at the texture port (bank reads), over the run.
+    pub tex_words: u64,
 }
 
 /// Ports of the `cs` top in the replay's order.
@@ -104,6 +106,57 @@ pub fn replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
             port("video_tlast", 1),
         ],
     )
+}
+
+/// Ports of the `cs_tex` top in the replay's order: `cs`'s, then the texture's.
+pub fn tex_replay_ports() -> (Vec<PortSpec>, Vec<PortSpec>) {
+    let (mut i, mut o) = replay_ports();
+    i.extend([
+        port("tdbt_read_data", hdl::cs::TDBT_RECORD_BITS),
+        port("texture_enable", 1),
+        port("tex_w0_log2", 4),
+        port("tex_h0_log2", 4),
+        port("tex_last_level", 4),
+        port("tex_filter", 2),
+        port("tex_clamp", 1),
+        port("tex_base_we", 1),
+        port("tex_base_sel", 4),
+        port("tex_base_data", 20),
+        port("tex_data0", 24),
+        port("tex_data1", 24),
+        port("tex_data2", 24),
+        port("tex_data3", 24),
+    ]);
+    let names = tex_port_values(&CsOutputs::default());
+    o.extend(names.iter().map(|(n, _, w)| port(n, *w)));
+    (i, o)
+}
+
+fn tex_in_vector(i: &CsInputs, t: &TexInputs) -> BitVector {
+    let mut v = in_vector(i);
+    v.push_tex_planes(&i.tdbt_read_data);
+    v.push(t.enable as u128, 1);
+    v.push(t.w0_log2 as u128, 4);
+    v.push(t.h0_log2 as u128, 4);
+    v.push(t.last_level as u128, 4);
+    v.push(t.filter as u128, 2);
+    v.push(t.clamp as u128, 1);
+    let (sel, base) = t.base.unwrap_or((0, 0));
+    v.push(t.base.is_some() as u128, 1);
+    v.push(sel as u128, 4);
+    v.push(base as u128, 20);
+    for d in t.data {
+        v.push(d as u128, 24);
+    }
+    v
+}
+
+fn tex_out_vector(o: &CsOutputs) -> BitVector {
+    let mut v = out_vector(o);
+    for (_, val, w) in tex_port_values(o) {
+        v.push(val as u128, w);
+    }
+    v
 }
 
 /// Six 16-bit fields packed as a `LogicStruct` (field 0 in the least significant bits).
@@ -451,7 +504,7 @@ fn run_inner<U: CsUut>(
         }
     };
     let mut rec = if record {
-        let (i, o) = replay_ports();
+        let (i, o) = if tex.is_some() { tex_replay_ports() } else { replay_ports() };
         Some(Recording::new(i, o))
     } else {
         None
@@ -514,6 +567,7 @@ fn run_inner<U: CsUut>(
         }
         let expected = model.step(&inp);
         footprint = expected.tex_banks;
+        run.tex_words += expected.tex_banks.reads() as u64;
         if let Some(r) = rtl.as_mut() {
             let actual = r.cycle(cycle, &inp, &tin).map_err(Stop::Error)?;
             let (e_all, a_all) = (port_values(&expected).into_iter().chain(tex_port_values(&expected)), port_values(&actual).into_iter().chain(tex_port_values(&actual)));
@@ -525,7 +579,11 @@ fn run_inner<U: CsUut>(
             r.rising_edge(cycle).map_err(Stop::Error)?;
         }
         if let Some(rc) = rec.as_mut() {
-            rc.push(in_vector(&inp), out_vector(&expected));
+            if tex.is_some() {
+                rc.push(tex_in_vector(&inp, &tin), tex_out_vector(&expected));
+            } else {
+                rc.push(in_vector(&inp), out_vector(&expected));
+            }
         }
         if start && !busy {
             next += 1;
@@ -611,8 +669,9 @@ pub fn run_tex_rtl_vs_model(
     config: &[CsConfigWrite],
     tex: &TexRun,
     drive: CsDrive,
+    record: bool,
 ) -> Result<CsRun, String> {
-    run_top::<ColorShaderTex>(test, mem, frames, config, Some(tex), drive, false)
+    run_top::<ColorShaderTex>(test, mem, frames, config, Some(tex), drive, record)
 }
 
 fn run_top<U: CsUut>(

@@ -153,6 +153,57 @@ pub fn replay_iverilog(verilog: &str, top: &str, rec: &Recording, dir: &Path) ->
     Ok(ReplayReport { cycles: rec.cycles(), seconds })
 }
 
+/// [`replay_iverilog`] under Verilator (`--binary --timing`, the same testbench), for tops that Icarus
+/// replays too slowly: on `cs_tex` Icarus managed about 2 cycles per second (its one large always
+/// block re-runs for every change of the texture unit's outputs), Verilator the whole run in 0.1 s
+/// after a 15 s build.
+pub fn replay_verilator(verilog: &str, top: &str, rec: &Recording, dir: &Path) -> Result<ReplayReport, String> {
+    if rec.cycles() == 0 {
+        return Err("replay: empty recording".into());
+    }
+    std::fs::create_dir_all(dir).map_err(|e| format!("replay: cannot create {}: {e}", dir.display()))?;
+    let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).map_err(|e| format!("replay: cannot write {name}: {e}"));
+    write(&format!("{top}.v"), verilog)?;
+    write("replay_tb.v", &testbench(top, rec))?;
+    write("in.hex", &rec.vin.iter().map(|v| v.hex() + "\n").collect::<String>())?;
+    write("out.hex", &rec.vout.iter().map(|v| v.hex() + "\n").collect::<String>())?;
+    let _ = std::fs::remove_dir_all(dir.join("obj_dir"));
+    let out = Command::new("verilator")
+        .current_dir(dir)
+        .args(["--binary", "--timing", "-O2", "-Wno-fatal", "-Wno-lint", "-Wno-style", "-Wno-UNOPTFLAT", "--top-module", "replay_tb", "replay_tb.v", &format!("{top}.v")])
+        .output()
+        .map_err(|e| format!("replay: cannot run verilator: {e}"))?;
+    if !out.status.success() {
+        return Err(format!("replay: verilator failed to build {top}:\n{}", String::from_utf8_lossy(&out.stderr)));
+    }
+    let t0 = std::time::Instant::now();
+    let limit = 60 + rec.cycles() / 500;
+    let out = Command::new("timeout")
+        .current_dir(dir)
+        .args([limit.to_string().as_str(), "./obj_dir/Vreplay_tb"])
+        .output()
+        .map_err(|e| format!("replay: cannot run the Verilator model: {e}"))?;
+    let seconds = t0.elapsed().as_secs_f64();
+    if out.status.code() == Some(124) {
+        return Err(format!("replay of {top}: the Verilator model did not finish {} cycles in {limit} s; files in {}", rec.cycles(), dir.display()));
+    }
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let mismatches: Vec<&str> = text.lines().filter(|l| l.starts_with("MISMATCH")).collect();
+    if !mismatches.is_empty() {
+        return Err(format!(
+            "the Verilog of {top} differs from the cycle model ({} shown, files in {}):\n{}",
+            mismatches.len(),
+            dir.display(),
+            mismatches.join("\n")
+        ));
+    }
+    let done = format!("REPLAY DONE cycles {} errors 0", rec.cycles());
+    if !text.contains(&done) {
+        return Err(format!("replay of {top} did not finish cleanly:\n{text}\n{}", String::from_utf8_lossy(&out.stderr)));
+    }
+    Ok(ReplayReport { cycles: rec.cycles(), seconds })
+}
+
 /// Cell counts of `yosys synth_ice40 -dsp`.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct SynthFigures {

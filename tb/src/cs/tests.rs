@@ -345,7 +345,7 @@ fn cs_tex_matches_its_cycle_model_every_cycle_on_textured_and_untextured_frames_
         let tex = csb::TexRun { texturing: tx, textured: vec![true, false, true] };
         let drive = CsDrive { stall_percent: 30, start_while_busy_percent: 10, max_idle: 3, seed };
         let test = format!("cs_tex_{filter:?}_{shading:?}").to_lowercase();
-        let run = csb::run_tex_rtl_vs_model(&test, &mut mem, &[spec; 3], &config, &tex, drive).unwrap();
+        let run = csb::run_tex_rtl_vs_model(&test, &mut mem, &[spec; 3], &config, &tex, drive, false).unwrap();
         assert_eq!(run.frames.len(), 3);
         for k in [0, 2] {
             let img = csb::frame_image(&run.frames[k], w, h).unwrap();
@@ -361,4 +361,70 @@ fn cs_tex_matches_its_cycle_model_every_cycle_on_textured_and_untextured_frames_
         }
         println!("cs_tex {filter:?} {wrap:?} {shading:?}: {} cycles, RustHDL {:.0} cycles/s", run.cycles, run.rtl_cycles_per_second);
     }
+}
+
+/// A short textured run (trilinear between levels, a held offer, back-pressure) for the Verilog replay.
+fn cs_tex_recording() -> super::replay::Recording {
+    use golden::texture::{Filter, Wrap};
+    let (w, h) = (40, 24);
+    let tx = checker_texturing(Filter::Trilinear, Wrap::Repeat);
+    let f = super::frames::record_textured(Shading::Gouraud, &tx, w, h).unwrap();
+    let mut mem = f.textured_memories();
+    let spec = FrameSpec { width: w, height: h, background: f.background, clear_behind: false, phong: false };
+    let tex = csb::TexRun { texturing: tx, textured: vec![true, false] };
+    let drive = CsDrive { stall_percent: 25, start_while_busy_percent: 10, max_idle: 2, seed: 0x7E5 };
+    let run = csb::run_tex_rtl_vs_model("cs_tex_replay", &mut mem, &[spec; 2], &[], &tex, drive, true).unwrap();
+    assert!(csb::frame_image(&run.frames[0], w, h).unwrap() == f.frame.rgb, "the recorded textured frame differs from golden");
+    run.recording.unwrap()
+}
+
+#[test]
+fn the_cs_tex_verilog_replays_the_recorded_vectors_and_a_changed_blend_is_caught() {
+    if !require_tools("the_cs_tex_verilog_replays_the_recorded_vectors_and_a_changed_blend_is_caught", &["verilator"]) {
+        return;
+    }
+    let rec = cs_tex_recording();
+    let v = hdl::cs::color_shader_tex::verilog().unwrap();
+    let r = super::replay::replay_verilator(&v, "cs_tex", &rec, &scratch_dir("cs/cs_tex_replay")).unwrap();
+    println!("cs_tex Verilog (Verilator): {} cycles replayed in {:.2} s, 0 mismatches", r.cycles, r.seconds);
+    // The trilinear blend's rounding constant removed: the video stream must differ.
+    let eight = "localparam  k8_13 = 13'b1000;";
+    assert!(v.contains(eight), "the blend's rounding constant is not in the Verilog");
+    let e = super::replay::replay_verilator(&v.replacen(eight, "localparam  k8_13 = 13'b0;", 1), "cs_tex", &rec, &scratch_dir("cs/cs_tex_replay_broken")).unwrap_err();
+    assert!(e.contains("video_tdata"), "{e}");
+}
+
+#[test]
+fn cs_tex_passes_verilator_lint() {
+    if !require_tools("cs_tex_passes_verilator_lint", &["verilator"]) {
+        return;
+    }
+    let v = hdl::cs::color_shader_tex::verilog().unwrap();
+    crate::lint::lint(&v, "cs_tex", &scratch_dir("cs/lint_cs_tex")).unwrap_or_else(|e| panic!("{e}"));
+}
+
+/// Issue 17 item 4 in RTL: a bilinear textured 320x200 frame streams one pixel per clock (the last
+/// beat `CS_PIPELINE_CYCLES_TEX` after the last issue), its image is golden's and the words read at
+/// the texture port are golden's count.
+#[test]
+fn cs_tex_streams_a_bilinear_320x200_frame_at_one_pixel_per_clock() {
+    use golden::cycle::color_shader::CS_PIPELINE_CYCLES_TEX;
+    use golden::texture::{Filter, Wrap};
+    let tx = checker_texturing(Filter::Bilinear, Wrap::Repeat);
+    let f = super::frames::record_textured(Shading::Gouraud, &tx, 320, 200).unwrap();
+    let mut mem = f.textured_memories();
+    let spec = FrameSpec { width: 320, height: 200, background: f.background, clear_behind: false, phong: false };
+    let tex = csb::TexRun { texturing: tx, textured: vec![true] };
+    let run = csb::run_tex_rtl_vs_model("cs_tex_320x200_bilinear", &mut mem, &[spec], &[], &tex, CsDrive::ideal(), false).unwrap();
+    assert!(csb::frame_image(&run.frames[0], 320, 200).unwrap() == f.frame.rgb, "the RTL's textured frame differs from golden");
+    let counts = f.frame.stats.texture.clone().expect("a textured frame counts its texels");
+    assert_eq!(run.tex_words, counts.bank_words_read, "words read at the texture port");
+    assert_eq!(run.frame_cycles[0], 64000 + CS_PIPELINE_CYCLES_TEX);
+    println!(
+        "cs_tex 320x200 bilinear: {} cycles for 64000 pixels = {:.4} pixels/clock, {} words at the texture port; RustHDL {:.0} cycles/s",
+        run.frame_cycles[0],
+        64000.0 / run.frame_cycles[0] as f64,
+        run.tex_words,
+        run.rtl_cycles_per_second
+    );
 }
