@@ -646,6 +646,15 @@ pub fn run_model(mem: &mut CsMemories, frames: &[FrameSpec], config: &[CsConfigW
     })
 }
 
+/// The cycle model alone on a textured run, recording every port of every cycle for a replay of the
+/// `cs_tex` Verilog (the memories answer the model's reads, as they would the RTL's if it is equal).
+pub fn record_tex_model(mem: &mut CsMemories, frames: &[FrameSpec], config: &[CsConfigWrite], tex: &TexRun, drive: CsDrive) -> Result<CsRun, String> {
+    run_inner::<ColorShaderTex>(mem, frames, config, Some(tex), drive, false, None, true).map_err(|s| match s {
+        Stop::Error(e) => e,
+        Stop::Mismatch(..) => unreachable!(),
+    })
+}
+
 /// The RTL against the model, every port every cycle; `mem` is updated by the run's writes; `config`
 /// is written before the first frame. `test` names the VCD (`target/vcd/cs/<test>.vcd`): written
 /// with `VCD=1`, and always for a failing run.
