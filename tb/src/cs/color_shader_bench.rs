@@ -13,7 +13,7 @@ use golden::cycle::color_shader::{ColorShaderModel, CsConfigWrite, CsInputs, CsM
 use hdl::cs::{LightVectors, MaterialWord};
 use golden::render::Texturing;
 use golden::texbank::{banks, layout, Footprint};
-use golden::texture::{Filter, Wrap};
+use golden::texture::Wrap;
 use hdl::cs::color_shader::ColorShader;
 use hdl::cs::color_shader_tex::ColorShaderTex;
 use rust_hdl::prelude::*;
@@ -492,11 +492,7 @@ fn run_inner<U: CsUut>(
                 w0_log2: geoms[0].w_log2,
                 h0_log2: geoms[0].h_log2,
                 last_level: geoms.len() as u32 - 1,
-                filter: match t.texturing.filter {
-                    Filter::Nearest => 0,
-                    Filter::Bilinear => 1,
-                    Filter::Trilinear => 2,
-                },
+                filter: crate::cs::texture_sampler_bench::filter_code(t.texturing.filter),
                 clamp: t.texturing.wrap == Wrap::ClampToEdge,
                 ..Default::default()
             },
@@ -557,13 +553,13 @@ fn run_inner<U: CsUut>(
         if !busy {
             model.set_texturing(tex.filter(|_| textured).map(|t| t.texturing.clone()));
         }
-        let mut tin = settings(if busy { rng.chance(50) } else { textured });
+        // (The random draws only in a textured run: a `cs` run's stimulus is what it was before `cs_tex`.)
+        let mut tin = settings(if busy { tex.is_some() && rng.chance(50) } else { textured });
         tin.base = base;
-        for (k, d) in tin.data.iter_mut().enumerate() {
-            *d = match &banks {
-                Some(b) if footprint.read[k] => tdata_of(b[k][footprint.addr[k] as usize]) as u64,
-                _ => noise.next_u64() & 0xff_ffff,
-            };
+        if let Some(b) = &banks {
+            for (k, d) in tin.data.iter_mut().enumerate() {
+                *d = if footprint.read[k] { tdata_of(b[k][footprint.addr[k] as usize]) as u64 } else { noise.next_u64() & 0xff_ffff };
+            }
         }
         let expected = model.step(&inp);
         footprint = expected.tex_banks;
@@ -638,21 +634,23 @@ fn run_inner<U: CsUut>(
     Ok(run)
 }
 
-/// The cycle model alone.
-pub fn run_model(mem: &mut CsMemories, frames: &[FrameSpec], config: &[CsConfigWrite], drive: CsDrive) -> Result<CsRun, String> {
-    run_inner::<ColorShader>(mem, frames, config, None, drive, false, None, false).map_err(|s| match s {
+/// The cycle model alone (no RTL, so no mismatch can stop it).
+fn model_only(r: Result<CsRun, Stop>) -> Result<CsRun, String> {
+    r.map_err(|s| match s {
         Stop::Error(e) => e,
         Stop::Mismatch(..) => unreachable!(),
     })
 }
 
+/// The cycle model alone.
+pub fn run_model(mem: &mut CsMemories, frames: &[FrameSpec], config: &[CsConfigWrite], drive: CsDrive) -> Result<CsRun, String> {
+    model_only(run_inner::<ColorShader>(mem, frames, config, None, drive, false, None, false))
+}
+
 /// The cycle model alone on a textured run, recording every port of every cycle for a replay of the
 /// `cs_tex` Verilog (the memories answer the model's reads, as they would the RTL's if it is equal).
 pub fn record_tex_model(mem: &mut CsMemories, frames: &[FrameSpec], config: &[CsConfigWrite], tex: &TexRun, drive: CsDrive) -> Result<CsRun, String> {
-    run_inner::<ColorShaderTex>(mem, frames, config, Some(tex), drive, false, None, true).map_err(|s| match s {
-        Stop::Error(e) => e,
-        Stop::Mismatch(..) => unreachable!(),
-    })
+    model_only(run_inner::<ColorShaderTex>(mem, frames, config, Some(tex), drive, false, None, true))
 }
 
 /// The RTL against the model, every port every cycle; `mem` is updated by the run's writes; `config`

@@ -103,9 +103,8 @@ pub struct ReplayReport {
     pub seconds: f64,
 }
 
-/// Replay `rec` on the Verilog `verilog` (top module `top`) under Icarus Verilog in `dir`. Errors carry
-/// the first mismatching ports with cycle, expected and actual values.
-pub fn replay_iverilog(verilog: &str, top: &str, rec: &Recording, dir: &Path) -> Result<ReplayReport, String> {
+/// Write the top's Verilog, the testbench and the vectors of `rec` into `dir`.
+fn write_replay(verilog: &str, top: &str, rec: &Recording, dir: &Path) -> Result<(), String> {
     if rec.cycles() == 0 {
         return Err("replay: empty recording".into());
     }
@@ -114,27 +113,24 @@ pub fn replay_iverilog(verilog: &str, top: &str, rec: &Recording, dir: &Path) ->
     write(&format!("{top}.v"), verilog)?;
     write("replay_tb.v", &testbench(top, rec))?;
     write("in.hex", &rec.vin.iter().map(|v| v.hex() + "\n").collect::<String>())?;
-    write("out.hex", &rec.vout.iter().map(|v| v.hex() + "\n").collect::<String>())?;
-    let out = Command::new("iverilog")
-        .current_dir(dir)
-        .args(["-g2005", "-o", "replay.vvp", "replay_tb.v", &format!("{top}.v")])
-        .output()
-        .map_err(|e| format!("replay: cannot run iverilog: {e}"))?;
-    if !out.status.success() {
-        return Err(format!("replay: iverilog failed to compile {top}:\n{}", String::from_utf8_lossy(&out.stderr)));
-    }
+    write("out.hex", &rec.vout.iter().map(|v| v.hex() + "\n").collect::<String>())
+}
+
+/// Run the built testbench (`cmd` in `dir`, bounded in time) and judge what it printed.
+fn run_replay(cmd: &[&str], sim: &str, top: &str, rec: &Recording, dir: &Path) -> Result<ReplayReport, String> {
     let t0 = std::time::Instant::now();
     // A zero-delay oscillation (a combinational loop that Icarus cannot settle) would run forever:
-    // bound the run (Icarus replays these designs at > 5k cycles/s).
-    let limit = 60 + rec.cycles() / 500;
+    // bound the run (Icarus replays these designs at > 5k cycles/s, `cs_tex` excepted).
+    let limit = (60 + rec.cycles() / 500).to_string();
     let out = Command::new("timeout")
         .current_dir(dir)
-        .args([limit.to_string().as_str(), "vvp", "-n", "replay.vvp"])
+        .arg(&limit)
+        .args(cmd)
         .output()
-        .map_err(|e| format!("replay: cannot run vvp: {e}"))?;
+        .map_err(|e| format!("replay: cannot run {sim}: {e}"))?;
     let seconds = t0.elapsed().as_secs_f64();
     if out.status.code() == Some(124) {
-        return Err(format!("replay of {top}: vvp did not finish {} cycles in {limit} s (a combinational loop that never settles?); files in {}", rec.cycles(), dir.display()));
+        return Err(format!("replay of {top}: {sim} did not finish {} cycles in {limit} s (a combinational loop that never settles?); files in {}", rec.cycles(), dir.display()));
     }
     let text = String::from_utf8_lossy(&out.stdout).to_string();
     let mismatches: Vec<&str> = text.lines().filter(|l| l.starts_with("MISMATCH")).collect();
@@ -153,20 +149,27 @@ pub fn replay_iverilog(verilog: &str, top: &str, rec: &Recording, dir: &Path) ->
     Ok(ReplayReport { cycles: rec.cycles(), seconds })
 }
 
+/// Replay `rec` on the Verilog `verilog` (top module `top`) under Icarus Verilog in `dir`. Errors carry
+/// the first mismatching ports with cycle, expected and actual values.
+pub fn replay_iverilog(verilog: &str, top: &str, rec: &Recording, dir: &Path) -> Result<ReplayReport, String> {
+    write_replay(verilog, top, rec, dir)?;
+    let out = Command::new("iverilog")
+        .current_dir(dir)
+        .args(["-g2005", "-o", "replay.vvp", "replay_tb.v", &format!("{top}.v")])
+        .output()
+        .map_err(|e| format!("replay: cannot run iverilog: {e}"))?;
+    if !out.status.success() {
+        return Err(format!("replay: iverilog failed to compile {top}:\n{}", String::from_utf8_lossy(&out.stderr)));
+    }
+    run_replay(&["vvp", "-n", "replay.vvp"], "vvp", top, rec, dir)
+}
+
 /// [`replay_iverilog`] under Verilator (`--binary --timing`, the same testbench), for tops that Icarus
 /// replays too slowly: on `cs_tex` Icarus managed about 2 cycles per second (its one large always
 /// block re-runs for every change of the texture unit's outputs), Verilator the whole run in 0.1 s
 /// after a 15 s build.
 pub fn replay_verilator(verilog: &str, top: &str, rec: &Recording, dir: &Path) -> Result<ReplayReport, String> {
-    if rec.cycles() == 0 {
-        return Err("replay: empty recording".into());
-    }
-    std::fs::create_dir_all(dir).map_err(|e| format!("replay: cannot create {}: {e}", dir.display()))?;
-    let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).map_err(|e| format!("replay: cannot write {name}: {e}"));
-    write(&format!("{top}.v"), verilog)?;
-    write("replay_tb.v", &testbench(top, rec))?;
-    write("in.hex", &rec.vin.iter().map(|v| v.hex() + "\n").collect::<String>())?;
-    write("out.hex", &rec.vout.iter().map(|v| v.hex() + "\n").collect::<String>())?;
+    write_replay(verilog, top, rec, dir)?;
     let _ = std::fs::remove_dir_all(dir.join("obj_dir"));
     let out = Command::new("verilator")
         .current_dir(dir)
@@ -176,32 +179,7 @@ pub fn replay_verilator(verilog: &str, top: &str, rec: &Recording, dir: &Path) -
     if !out.status.success() {
         return Err(format!("replay: verilator failed to build {top}:\n{}", String::from_utf8_lossy(&out.stderr)));
     }
-    let t0 = std::time::Instant::now();
-    let limit = 60 + rec.cycles() / 500;
-    let out = Command::new("timeout")
-        .current_dir(dir)
-        .args([limit.to_string().as_str(), "./obj_dir/Vreplay_tb"])
-        .output()
-        .map_err(|e| format!("replay: cannot run the Verilator model: {e}"))?;
-    let seconds = t0.elapsed().as_secs_f64();
-    if out.status.code() == Some(124) {
-        return Err(format!("replay of {top}: the Verilator model did not finish {} cycles in {limit} s; files in {}", rec.cycles(), dir.display()));
-    }
-    let text = String::from_utf8_lossy(&out.stdout).to_string();
-    let mismatches: Vec<&str> = text.lines().filter(|l| l.starts_with("MISMATCH")).collect();
-    if !mismatches.is_empty() {
-        return Err(format!(
-            "the Verilog of {top} differs from the cycle model ({} shown, files in {}):\n{}",
-            mismatches.len(),
-            dir.display(),
-            mismatches.join("\n")
-        ));
-    }
-    let done = format!("REPLAY DONE cycles {} errors 0", rec.cycles());
-    if !text.contains(&done) {
-        return Err(format!("replay of {top} did not finish cleanly:\n{text}\n{}", String::from_utf8_lossy(&out.stderr)));
-    }
-    Ok(ReplayReport { cycles: rec.cycles(), seconds })
+    run_replay(&["./obj_dir/Vreplay_tb"], "the Verilator model", top, rec, dir)
 }
 
 /// Cell counts of `yosys synth_ice40 -dsp`.

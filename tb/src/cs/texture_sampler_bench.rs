@@ -82,6 +82,15 @@ pub fn pixels(rng: &mut Rng, n: usize, gap_percent: u64) -> Vec<(usize, SamplerP
         .collect()
 }
 
+/// The `filter` port's code of a filter (`texture_sampler`, `cs_tex`).
+pub fn filter_code(f: Filter) -> u64 {
+    match f {
+        Filter::Nearest => 0,
+        Filter::Bilinear => 1,
+        Filter::Trilinear => 2,
+    }
+}
+
 /// Drive the run through the RustHDL block, checking every port in every cycle against `model`
 /// (normally [`Run::model`]).
 pub fn run(r: &Run, mut model: TextureSamplerModel, seed: u64, vcd: Option<&std::path::Path>) -> Result<(Recording, Measured), String> {
@@ -95,11 +104,7 @@ pub fn run(r: &Run, mut model: TextureSamplerModel, seed: u64, vcd: Option<&std:
     let mem = banks(&r.texture);
     let last = geoms.len() - 1;
     let (w0, h0) = (geoms[0].w_log2, geoms[0].h_log2);
-    let filter_code = match r.filter {
-        Filter::Nearest => 0u64,
-        Filter::Bilinear => 1,
-        Filter::Trilinear => 2,
-    };
+    let filter_code = filter_code(r.filter);
     let mut noise = Rng::new(seed ^ 0x5EED);
     let mut m = Measured::default();
     let mut read_prev: Option<([bool; 4], [u32; 4])> = None;
