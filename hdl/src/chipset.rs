@@ -37,7 +37,9 @@
 //! ports never write the same bank in one cycle.
 
 pub mod back;
+pub mod back_tex;
 pub mod chipset3;
+pub mod chipset_tex;
 
 use crate::common::{StreamIn, StreamOut};
 use crate::cs::{LightVectors, MaterialWord, SetupCommand, TdbsRecord, CS_MATERIAL_BITS};

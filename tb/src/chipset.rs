@@ -1,5 +1,6 @@
-//! The RTL backend: the `hdl::chipset::Chipset` top ([`RtlChipset`]), or its Type III twin
-//! `hdl::chipset::chipset3::Chipset3` ([`RtlChipset3`]), simulated in RustHDL (direct drive, GUIDE §5)
+//! The RTL backend: the `hdl::chipset::Chipset` top ([`RtlChipset`]), its Type III twin
+//! `hdl::chipset::chipset3::Chipset3` ([`RtlChipset3`]) or its textured twin
+//! `hdl::chipset::chipset_tex::ChipsetTex` ([`RtlChipsetTex`]), simulated in RustHDL (direct drive, GUIDE §5)
 //! behind `golden::render::Chipset`, so that the host program of the golden model drives the RTL
 //! through seed 001's two pipelines in parallel, frames back to back. The memories behind the top's
 //! ports (Z-buffer or TdbV, two I-buffer banks, two TdbS banks) are modelled here: synchronous,
@@ -31,6 +32,14 @@
 //! * `frame_interval`: from the previous frame's scan start (taken) to this frame's: the time per
 //!   frame of a long run, measured at the ports (none for the first frame of a run);
 //! * `z_reads`: cycles in rasterization with a Z-buffer read, the fragments the RC Z-tested.
+//!
+//! A textured frame (`chipset_tex` only; the other tops refuse one) also has, before its scan start
+//! and after the Phong constants, one level-table write per mipmap level; the host loads the texture
+//! into the four banks when the frame's scan-out begins (no scan is running then), holds the
+//! texture's settings on their ports and sends each colour-setup command's nine texture values
+//! beside it. Its [`golden::render::TextureCounts`] are counted at the ports ([`TexTraffic`]): samples
+//! = scan-side I-buffer reads of a triangle's index, bank words = the bits of `tex_rd`, texels =
+//! footprints (cycles with a bank read) x 1 (nearest) or 4.
 
 use crate::cs::pack::{command_of, record_of, rgb_of, tdata_of};
 use crate::rc::pack::command_word;
@@ -41,6 +50,9 @@ use golden::render::{Chipset, FrameJob, FrameOut, LowerPipeline, ScanOut};
 use golden::cycle::color_shader::{phong_config, CsConfigWrite};
 use golden::shade::{Shading, TdbsEntry};
 use hdl::chipset::chipset3::Chipset3 as Chipset3Rtl;
+use hdl::chipset::chipset_tex::ChipsetTex as ChipsetTexRtl;
+use hdl::cs::texel_address::ADDR_BITS;
+use hdl::cs::{TdbtRecord, TexValues};
 use hdl::chipset::Chipset as ChipsetRtl;
 use crate::cs::color_shader_bench::ConfigPorts;
 use golden::format::Plane;
@@ -205,6 +217,35 @@ pub trait ChipsetTop: Block + ConfigPorts + Sized {
     fn rc_memory_edge(&self, m: &mut RcMemory, t: &mut PortTraffic, cycle: u64) -> Result<(), String>;
     /// Any access on the RC memory's ports in this cycle.
     fn rc_memory_active(&self) -> bool;
+    /// The texture ports (`chipset_tex`), if the top has them.
+    fn texture(&mut self) -> Option<TexPorts<'_>> {
+        None
+    }
+    /// The texture ports, for the ports-only VCD.
+    fn accept_texture(&self, _probe: &mut dyn Probe) {}
+}
+
+/// The ports `chipset_tex` has beyond `chipset`'s (see `hdl::chipset::chipset_tex`).
+pub struct TexPorts<'a> {
+    pub setup_tex: &'a mut Signal<In, TexValues>,
+    pub tt_re: &'a Signal<Out, Bit>,
+    pub tt_rd_addr: &'a Signal<Out, Bits<17>>,
+    pub tt_rd_data: &'a mut Signal<In, TdbtRecord>,
+    pub tt_we: &'a Signal<Out, Bit>,
+    pub tt_wr_addr: &'a Signal<Out, Bits<17>>,
+    pub tt_wr_data: &'a Signal<Out, TdbtRecord>,
+    pub scan_texture: &'a mut Signal<In, Bit>,
+    pub tex_w0_log2: &'a mut Signal<In, Bits<4>>,
+    pub tex_h0_log2: &'a mut Signal<In, Bits<4>>,
+    pub tex_last_level: &'a mut Signal<In, Bits<4>>,
+    pub tex_filter: &'a mut Signal<In, Bits<2>>,
+    pub tex_clamp: &'a mut Signal<In, Bit>,
+    pub tex_base_we: &'a mut Signal<In, Bit>,
+    pub tex_base_sel: &'a mut Signal<In, Bits<4>>,
+    pub tex_base_data: &'a mut Signal<In, Bits<ADDR_BITS>>,
+    pub tex_rd: &'a Signal<Out, Bits<4>>,
+    pub tex_addr: [&'a Signal<Out, Bits<ADDR_BITS>>; 4],
+    pub tex_data: [&'a mut Signal<In, Bits<24>>; 4],
 }
 
 /// The ports that `chipset` and `chipset3` share, borrowed from either.
@@ -340,40 +381,106 @@ pub struct RcMemory {
     tdbv_rd: Plane,
 }
 
+/// The Z-buffer ports' methods of `chipset` and `chipset_tex` (the same RC, the same names).
+macro_rules! z_memory {
+    () => {
+        fn accept_rc_memory(&self, probe: &mut dyn Probe) {
+            self.z_re.accept("z_re", probe);
+            self.z_rd_addr.accept("z_rd_addr", probe);
+            self.z_rd_data.accept("z_rd_data", probe);
+            self.z_we.accept("z_we", probe);
+            self.z_wr_addr.accept("z_wr_addr", probe);
+            self.z_wr_data.accept("z_wr_data", probe);
+        }
+        fn drive_rc_memory(&mut self, m: &RcMemory) {
+            self.z_rd_data.next = (m.z_rd as u64).into();
+        }
+        fn rc_memory_edge(&self, m: &mut RcMemory, t: &mut PortTraffic, cycle: u64) -> Result<(), String> {
+            let n = m.zbuf.len();
+            let bad = |what: &str, a: usize| format!("chipset: {what} address {a:#x} outside the buffer (W*H = {n} words) in cycle {cycle}");
+            if self.z_re.val() {
+                let a = self.z_rd_addr.val().index();
+                m.z_rd = *m.zbuf.get(a).ok_or_else(|| bad("Z read", a))?;
+                t.z_reads += 1;
+            }
+            if self.z_we.val() {
+                let a = self.z_wr_addr.val().index();
+                *m.zbuf.get_mut(a).ok_or_else(|| bad("Z write", a))? = self.z_wr_data.val().to_u64() as u32;
+                t.z_writes += 1;
+            }
+            Ok(())
+        }
+        fn rc_memory_active(&self) -> bool {
+            self.z_re.val() || self.z_we.val()
+        }
+    };
+}
+
 impl ChipsetTop for ChipsetRtl {
     const TYPE: RcType = RcType::IV;
     fn build(width: u32, height: u32) -> Result<Self, String> {
         ChipsetRtl::new(width, height)
     }
     shared_ports!();
-    fn accept_rc_memory(&self, probe: &mut dyn Probe) {
-        self.z_re.accept("z_re", probe);
-        self.z_rd_addr.accept("z_rd_addr", probe);
-        self.z_rd_data.accept("z_rd_data", probe);
-        self.z_we.accept("z_we", probe);
-        self.z_wr_addr.accept("z_wr_addr", probe);
-        self.z_wr_data.accept("z_wr_data", probe);
+    z_memory!();
+}
+
+impl ChipsetTop for ChipsetTexRtl {
+    const TYPE: RcType = RcType::IV;
+    fn build(width: u32, height: u32) -> Result<Self, String> {
+        ChipsetTexRtl::new(width, height)
     }
-    fn drive_rc_memory(&mut self, m: &RcMemory) {
-        self.z_rd_data.next = (m.z_rd as u64).into();
+    shared_ports!();
+    z_memory!();
+    fn texture(&mut self) -> Option<TexPorts<'_>> {
+        Some(TexPorts {
+            setup_tex: &mut self.setup_tex,
+            tt_re: &self.tt_re,
+            tt_rd_addr: &self.tt_rd_addr,
+            tt_rd_data: &mut self.tt_rd_data,
+            tt_we: &self.tt_we,
+            tt_wr_addr: &self.tt_wr_addr,
+            tt_wr_data: &self.tt_wr_data,
+            scan_texture: &mut self.scan_texture,
+            tex_w0_log2: &mut self.tex_w0_log2,
+            tex_h0_log2: &mut self.tex_h0_log2,
+            tex_last_level: &mut self.tex_last_level,
+            tex_filter: &mut self.tex_filter,
+            tex_clamp: &mut self.tex_clamp,
+            tex_base_we: &mut self.tex_base_we,
+            tex_base_sel: &mut self.tex_base_sel,
+            tex_base_data: &mut self.tex_base_data,
+            tex_rd: &self.tex_rd,
+            tex_addr: [&self.tex_addr0, &self.tex_addr1, &self.tex_addr2, &self.tex_addr3],
+            tex_data: [&mut self.tex_data0, &mut self.tex_data1, &mut self.tex_data2, &mut self.tex_data3],
+        })
     }
-    fn rc_memory_edge(&self, m: &mut RcMemory, t: &mut PortTraffic, cycle: u64) -> Result<(), String> {
-        let n = m.zbuf.len();
-        let bad = |what: &str, a: usize| format!("chipset: {what} address {a:#x} outside the buffer (W*H = {n} words) in cycle {cycle}");
-        if self.z_re.val() {
-            let a = self.z_rd_addr.val().index();
-            m.z_rd = *m.zbuf.get(a).ok_or_else(|| bad("Z read", a))?;
-            t.z_reads += 1;
-        }
-        if self.z_we.val() {
-            let a = self.z_wr_addr.val().index();
-            *m.zbuf.get_mut(a).ok_or_else(|| bad("Z write", a))? = self.z_wr_data.val().to_u64() as u32;
-            t.z_writes += 1;
-        }
-        Ok(())
-    }
-    fn rc_memory_active(&self) -> bool {
-        self.z_re.val() || self.z_we.val()
+    fn accept_texture(&self, probe: &mut dyn Probe) {
+        self.setup_tex.accept("setup_tex", probe);
+        self.tt_re.accept("tt_re", probe);
+        self.tt_rd_addr.accept("tt_rd_addr", probe);
+        self.tt_rd_data.accept("tt_rd_data", probe);
+        self.tt_we.accept("tt_we", probe);
+        self.tt_wr_addr.accept("tt_wr_addr", probe);
+        self.tt_wr_data.accept("tt_wr_data", probe);
+        self.scan_texture.accept("scan_texture", probe);
+        self.tex_w0_log2.accept("tex_w0_log2", probe);
+        self.tex_h0_log2.accept("tex_h0_log2", probe);
+        self.tex_last_level.accept("tex_last_level", probe);
+        self.tex_filter.accept("tex_filter", probe);
+        self.tex_clamp.accept("tex_clamp", probe);
+        self.tex_base_we.accept("tex_base_we", probe);
+        self.tex_base_sel.accept("tex_base_sel", probe);
+        self.tex_base_data.accept("tex_base_data", probe);
+        self.tex_rd.accept("tex_rd", probe);
+        self.tex_addr0.accept("tex_addr0", probe);
+        self.tex_addr1.accept("tex_addr1", probe);
+        self.tex_addr2.accept("tex_addr2", probe);
+        self.tex_addr3.accept("tex_addr3", probe);
+        self.tex_data0.accept("tex_data0", probe);
+        self.tex_data1.accept("tex_data1", probe);
+        self.tex_data2.accept("tex_data2", probe);
+        self.tex_data3.accept("tex_data3", probe);
     }
 }
 
@@ -430,6 +537,15 @@ pub struct RtlChipsetOf<T: ChipsetTop> {
     id_rd: u32,
     is_rd: u32,
     t_rd: TdbsRecord,
+    /// Two banks of 2^16 TdbT records (a textured top's; empty otherwise).
+    tdbt: Vec<TdbtRecord>,
+    tt_rd: TdbtRecord,
+    /// The texture the host has loaded into the four texture banks (one bank set: loaded before a
+    /// textured frame's scan starts), and what the banks return (latency 1).
+    tex_banks: Option<std::sync::Arc<[Vec<[u8; 3]>; 4]>>,
+    tex_rd: [u64; 4],
+    /// The texture ports' words at the last edge.
+    edge_tex: TexTraffic,
     pub cycle: u64,
     /// Cycles per phase of the last frame.
     pub phases: PhaseCycles,
@@ -450,6 +566,32 @@ pub struct RtlChipsetOf<T: ChipsetTop> {
 pub type RtlChipset = RtlChipsetOf<ChipsetRtl>;
 /// The Type III chipset (`chipset3`: I-buffer and TdbV, no Z-buffer).
 pub type RtlChipset3 = RtlChipsetOf<Chipset3Rtl>;
+/// The textured chipset (`chipset_tex`: `chipset` with TdbT and four texture banks).
+pub type RtlChipsetTex = RtlChipsetOf<ChipsetTexRtl>;
+
+/// Words on a textured top's own ports in one cycle or one frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TexTraffic {
+    pub tdbt_reads: u64,
+    pub tdbt_writes: u64,
+    /// Words read from the four texture banks (the bits of `tex_rd`).
+    pub bank_words: u64,
+    /// Cycles with a texture-bank read: one level's footprint each (a trilinear pixel between two
+    /// levels reads two).
+    pub footprints: u64,
+    /// Scan-side I-buffer reads of a triangle's index (not the background): the pixels the CS textures.
+    pub covered_reads: u64,
+}
+
+impl TexTraffic {
+    fn add(&mut self, t: &TexTraffic) {
+        self.tdbt_reads += t.tdbt_reads;
+        self.tdbt_writes += t.tdbt_writes;
+        self.bank_words += t.bank_words;
+        self.footprints += t.footprints;
+        self.covered_reads += t.covered_reads;
+    }
+}
 
 /// Cycles without any activity at the ports (a command or result taken, a memory read or write, a
 /// pixel, a Phong constant written) after which a run is stopped as hung: more than any one triangle can
@@ -486,6 +628,7 @@ impl<T: ChipsetTop> Block for Ports<'_, T> {
         probe.visit_start_scope(name, self);
         self.0.accept_host(probe);
         self.0.accept_rc_memory(probe);
+        self.0.accept_texture(probe);
         probe.visit_end_scope(name, self);
     }
 }
@@ -500,6 +643,7 @@ impl<T: ChipsetTop> RtlChipsetOf<T> {
     pub fn with_vcd_scope(screen: Screen, vcd: Option<PathBuf>, scope: VcdScope) -> Result<RtlChipsetOf<T>, String> {
         let mut uut = Box::new(T::build(screen.width, screen.height)?);
         uut.connect_all();
+        let textured = uut.texture().is_some();
         check_all(uut.as_ref()).map_err(|e| format!("chipset: rust-hdl check failed: {e:?}"))?;
         let vcd_path = vcd.clone();
         let vcd = match vcd {
@@ -530,6 +674,11 @@ impl<T: ChipsetTop> RtlChipsetOf<T> {
             id_rd: 0,
             is_rd: 0,
             t_rd: TdbsRecord::default(),
+            tdbt: if textured { vec![TdbtRecord::default(); 2 << 16] } else { Vec::new() },
+            tt_rd: TdbtRecord::default(),
+            tex_banks: None,
+            tex_rd: [0; 4],
+            edge_tex: TexTraffic::default(),
             cycle: 0,
             phases: PhaseCycles::default(),
             frame_phases: Vec::new(),
@@ -590,6 +739,13 @@ impl<T: ChipsetTop> RtlChipsetOf<T> {
         u.is_rd_data.next = (self.is_rd as u64).into();
         u.t_rd_data.next = self.t_rd;
         u.clock.next = false.into();
+        let (tt_rd, tex_rd) = (self.tt_rd, self.tex_rd);
+        if let Some(x) = self.uut.texture() {
+            x.tt_rd_data.next = tt_rd;
+            for (d, v) in x.tex_data.into_iter().zip(tex_rd) {
+                d.next = v.into();
+            }
+        }
         self.settle()
     }
 
@@ -634,6 +790,34 @@ impl<T: ChipsetTop> RtlChipsetOf<T> {
             self.tdbs[a] = u.t_wr_data.val();
             t.tdbs_writes += 1;
         }
+        let covered = u.is_re.val() && self.is_rd != INDEX_BACKGROUND;
+        let mut x = TexTraffic::default();
+        if let Some(p) = self.uut.texture() {
+            x.covered_reads = covered as u64;
+            if p.tt_re.val() {
+                self.tt_rd = self.tdbt[p.tt_rd_addr.val().index()];
+                x.tdbt_reads += 1;
+            }
+            if p.tt_we.val() {
+                self.tdbt[p.tt_wr_addr.val().index()] = p.tt_wr_data.val();
+                x.tdbt_writes += 1;
+            }
+            let rd = p.tex_rd.val().to_u64();
+            if rd != 0 {
+                let banks = self.tex_banks.as_ref().ok_or_else(|| format!("chipset: a texture read in cycle {cycle} with no texture loaded"))?;
+                for k in 0..4 {
+                    if rd >> k & 1 == 1 {
+                        let a = p.tex_addr[k].val().index();
+                        let w = banks[k].get(a).ok_or_else(|| format!("chipset: texture bank {k} read at {a:#x}, outside its {} words, in cycle {cycle}", banks[k].len()))?;
+                        self.tex_rd[k] = tdata_of(*w) as u64;
+                        x.bank_words += 1;
+                    }
+                }
+                x.footprints += 1;
+            }
+        }
+        self.edge_tex = x;
+        let u = self.uut.host();
         u.clock.next = true.into();
         self.settle()?;
         self.cycle += 1;
@@ -649,6 +833,9 @@ impl<T: ChipsetTop> RtlChipsetOf<T> {
         u.video_tready.next = true;
         // Phong-constant writes: none, and payloads 0.
         crate::cs::color_shader_bench::drive_config(&mut *self.uut, None);
+        if let Some(x) = self.uut.texture() {
+            x.tex_base_we.next = false;
+        }
     }
 
     /// A cycle budget that no correct frame reaches: a hang is an error, not an endless loop.
@@ -696,20 +883,56 @@ pub(crate) struct FrameRun {
     pub scan_begin: Option<u64>,
     pub scan_taken: Option<u64>,
     pub scan_done: Option<u64>,
+    /// The frame's texture, when it is textured.
+    pub tex: Option<FrameTexture>,
+    /// The texture ports' words while the frame was drawn (TdbT writes) and scanned out.
+    pub tex_traffic: TexTraffic,
+}
+
+/// A textured frame's texture as the host loads it: the CS's settings, its level table and the four
+/// banks' contents (`golden::texbank`).
+pub(crate) struct FrameTexture {
+    pub w0_log2: u32,
+    pub h0_log2: u32,
+    pub last_level: u32,
+    /// 0 nearest, 1 bilinear, 2 trilinear.
+    pub filter: u64,
+    pub clamp: bool,
+    /// Each level's first word in the banks.
+    pub bases: Vec<u32>,
+    pub banks: std::sync::Arc<[Vec<[u8; 3]>; 4]>,
+    /// Texels per footprint: 1 nearest, 4 bilinear and trilinear.
+    pub texels_per_footprint: u64,
+}
+
+impl FrameTexture {
+    pub(crate) fn of(t: &golden::render::Texturing) -> FrameTexture {
+        let geoms = golden::texbank::layout(&t.texture);
+        FrameTexture {
+            w0_log2: geoms[0].w_log2,
+            h0_log2: geoms[0].h_log2,
+            last_level: geoms.len() as u32 - 1,
+            filter: crate::cs::texture_sampler_bench::filter_code(t.filter),
+            clamp: t.wrap == golden::texture::Wrap::ClampToEdge,
+            bases: geoms.iter().map(|g| g.base).collect(),
+            banks: std::sync::Arc::new(golden::texbank::banks(&t.texture)),
+            texels_per_footprint: if t.filter == golden::texture::Filter::Nearest { 1 } else { 4 },
+        }
+    }
 }
 
 /// Why the RTL chipsets refuse a textured frame (the CLI says it before it simulates anything).
 pub fn texturing_unsupported(t: &golden::render::Texturing) -> String {
     format!(
-        "texture mapping ({}) is in the golden model only so far: the chipset's RTL has no texture port yet (issue 17); use --backend golden, or --no-texture to draw the scene untextured",
+        "texture mapping ({}) needs the textured chipset (`chipset_tex`, --backend rtl); this top has no texture port. Use --backend rtl or golden, or --no-texture to draw the scene untextured",
         t.source
     )
 }
 
 impl FrameRun {
     /// The RC words and scan parameters of `job`; `clear`: the frame clears its bank itself.
-    pub(crate) fn new(job: &FrameJob, clear: bool) -> Result<FrameRun, String> {
-        if let Some(t) = &job.texturing {
+    pub(crate) fn new(job: &FrameJob, clear: bool, textured_top: bool) -> Result<FrameRun, String> {
+        if let (Some(t), false) = (&job.texturing, textured_top) {
             return Err(texturing_unsupported(t));
         }
         let cmds = crate::rc::stimulus::job_frame(job, clear)?;
@@ -733,6 +956,22 @@ impl FrameRun {
             scan_begin: None,
             scan_taken: None,
             scan_done: None,
+            tex: job.texturing.as_ref().map(FrameTexture::of),
+            tex_traffic: TexTraffic::default(),
+        })
+    }
+
+    /// Writes before the scan starts: the Phong constants, then the level table.
+    fn config_writes(&self) -> usize {
+        self.config.len() + self.tex.as_ref().map_or(0, |t| t.bases.len())
+    }
+
+    /// What the CS's texture path did in this frame, counted at the ports.
+    fn texture_counts(&self) -> Option<golden::render::TextureCounts> {
+        self.tex.as_ref().map(|t| golden::render::TextureCounts {
+            samples: self.tex_traffic.covered_reads,
+            texels_read: self.tex_traffic.footprints * t.texels_per_footprint,
+            bank_words: self.tex_traffic.bank_words,
         })
     }
 
@@ -795,7 +1034,7 @@ impl<T: ChipsetTop> Chipset for RtlChipsetOf<T> {
     fn run(&mut self, jobs: &[FrameJob], host: &mut dyn LowerPipeline) -> Result<Vec<FrameOut>, String> {
         let mut frames = Vec::with_capacity(jobs.len());
         for job in jobs {
-            frames.push(FrameRun::new(job, self.frames_started < 2)?);
+            frames.push(FrameRun::new(job, self.frames_started < 2, self.uut.texture().is_some())?);
             self.frames_started += 1;
         }
         let nf = frames.len();
@@ -803,7 +1042,7 @@ impl<T: ChipsetTop> Chipset for RtlChipsetOf<T> {
         let mut outs: Vec<Option<FrameOut>> = vec![None; nf];
         let mut rgb: Vec<u8> = Vec::with_capacity(w * h * 3);
         let (mut rc_f, mut rc_next, mut res_f, mut draw_f, mut scan_f) = (0usize, 0usize, 0usize, 0usize, 0usize);
-        let mut queue: VecDeque<(usize, hdl::cs::SetupCommand)> = VecDeque::new();
+        let mut queue: VecDeque<(usize, hdl::cs::SetupCommand, TexValues)> = VecDeque::new();
         let mut scan = ScanState::Wait;
         let mut pixels = 0usize;
         let work: u64 = jobs.iter().map(|j| self.screen.pixels() as u64 + 128 * j.tris.len() as u64).sum();
@@ -836,24 +1075,50 @@ impl<T: ChipsetTop> Chipset for RtlChipsetOf<T> {
             }
             // Lower pipeline: the queued colour-setup commands.
             let setup_offer = !queue.is_empty() && setup_presenting;
-            if let (true, Some((f, c))) = (setup_offer, queue.front()) {
+            if let (true, Some((f, c, tv))) = (setup_offer, queue.front()) {
                 let u = self.uut.host();
                 u.setup_cmd.valid.next = true;
                 u.setup_cmd.data.next = *c;
+                if let Some(x) = self.uut.texture() {
+                    x.setup_tex.next = *tv;
+                }
                 frames[*f].setup_first.get_or_insert(self.cycle);
             }
             // Scan-out of frame scan_f.
             if scan == ScanState::Wait && frames[scan_f].drawn.is_some() && (scan_f == 0 || frames[scan_f - 1].scan_done.is_some()) {
                 frames[scan_f].scan_begin = Some(self.cycle);
-                scan = if frames[scan_f].config.is_empty() { ScanState::Start } else { ScanState::Config(0) };
+                scan = if frames[scan_f].config_writes() == 0 { ScanState::Start } else { ScanState::Config(0) };
+                // No scan runs: the host loads the frame's texture into the banks.
+                if let Some(t) = &frames[scan_f].tex {
+                    self.tex_banks = Some(t.banks.clone());
+                }
             }
             let sf = &frames[scan_f];
             let u = self.uut.host();
             u.scan_background.next = (sf.background as u64).into();
             u.scan_clear_behind.next = true;
             u.scan_phong.next = sf.phong;
+            if let Some(x) = self.uut.texture() {
+                x.scan_texture.next = sf.tex.is_some();
+                if let Some(t) = &sf.tex {
+                    x.tex_w0_log2.next = (t.w0_log2 as u64).into();
+                    x.tex_h0_log2.next = (t.h0_log2 as u64).into();
+                    x.tex_last_level.next = (t.last_level as u64).into();
+                    x.tex_filter.next = t.filter.into();
+                    x.tex_clamp.next = t.clamp;
+                }
+            }
             match scan {
-                ScanState::Config(k) => crate::cs::color_shader_bench::drive_config(&mut *self.uut, Some(sf.config[k])),
+                ScanState::Config(k) if k < sf.config.len() => crate::cs::color_shader_bench::drive_config(&mut *self.uut, Some(sf.config[k])),
+                ScanState::Config(k) => {
+                    let level = k - sf.config.len();
+                    let base = sf.tex.as_ref().map_or(0, |t| t.bases[level]);
+                    if let Some(x) = self.uut.texture() {
+                        x.tex_base_we.next = true;
+                        x.tex_base_sel.next = (level as u64).into();
+                        x.tex_base_data.next = (base as u64).into();
+                    }
+                }
                 ScanState::Start => self.uut.host().scan_start.next = true,
                 _ => {}
             }
@@ -905,7 +1170,8 @@ impl<T: ChipsetTop> Chipset for RtlChipsetOf<T> {
                 } else if frames[res_f].result(tri_result(&r))? {
                     let position = frames[res_f].results.len() - 1;
                     let c = host.visible(res_f, position)?;
-                    queue.push_back((res_f, command_of(&SetupCmd::from_command(&c)?)));
+                    let tv = crate::cs::pack::tex_values_of(&c.tex.unwrap_or_default());
+                    queue.push_back((res_f, command_of(&SetupCmd::from_command(&c)?), tv));
                 }
             }
             let words = self.high()?;
@@ -914,11 +1180,14 @@ impl<T: ChipsetTop> Chipset for RtlChipsetOf<T> {
             if let Some(fr) = frames.get_mut(res_f) {
                 fr.traffic.add_rc(&words);
             }
+            let tex_words = self.edge_tex;
             if let Some(fr) = frames.get_mut(draw_f) {
                 fr.traffic.tdbs_writes += words.tdbs_writes;
+                fr.tex_traffic.tdbt_writes += tex_words.tdbt_writes;
             }
             if let Some(fr) = frames.get_mut(scan_f) {
                 fr.traffic.add_scan(&words);
+                fr.tex_traffic.add(&TexTraffic { tdbt_writes: 0, ..tex_words });
             }
             let now = self.cycle;
             if rc_taken {
@@ -957,7 +1226,7 @@ impl<T: ChipsetTop> Chipset for RtlChipsetOf<T> {
                 draw_f += 1;
             }
             match scan {
-                ScanState::Config(k) => scan = if k + 1 == frames[scan_f].config.len() { ScanState::Start } else { ScanState::Config(k + 1) },
+                ScanState::Config(k) => scan = if k + 1 == frames[scan_f].config_writes() { ScanState::Start } else { ScanState::Config(k + 1) },
                 ScanState::Start if start_taken => {
                     frames[scan_f].scan_taken = Some(now - 1);
                     scan = ScanState::Running;
@@ -978,6 +1247,7 @@ impl<T: ChipsetTop> Chipset for RtlChipsetOf<T> {
                 frames[scan_f].scan_done = Some(now);
                 let out = outs[scan_f].as_mut().ok_or("chipset: a frame scanned out before its end of frame")?;
                 out.scan.rgb = std::mem::replace(&mut rgb, Vec::with_capacity(w * h * 3));
+                out.texture_counts = frames[scan_f].texture_counts();
                 (scan, pixels) = (ScanState::Wait, 0);
                 scan_f += 1;
             }

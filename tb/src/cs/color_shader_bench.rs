@@ -217,6 +217,7 @@ config_ports_of!(ColorShader);
 config_ports_of!(ColorShaderTex);
 config_ports_of!(hdl::chipset::Chipset);
 config_ports_of!(hdl::chipset::chipset3::Chipset3);
+config_ports_of!(hdl::chipset::chipset_tex::ChipsetTex);
 
 /// Drive one cycle's Phong-constant write (or none) onto a block's write ports.
 pub fn drive_config(u: &mut impl ConfigPorts, c: Option<CsConfigWrite>) {

@@ -482,7 +482,7 @@ impl Chipset for VerilatorChipset {
     fn run(&mut self, jobs: &[FrameJob], host: &mut dyn LowerPipeline) -> Result<Vec<FrameOut>, String> {
         let mut frames = Vec::with_capacity(jobs.len());
         for job in jobs {
-            let fr = FrameRun::new(job, self.frames_started < 2)?;
+            let fr = FrameRun::new(job, self.frames_started < 2, false)?;
             self.frames_started += 1;
             let mut words = Vec::with_capacity(RC_WORDS * (fr.words.len() + 6 * fr.config.len()));
             for w in &fr.words {
