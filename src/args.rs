@@ -152,7 +152,7 @@ pub struct RenderArgs {
     pub opacity: Option<f64>,
     /// Texture every triangle with this PNG or JPEG (width and height powers of two, at most 1024),
     /// instead of the scene's own texture (OBJ `map_Kd`, or teapot-floor's built-in checker). The
-    /// scene needs texture coordinates (OBJ `vt`; the built-in teapot has GLUT's). Golden backend.
+    /// scene needs texture coordinates (OBJ `vt`; the built-in teapot has GLUT's). Golden or rtl backend.
     #[arg(long)]
     pub texture: Option<PathBuf>,
     /// Draw a textured scene (OBJ `map_Kd`, teapot-floor) without its texture.

@@ -6,7 +6,9 @@
 //! under the same host program, then compares its frame with the golden model's (image, I-buffer,
 //! Z-buffer, per-triangle results) and fails, after writing its outputs, if they differ. It also
 //! writes `cycles.json` (cycles per phase, words on each memory port), `chipset.v` (the Verilog of the
-//! simulated top, for this screen size; `chipset3.v` for `--type III`, the top without a Z-buffer) and, with `--vcd`, `frame.vcd` (the top's ports; `--vcd-full`: every signal).
+//! simulated top, for this screen size; `chipset3.v` for `--type III`, the top without a Z-buffer;
+//! `chipset_tex.v` for a textured scene, the top with TdbT and the texture banks) and, with `--vcd`,
+//! `frame.vcd` (the top's ports; `--vcd-full`: every signal).
 
 use crate::args::{BackendArg, RenderArgs};
 use golden::render::{render, render_frames_with, Frame, RenderOptions};
@@ -23,8 +25,11 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         return Err("--vcd needs --backend rtl or --backend verilator".into());
     }
     if args.backend != BackendArg::Golden {
-        if let Some(t) = &opts.texturing {
+        if let (Some(t), BackendArg::Verilator) = (&opts.texturing, args.backend) {
             return Err(tb::chipset::texturing_unsupported(t));
+        }
+        if let (Some(_), golden::raster::RcType::III) = (&opts.texturing, opts.rc_type) {
+            return Err("texture mapping through the RTL: the textured chipset (`chipset_tex`) has the Type IV RC; drop --type III, or use --backend golden".into());
         }
         if opts.index_bits > RTL_INDEX_BITS {
             return Err(format!(
@@ -141,6 +146,7 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
     crate::output::write_atomic(od.dir(), "stats.json", serde_json::to_string_pretty(&stats).unwrap().as_bytes())?;
     files.push(crate::output::write_atomic(od.dir(), "cycles.json", serde_json::to_string_pretty(&cycles).unwrap().as_bytes())?);
     let (v, vname) = match opts.rc_type {
+        golden::raster::RcType::IV if opts.texturing.is_some() => (hdl::chipset::chipset_tex::verilog(opts.screen.width, opts.screen.height)?, "chipset_tex.v"),
         golden::raster::RcType::IV => (hdl::chipset::verilog(opts.screen.width, opts.screen.height)?, "chipset.v"),
         golden::raster::RcType::III => (hdl::chipset::chipset3::verilog(opts.screen.width, opts.screen.height)?, "chipset3.v"),
     };
@@ -212,6 +218,7 @@ fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions, dir: &std::path
     let mut chip: Box<dyn tb::backend::CycleChipset> = match args.backend {
         BackendArg::Verilator => Box::new(tb::verilator::VerilatorChipset::of_type(opts.rc_type, opts.screen, vcd_file, scope)?.with_progress(progress)),
         _ => match opts.rc_type {
+            golden::raster::RcType::IV if opts.texturing.is_some() => Box::new(tb::chipset::RtlChipsetTex::with_vcd_scope(opts.screen, vcd_file, scope)?.with_progress(progress)),
             golden::raster::RcType::IV => Box::new(tb::chipset::RtlChipset::with_vcd_scope(opts.screen, vcd_file, scope)?.with_progress(progress)),
             golden::raster::RcType::III => Box::new(tb::chipset::RtlChipset3::with_vcd_scope(opts.screen, vcd_file, scope)?.with_progress(progress)),
         },

@@ -107,6 +107,29 @@ fn phong_through_the_rtl_backend_writes_the_golden_files_byte_for_byte() {
 }
 
 #[test]
+fn a_textured_scene_through_the_rtl_backend_writes_the_golden_files_byte_for_byte_and_chipset_tex_v() {
+    // teapot-floor with its checker, trilinear: the `chipset_tex` top (RC, textured setup, cs_tex).
+    let d = temp_dir("tex");
+    let (g, r) = (d.join("golden"), d.join("rtl"));
+    let common = ["render", "--scene", "teapot-floor", "--size", "48x32", "--shading", "phong", "--texture-filter", "trilinear"];
+    let (ok, _, err) = run(&[&common[..], &["--out", g.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    let (ok, out, err) = run(&[&common[..], &["--backend", "rtl", "--out", r.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    assert!(out.contains("RTL frame equals the golden model's"), "{out}");
+    for f in ["frame.png", "index.bin", "index.png"] {
+        assert!(read(&g, f) == read(&r, f), "{f} differs between --backend golden and --backend rtl");
+    }
+    // The texture counts, which the RTL backend counts at the top's ports, are the golden model's.
+    let stats = |dir: &Path| serde_json::from_slice::<serde_json::Value>(&read(dir, "stats.json")).unwrap()["stats"]["texture"].clone();
+    assert!(stats(&r)["bank_words_read"].as_u64().is_some_and(|w| w > 0), "{}", stats(&r));
+    assert_eq!(stats(&g), stats(&r), "texture counts");
+    let v = String::from_utf8(read(&r, "chipset_tex.v")).unwrap();
+    assert!(v.contains("module chipset_tex("), "chipset_tex.v has no top module named chipset_tex");
+    assert!(!r.join("chipset.v").exists(), "a textured run writes the textured top's Verilog, not chipset.v");
+}
+
+#[test]
 fn bad_input_through_the_rtl_backend_gives_clean_errors_and_keeps_earlier_outputs() {
     let d = temp_dir("bad");
     let o = d.join("out");

@@ -924,7 +924,7 @@ impl FrameTexture {
 /// Why the RTL chipsets refuse a textured frame (the CLI says it before it simulates anything).
 pub fn texturing_unsupported(t: &golden::render::Texturing) -> String {
     format!(
-        "texture mapping ({}) needs the textured chipset (`chipset_tex`, --backend rtl); this top has no texture port. Use --backend rtl or golden, or --no-texture to draw the scene untextured",
+        "texture mapping ({}) needs the textured chipset (`chipset_tex`), which runs under --backend rtl (the RustHDL simulation) so far, not yet under Verilator; use --backend rtl or golden, or --no-texture to draw the scene untextured",
         t.source
     )
 }
