@@ -25,9 +25,6 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         return Err("--vcd needs --backend rtl or --backend verilator".into());
     }
     if args.backend != BackendArg::Golden {
-        if let (Some(t), BackendArg::Verilator) = (&opts.texturing, args.backend) {
-            return Err(tb::chipset::texturing_unsupported(t));
-        }
         if let (Some(_), golden::raster::RcType::III) = (&opts.texturing, opts.rc_type) {
             return Err("texture mapping through the RTL: the textured chipset (`chipset_tex`) has the Type IV RC; drop --type III, or use --backend golden".into());
         }
@@ -140,6 +137,8 @@ pub fn run_render(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions) -> Resul
         "memory_words": tb::chipset::PortTraffic::FIELDS.iter().zip(phases.traffic.to_vec()).map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect::<serde_json::Map<String, serde_json::Value>>(),
         "rasterization_bytes_read": phases.traffic.rasterization_bytes().0,
         "rasterization_bytes_written": phases.traffic.rasterization_bytes().1,
+        // A textured frame's words on the texture ports (TdbT, the four texture banks), counted there.
+        "texture_words": opts.texturing.as_ref().map(|_| phases.texture.fields().iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect::<serde_json::Map<String, serde_json::Value>>()),
     });
     stats["cycles"] = cycles.clone();
     // stats.json again, now with the cycle counts.
@@ -216,6 +215,7 @@ fn run_rtl(args: &RenderArgs, mesh: &Mesh, opts: &RenderOptions, dir: &std::path
     // --backend verilator: the same host program and memories around the generated Verilog (built
     // once per screen size into target/verilator/, see tb::verilator).
     let mut chip: Box<dyn tb::backend::CycleChipset> = match args.backend {
+        BackendArg::Verilator if opts.texturing.is_some() => Box::new(tb::verilator::VerilatorChipset::textured(opts.screen, vcd_file, scope)?.with_progress(progress)),
         BackendArg::Verilator => Box::new(tb::verilator::VerilatorChipset::of_type(opts.rc_type, opts.screen, vcd_file, scope)?.with_progress(progress)),
         _ => match opts.rc_type {
             golden::raster::RcType::IV if opts.texturing.is_some() => Box::new(tb::chipset::RtlChipsetTex::with_vcd_scope(opts.screen, vcd_file, scope)?.with_progress(progress)),

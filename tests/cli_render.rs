@@ -338,8 +338,6 @@ fn a_texture_file_textures_the_teapot_and_bad_texture_input_is_an_error_naming_i
     assert_clean_error(&["render", "--scene", "polyhedron", "--texture", good.to_str().unwrap(), "--out", o], "no texture coordinates");
     assert_clean_error(&["render", "--scene", "polyhedron", "--texture-filter", "nearest", "--out", o], "--texture-filter needs a texture");
     assert_clean_error(&["render", "--scene", "teapot-floor", "--texture-filter", "cubic", "--out", o], "cubic");
-    assert_clean_error(&["render", "--scene", "teapot-floor", "--backend", "verilator", "--out", o], "--backend rtl");
-    assert_clean_error(&["render", "--scene", "teapot-floor", "--backend", "verilator", "--out", o], "--no-texture");
     assert_clean_error(&["render", "--scene", "teapot-floor", "--backend", "rtl", "--type", "III", "--out", o], "--type III");
     assert_clean_error(&["render", "--scene", "teapot", "--texture", good.to_str().unwrap(), "--arch", "proof", "--out", o], "--arch index");
     assert_clean_error(&["render", "--scene", "teapot-floor", "--no-texture", "--texture-filter", "nearest", "--out", o], "--no-texture");

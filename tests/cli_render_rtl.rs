@@ -107,7 +107,7 @@ fn phong_through_the_rtl_backend_writes_the_golden_files_byte_for_byte() {
 }
 
 #[test]
-fn a_textured_scene_through_the_rtl_backend_writes_the_golden_files_byte_for_byte_and_chipset_tex_v() {
+fn a_textured_scene_through_both_rtl_backends_writes_the_golden_files_byte_for_byte_and_chipset_tex_v() {
     // teapot-floor with its checker, trilinear: the `chipset_tex` top (RC, textured setup, cs_tex).
     let d = temp_dir("tex");
     let (g, r) = (d.join("golden"), d.join("rtl"));
@@ -127,6 +127,23 @@ fn a_textured_scene_through_the_rtl_backend_writes_the_golden_files_byte_for_byt
     let v = String::from_utf8(read(&r, "chipset_tex.v")).unwrap();
     assert!(v.contains("module chipset_tex("), "chipset_tex.v has no top module named chipset_tex");
     assert!(!r.join("chipset.v").exists(), "a textured run writes the textured top's Verilog, not chipset.v");
+    // The same run on the generated Verilog: the same files, the same cycles as the RustHDL run.
+    if !tb::common::require_tools("a_textured_scene_through_both_rtl_backends_writes_the_golden_files_byte_for_byte_and_chipset_tex_v", &["verilator"]) {
+        return;
+    }
+    let vr = d.join("verilator");
+    let (ok, out, err) = run(&[&common[..], &["--backend", "verilator", "--out", vr.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    assert!(out.contains("RTL frame equals the golden model's"), "{out}");
+    for f in ["frame.png", "index.bin", "index.png", "chipset_tex.v"] {
+        assert!(read(&r, f) == read(&vr, f), "{f} differs between --backend rtl and --backend verilator");
+    }
+    let cycles = |dir: &Path| serde_json::from_slice::<serde_json::Value>(&read(dir, "cycles.json")).unwrap();
+    assert!(cycles(&r)["texture_words"]["texture_bank_words"].as_u64().is_some_and(|w| w > 0), "{}", cycles(&r));
+    for k in ["clear", "rasterization", "colour_setup", "scan_out", "total", "memory_words", "texture_words"] {
+        assert_eq!(cycles(&r)[k], cycles(&vr)[k], "cycles.json's {k}: --backend rtl vs verilator");
+    }
+    assert_eq!(stats(&g), stats(&vr), "texture counts (Verilator)");
 }
 
 #[test]

@@ -83,6 +83,8 @@ pub struct PhaseCycles {
     pub z_reads: u64,
     /// Words on each memory port for this frame, counted at the top's ports.
     pub traffic: PortTraffic,
+    /// Words on the texture ports (`chipset_tex`; zero on the other tops and in untextured frames).
+    pub texture: TexTraffic,
 }
 
 /// Words read and written on each memory port of a chipset top for one frame: the draw side (the RC
@@ -584,6 +586,10 @@ pub struct TexTraffic {
 }
 
 impl TexTraffic {
+    /// Field names and values, for `cycles.json`.
+    pub fn fields(&self) -> [(&'static str, u64); 5] {
+        [("tdbt_reads", self.tdbt_reads), ("tdbt_writes", self.tdbt_writes), ("texture_bank_words", self.bank_words), ("texture_footprints", self.footprints), ("covered_scan_reads", self.covered_reads)]
+    }
     fn add(&mut self, t: &TexTraffic) {
         self.tdbt_reads += t.tdbt_reads;
         self.tdbt_writes += t.tdbt_writes;
@@ -924,7 +930,7 @@ impl FrameTexture {
 /// Why the RTL chipsets refuse a textured frame (the CLI says it before it simulates anything).
 pub fn texturing_unsupported(t: &golden::render::Texturing) -> String {
     format!(
-        "texture mapping ({}) needs the textured chipset (`chipset_tex`), which runs under --backend rtl (the RustHDL simulation) so far, not yet under Verilator; use --backend rtl or golden, or --no-texture to draw the scene untextured",
+        "texture mapping ({}): this top has no texture port; the textured chipset is `chipset_tex` (RtlChipsetTex, VerilatorChipset::textured, which `render` picks for a textured scene), or use --no-texture to draw the scene untextured",
         t.source
     )
 }
@@ -962,12 +968,12 @@ impl FrameRun {
     }
 
     /// Writes before the scan starts: the Phong constants, then the level table.
-    fn config_writes(&self) -> usize {
+    pub(crate) fn config_writes(&self) -> usize {
         self.config.len() + self.tex.as_ref().map_or(0, |t| t.bases.len())
     }
 
     /// What the CS's texture path did in this frame, counted at the ports.
-    fn texture_counts(&self) -> Option<golden::render::TextureCounts> {
+    pub(crate) fn texture_counts(&self) -> Option<golden::render::TextureCounts> {
         self.tex.as_ref().map(|t| golden::render::TextureCounts {
             samples: self.tex_traffic.covered_reads,
             texels_read: self.tex_traffic.footprints * t.texels_per_footprint,
@@ -1001,6 +1007,7 @@ impl FrameRun {
             frame_interval: prev_scan_taken.zip(self.scan_taken).map(|(a, b)| b - a),
             z_reads: self.z_reads,
             traffic: self.traffic.clone(),
+            texture: self.tex_traffic,
         }
     }
 }

@@ -104,3 +104,72 @@ fn a_bilinear_teapot_floor_frame_at_320x200_through_the_rtl_chipset_tex_equals_t
     assert_eq!(t.texels_read, 4 * t.samples);
     assert!(t.bank_words_read <= t.texels_read);
 }
+
+/// The generated Verilog of `chipset_tex` under Verilator (`VerilatorChipset::textured`, the harness
+/// built with `TEXTURED`) against golden, and against the RustHDL simulation of the same run: the
+/// same cycle stamps and port counts in every frame (the two host loops are one protocol).
+#[test]
+fn textured_frames_through_the_verilated_chipset_tex_equal_golden_and_the_rusthdl_run_cycle_for_cycle() {
+    if !tb::common::require_tools("textured_frames_through_the_verilated_chipset_tex_equal_golden_and_the_rusthdl_run_cycle_for_cycle", &["verilator"]) {
+        return;
+    }
+    use tb::backend::CycleChipset;
+    use tb::verilator::VerilatorChipset;
+    let screen = Screen::new(64, 40).unwrap();
+    let mesh = builtin::teapot_floor();
+    let p = Coords::Perspective;
+    let frames = [
+        (Shading::Phong, Some(texturing(Filter::Trilinear, Wrap::ClampToEdge, p))),
+        (Shading::Gouraud, None),
+        (Shading::Gouraud, Some(texturing(Filter::Nearest, Wrap::Repeat, p))),
+    ];
+    let jobs: Vec<RenderOptions> = frames.iter().map(|(s, t)| options(&mesh, screen, *s, t.clone())).collect();
+    let refs: Vec<(&Mesh, &RenderOptions)> = jobs.iter().map(|o| (&mesh, o)).collect();
+    let drive = HostDrive::random(20, 30, 29);
+    let mut v = VerilatorChipset::textured(screen, None, tb::chipset::VcdScope::Ports).unwrap().with_drive(drive);
+    let vf = render_frames_with(&refs, &mut v).unwrap_or_else(|e| panic!("Verilator run failed: {e}"));
+    let mut r = RtlChipsetTex::new(screen, None).unwrap().with_drive(drive);
+    let rf = render_frames_with(&refs, &mut r).unwrap_or_else(|e| panic!("RustHDL run failed: {e}"));
+    for (k, opts) in jobs.iter().enumerate() {
+        let golden = render(&mesh, opts).unwrap();
+        if let Some(d) = difference(&golden, &vf[k]) {
+            panic!("frame {}: Verilator: {d}", k + 1);
+        }
+        assert_eq!(vf[k].stats, rf[k].stats, "frame {}: statistics of the two backends", k + 1);
+    }
+    assert_eq!(v.frame_phases(), r.frame_phases(), "cycle stamps and port words per frame");
+    assert_eq!(v.cycles(), r.cycles(), "cycles of the run");
+}
+
+/// Whole textured frames at 320x200 in every filter and at 640x480 through the Verilated
+/// `chipset_tex`, each equal to golden (image, buffers, results, texture counts at the ports).
+#[test]
+fn textured_frames_at_320x200_and_640x480_through_the_verilated_chipset_tex_equal_golden() {
+    if !tb::common::require_tools("textured_frames_at_320x200_and_640x480_through_the_verilated_chipset_tex_equal_golden", &["verilator"]) {
+        return;
+    }
+    use tb::verilator::VerilatorChipset;
+    let mesh = builtin::teapot_floor();
+    let p = Coords::Perspective;
+    let cases = [
+        (320, 200, Shading::Gouraud, texturing(Filter::Nearest, Wrap::Repeat, p)),
+        (320, 200, Shading::Phong, texturing(Filter::Bilinear, Wrap::ClampToEdge, p)),
+        (320, 200, Shading::Gouraud, texturing(Filter::Trilinear, Wrap::Repeat, p)),
+        (320, 200, Shading::Gouraud, texturing(Filter::Bilinear, Wrap::Repeat, Coords::Affine)),
+        (640, 480, Shading::Gouraud, texturing(Filter::Bilinear, Wrap::Repeat, p)),
+        (640, 480, Shading::Phong, texturing(Filter::Trilinear, Wrap::Repeat, p)),
+    ];
+    for (w, h, shading, tx) in cases {
+        let screen = Screen::new(w, h).unwrap();
+        let opts = options(&mesh, screen, shading, Some(tx));
+        let golden = render(&mesh, &opts).unwrap();
+        let mut v = VerilatorChipset::textured(screen, None, tb::chipset::VcdScope::Ports).unwrap();
+        let t0 = std::time::Instant::now();
+        let f = render_frames_with(&[(&mesh, &opts)], &mut v).unwrap_or_else(|e| panic!("{w}x{h}: Verilator run failed: {e}"));
+        let what = format!("{w}x{h} {shading:?} {:?} {:?} {:?}", opts.texturing.as_ref().unwrap().filter, opts.texturing.as_ref().unwrap().wrap, opts.texturing.as_ref().unwrap().coords);
+        if let Some(d) = difference(&golden, &f[0]) {
+            panic!("{what}: {d}");
+        }
+        eprintln!("{what}: {} cycles, scan-out {} cycles, {:.1} s; {:?}", v.cycle, v.phases.scan_out, t0.elapsed().as_secs_f64(), f[0].stats.texture);
+    }
+}

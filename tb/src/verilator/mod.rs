@@ -36,7 +36,7 @@
 
 pub mod shared_lib;
 
-use crate::chipset::{HostDrive, PhaseCycles, PortTraffic, Progress, VcdScope};
+use crate::chipset::{HostDrive, PhaseCycles, PortTraffic, Progress, TexTraffic, VcdScope};
 use golden::format::Plane;
 use golden::raster::RcType;
 use crate::common::workspace_target;
@@ -79,6 +79,7 @@ pub fn module_of(ty: RcType) -> &'static str {
 /// 32-bit words of the packed ports the harness takes (Verilator's VlWide layout: word 0 = bits 31:0).
 const RC_WORDS: usize = 6;
 const SETUP_WORDS: usize = 10;
+const TEX_WORDS: usize = 10;
 
 /// A built harness.
 #[derive(Clone, Debug)]
@@ -133,14 +134,31 @@ pub fn build(screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
 
 /// Build the harness of the chipset of type `ty` (`chipset` or `chipset3`), as [`build`].
 pub fn build_of(ty: RcType, screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
-    let t0 = Instant::now();
-    let version = verilator_version()?;
-    let m = module_of(ty);
     let verilog = match ty {
         RcType::IV => hdl::chipset::verilog(screen.width, screen.height)?,
         RcType::III => hdl::chipset::chipset3::verilog(screen.width, screen.height)?,
     };
-    let flags = verilator_flags(ty, vcd);
+    build_module(module_of(ty), verilog, verilator_flags(ty, vcd), screen, vcd)
+}
+
+/// Build the harness of the textured chipset (`chipset_tex`, the harness with `TEXTURED`), as [`build`].
+pub fn build_tex(screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
+    let verilog = hdl::chipset::chipset_tex::verilog(screen.width, screen.height)?;
+    let mut flags = verilator_flags(RcType::IV, vcd);
+    for f in flags.iter_mut() {
+        if f == "chipset" {
+            *f = "chipset_tex".into();
+        } else if f == "Vchipset" {
+            *f = "Vchipset_tex".into();
+        }
+    }
+    flags.extend(["-CFLAGS".to_string(), "-DTEXTURED".to_string()]);
+    build_module("chipset_tex", verilog, flags, screen, vcd)
+}
+
+fn build_module(m: &str, verilog: String, flags: Vec<String>, screen: Screen, vcd: Option<VcdScope>) -> Result<Build, String> {
+    let t0 = Instant::now();
+    let version = verilator_version()?;
     let vlt = ports_vlt(m);
     let key = format!("{:016x}", fnv1a(&[verilog.as_bytes(), HARNESS_CPP.as_bytes(), vlt.as_bytes(), flags.join(" ").as_bytes(), &version]));
     let name = format!("{m}_{}x{}{}", screen.width, screen.height, trace_suffix(vcd));
@@ -235,6 +253,8 @@ pub struct VerilatorChipset {
     pub screen: Screen,
     /// Type IV (`chipset`) or Type III (`chipset3`).
     pub ty: RcType,
+    /// The textured top (`chipset_tex`, Type IV).
+    pub textured: bool,
     pub cycle: u64,
     pub phases: PhaseCycles,
     /// How the harness was obtained (build time, cache hit).
@@ -272,6 +292,24 @@ impl VerilatorChipset {
         }
         let b = build_of(ty, screen, vcd.as_ref().map(|_| scope))?;
         Self::with_build(ty, screen, vcd, b)
+    }
+
+    /// The textured chipset (`chipset_tex`), as [`VerilatorChipset::with_vcd_scope`].
+    pub fn textured(screen: Screen, vcd: Option<PathBuf>, scope: VcdScope) -> Result<VerilatorChipset, String> {
+        if let Some(p) = &vcd {
+            std::fs::File::create(p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
+        }
+        let b = build_tex(screen, vcd.as_ref().map(|_| scope))?;
+        let mut c = Self::with_build(RcType::IV, screen, vcd, b)?;
+        c.textured = true;
+        Ok(c)
+    }
+
+    /// A textured chipset started from a harness built by [`build_tex`] (without a VCD writer).
+    pub fn from_build_tex(screen: Screen, build: Build) -> Result<VerilatorChipset, String> {
+        let mut c = Self::with_build(RcType::IV, screen, None, build)?;
+        c.textured = true;
+        Ok(c)
     }
 
     /// A Type IV chipset started from a harness already built by [`build`] (without a VCD writer): a
@@ -319,6 +357,7 @@ impl VerilatorChipset {
         let mut c = VerilatorChipset {
             screen,
             ty,
+            textured: false,
             cycle: 0,
             phases: PhaseCycles::default(),
             build,
@@ -482,7 +521,7 @@ impl Chipset for VerilatorChipset {
     fn run(&mut self, jobs: &[FrameJob], host: &mut dyn LowerPipeline) -> Result<Vec<FrameOut>, String> {
         let mut frames = Vec::with_capacity(jobs.len());
         for job in jobs {
-            let fr = FrameRun::new(job, self.frames_started < 2, false)?;
+            let fr = FrameRun::new(job, self.frames_started < 2, self.textured)?;
             self.frames_started += 1;
             let mut words = Vec::with_capacity(RC_WORDS * (fr.words.len() + 6 * fr.config.len()));
             for w in &fr.words {
@@ -495,6 +534,16 @@ impl Chipset for VerilatorChipset {
                 words.extend_from_slice(&[kind, address as u32, slot as u32, data as u32, (data >> 32) as u32, (data >> 64) as u32]);
             }
             self.send(format!("frame {} {} {} {}\n", fr.words.len(), fr.background, fr.phong as u8, fr.config.len()).as_bytes(), &words)?;
+            if let Some(t) = &fr.tex {
+                let size = t.banks[0].len();
+                let mut words = Vec::with_capacity(1 + t.bases.len() + 4 * size);
+                words.push(size as u32);
+                words.extend_from_slice(&t.bases);
+                for b in t.banks.iter() {
+                    words.extend(b.iter().map(|&w| crate::cs::pack::tdata_of(w)));
+                }
+                self.send(format!("texture {} {} {} {} {}\n", t.w0_log2, t.h0_log2, t.bases.len(), t.filter, t.clamp as u8).as_bytes(), &words)?;
+            }
             frames.push(fr);
         }
         let nf = frames.len();
@@ -517,16 +566,21 @@ impl Chipset for VerilatorChipset {
             match f[0].as_str() {
                 "Q" => {
                     let (fi, position) = (num(1)? as usize, num(2)? as usize);
-                    match host.visible(fi, position).and_then(|c| SetupCmd::from_command(&c)) {
-                        Ok(c) => {
+                    let answer = if self.textured { 1 + SETUP_WORDS + TEX_WORDS } else { 1 + SETUP_WORDS };
+                    match host.visible(fi, position).and_then(|c| Ok((SetupCmd::from_command(&c)?, c.tex))) {
+                        Ok((c, tex)) => {
                             let mut words = vec![1u32];
                             let b: Bits<{ hdl::cs::SetupCommand::BITS }> = command_of(&c).into();
                             push_words(b, SETUP_WORDS, &mut words);
+                            if self.textured {
+                                let t: Bits<{ hdl::cs::TexValues::BITS }> = crate::cs::pack::tex_values_of(&tex.unwrap_or_default()).into();
+                                push_words(t, TEX_WORDS, &mut words);
+                            }
                             self.send(b"", &words)?;
                         }
                         Err(e) => {
                             host_error = Some(e);
-                            self.send(b"", &[0u32; 1 + SETUP_WORDS])?;
+                            self.send(b"", &vec![0u32; answer])?;
                         }
                     }
                 }
@@ -564,13 +618,17 @@ impl Chipset for VerilatorChipset {
                 }
                 "F" => {
                     let fi = num(1)? as usize;
-                    let st = (2..23).map(num).collect::<Result<Vec<i64>, String>>()?;
+                    let fields = if self.textured { 28 } else { 23 };
+                    let st = (2..fields).map(num).collect::<Result<Vec<i64>, String>>()?;
                     let o = |v: i64| (v >= 0).then_some(v as u64);
                     let fr = frames.get_mut(fi).ok_or("verilated chipset: a frame it was not sent")?;
                     (fr.start, fr.first_tri_taken, fr.last_cmd_taken, fr.eof) = (o(st[0]), o(st[1]), st[2] as u64, o(st[3]));
                     (fr.clear_writes, fr.z_reads, fr.setup_first, fr.drawn) = (st[4] as u64, st[5] as u64, o(st[6]), o(st[7]));
                     (fr.scan_begin, fr.scan_taken, fr.scan_done) = (o(st[8]), o(st[9]), o(st[10]));
-                    fr.traffic = PortTraffic::from_slice(&st[11..].iter().map(|&v| v as u64).collect::<Vec<u64>>());
+                    fr.traffic = PortTraffic::from_slice(&st[11..21].iter().map(|&v| v as u64).collect::<Vec<u64>>());
+                    if let [rd, wr, words, footprints, covered] = st[21..] {
+                        fr.tex_traffic = TexTraffic { tdbt_reads: rd as u64, tdbt_writes: wr as u64, bank_words: words as u64, footprints: footprints as u64, covered_reads: covered as u64 };
+                    }
                 }
                 "D" => {
                     self.cycle = num(1)? as u64;
@@ -581,6 +639,11 @@ impl Chipset for VerilatorChipset {
         }
         self.frame_phases = (0..nf).map(|f| frames[f].phases(if f > 0 { frames[f - 1].scan_taken } else { None })).collect();
         self.phases = self.frame_phases.last().cloned().unwrap_or_default();
+        for (o, fr) in outs.iter_mut().zip(&frames) {
+            if let Some(o) = o.as_mut() {
+                o.texture_counts = fr.texture_counts();
+            }
+        }
         outs.into_iter().map(|o| o.ok_or_else(|| "verilated chipset: a frame without output".to_string())).collect()
     }
 }

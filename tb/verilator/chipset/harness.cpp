@@ -1,8 +1,10 @@
 // Verilator harness of the generated `chipset` top (hdl/src/chipset.rs), or with TYPE_III defined of
-// the `chipset3` top (hdl/src/chipset/chipset3.rs: TdbV instead of the Z-buffer), driven from Rust by
-// tb/src/verilator/mod.rs (`VerilatorChipset`) over a pipe.
+// the `chipset3` top (hdl/src/chipset/chipset3.rs: TdbV instead of the Z-buffer), or with TEXTURED
+// defined of the `chipset_tex` top (hdl/src/chipset/chipset_tex.rs: TdbT and four texture banks
+// besides `chipset`'s ports), driven from Rust by tb/src/verilator/mod.rs (`VerilatorChipset`) over a
+// pipe.
 //
-//   usage: Vchipset <width> <height> [vcd-file]      (Vchipset3 for Type III)
+//   usage: Vchipset <width> <height> [vcd-file]      (Vchipset3 for Type III, Vchipset_tex textured)
 //
 // The harness owns the memories behind the top's ports and drives the top exactly as the RustHDL
 // backend tb/src/chipset.rs (`RtlChipset`) does: the same phase loops, the same handshakes, the same
@@ -24,6 +26,9 @@
 //   frame <n> <tdata> <phong> <c>\n + n RC command words of 6 x u32 (190 bits), then c Phong-constant
 //                           writes of 6 x u32 (kind 0 = light, 1 = material; address; slot; 96 data
 //                           bits): queue a frame (background tdata, Phong scan-out if set)
+//   texture <w0_log2> <h0_log2> <levels> <filter> <clamp>\n + 1 word (bank words b), `levels` level
+//                           bases, 4*b texel words (RGB888 as video_tdata, bank 0 first): the last
+//                           queued frame is textured (TEXTURED only; `RtlChipsetTex`'s FrameTexture)
 //   run <budget> <visible_bit> <seed> <gap> <stall>\n
 //                           run the queued frames back to back (the host loop of `RtlChipset::run`,
 //                           with its random gaps and stalls: `HostDrive`, xorshift64* from `seed`)
@@ -31,7 +36,7 @@
 //   quit\n                  exit
 // During `run`, the harness asks for the host's lower pipeline: it writes `Q <frame> <position>\n` and
 // reads back 1 + 10 words: a flag (1 = a command follows; 0 = the host failed, stop the run) and a
-// colour-setup word of 297 bits.
+// colour-setup word of 297 bits (TEXTURED: 1 + 20, then the 297-bit texture values).
 // Harness -> Rust on the protocol channel (the original stdout; the process's stdout is redirected to
 // stderr so that nothing the model prints can corrupt the protocol):
 //   P <done> <total> <phase>\n                        progress
@@ -47,14 +52,19 @@
 //                                                     scan_begin scan_taken scan_done, then the words
 //                                                     on each memory port (tb::chipset::PortTraffic's
 //                                                     order: Z r/w, I r/w, TdbV r/w, TdbS w, scan I
-//                                                     r/w, TdbS r)
+//                                                     r/w, TdbS r; TEXTURED adds `tb::chipset::
+//                                                     TexTraffic`'s 5: TdbT r/w, bank words,
+//                                                     footprints, covered scan reads)
 //   D <cycle>\n                                       the run is done
 //   V\n                                               VCD closed
 // `budget` is the number of cycles after which the run is an error (a hang, not an endless loop).
 
-#ifdef TYPE_III
+#if defined(TYPE_III)
 #include "Vchipset3.h"
 using Top = Vchipset3;
+#elif defined(TEXTURED)
+#include "Vchipset_tex.h"
+using Top = Vchipset_tex;
 #else
 #include "Vchipset.h"
 using Top = Vchipset;
@@ -83,6 +93,17 @@ constexpr int TDBS_WORDS = 14;   // 424-bit TdbS record
 constexpr size_t CONFIG_WORDS = 6;  // one Phong-constant write
 constexpr uint64_t PROGRESS_EVERY = 1 << 16;
 using Record = std::array<uint32_t, TDBS_WORDS>;
+constexpr int TDBT_WORDS = 13;   // 408-bit TdbT record
+constexpr int TEX_WORDS = 10;    // 297-bit texture values
+using TexRecord = std::array<uint32_t, TDBT_WORDS>;
+// tb::chipset::TexTraffic's fields.
+enum TexCount { TT_RD, TT_WR, BANK_WORDS, FOOTPRINTS, COVERED, TEX_COUNTS };
+// A frame's texture as the host loads it (tb::chipset::FrameTexture).
+struct Texture {
+    uint32_t w0_log2 = 0, h0_log2 = 0, last_level = 0, filter = 0, clamp = 0;
+    std::vector<uint32_t> bases;
+    std::array<std::vector<uint32_t>, 4> banks;
+};
 // tb::chipset::PortTraffic's fields.
 enum Port { Z_RD, Z_WR, I_RD, I_WR, TDBV_RD, TDBV_WR, TDBS_WR, SCAN_I_RD, SCAN_I_WR, TDBS_RD, PORTS };
 // A TdbV record: the depth plane.
@@ -115,6 +136,10 @@ class Bench {
         for (size_t i = 0; i < 2 * n; i++) ibuf[i] = (uint32_t(i) * 40503u) & 0xffffu;
         tdbs.assign(2 << 16, Record{});
         t_rd.fill(0);
+#ifdef TEXTURED
+        tdbt.assign(2 << 16, TexRecord{});
+        tt_rd.fill(0);
+#endif
 #if VM_TRACE
         if (vcd) {
             tfp.reset(new VerilatedVcdC);
@@ -157,6 +182,9 @@ class Bench {
         long long start = -1, first_tri_taken = -1, last_cmd_taken = 0, eof = -1, clear_writes = 0, z_reads = 0,
                   setup_first = -1, drawn = -1, scan_begin = -1, scan_taken = -1, scan_done = -1;
         long long traffic[PORTS] = {};
+        std::shared_ptr<Texture> tex;
+        long long tex_traffic[TEX_COUNTS] = {};
+        size_t config_writes() const { return config.size() / CONFIG_WORDS + (tex ? tex->bases.size() : 0); }
     };
     std::vector<Frame> frames;
 
@@ -192,6 +220,13 @@ class Bench {
     std::vector<Record> tdbs;
     uint32_t z_rd = 0, id_rd = 0, is_rd = 0;
     Record t_rd;
+    std::vector<TexRecord> tdbt;
+    TexRecord tt_rd{};
+    // The texture in the four banks (loaded when a textured frame's scan-out begins) and what they
+    // return (latency 1); the texture ports' words in this cycle.
+    std::shared_ptr<Texture> banks;
+    uint32_t tex_rd[4] = {};
+    long long tcounts[TEX_COUNTS] = {};
     uint64_t cycle = 0;
 
     void dump(uint64_t t) {
@@ -215,6 +250,9 @@ class Bench {
         top->material_write_address = 0;
         top->material_write_slot = 0;
         for (int k = 0; k < 3; k++) top->light_write_data[k] = top->material_write_data[k] = 0;
+#ifdef TEXTURED
+        top->tex_base_we = 0;
+#endif
     }
 
     void drive_config(const uint32_t* c) {
@@ -250,6 +288,13 @@ class Bench {
         top->id_rd_data = id_rd;
         top->is_rd_data = is_rd;
         for (int k = 0; k < TDBS_WORDS; k++) top->t_rd_data[k] = t_rd[k];
+#ifdef TEXTURED
+        for (int k = 0; k < TDBT_WORDS; k++) top->tt_rd_data[k] = tt_rd[k];
+        top->tex_data0 = tex_rd[0];
+        top->tex_data1 = tex_rd[1];
+        top->tex_data2 = tex_rd[2];
+        top->tex_data3 = tex_rd[3];
+#endif
         top->clock = 0;
         top->eval();
         dump(cycle * 10);
@@ -328,6 +373,35 @@ class Bench {
             for (int k = 0; k < TDBS_WORDS; k++) r[k] = top->t_wr_data[k];
             counts[TDBS_WR]++;
         }
+#ifdef TEXTURED
+        for (long long& c : tcounts) c = 0;
+        tcounts[COVERED] = (top->is_re && is_rd != 0) ? 1 : 0;  // INDEX_BACKGROUND is 0
+        if (top->tt_re) {
+            tt_rd = tdbt[top->tt_rd_addr & 0x1ffff];
+            tcounts[TT_RD]++;
+        }
+        if (top->tt_we) {
+            TexRecord& r = tdbt[top->tt_wr_addr & 0x1ffff];
+            for (int k = 0; k < TDBT_WORDS; k++) r[k] = top->tt_wr_data[k];
+            tcounts[TT_WR]++;
+        }
+        const uint32_t rd = top->tex_rd;
+        if (rd) {
+            if (!banks) throw Failure{"chipset: a texture read in cycle " + std::to_string(cycle) + " with no texture loaded"};
+            const uint32_t addr[4] = {top->tex_addr0, top->tex_addr1, top->tex_addr2, top->tex_addr3};
+            for (int k = 0; k < 4; k++) {
+                if (!(rd >> k & 1)) continue;
+                const std::vector<uint32_t>& b = banks->banks[k];
+                if (addr[k] >= b.size()) {
+                    throw Failure{"chipset: texture bank " + std::to_string(k) + " read at " + std::to_string(addr[k]) +
+                                  ", outside its " + std::to_string(b.size()) + " words, in cycle " + std::to_string(cycle)};
+                }
+                tex_rd[k] = b[addr[k]];
+                tcounts[BANK_WORDS]++;
+            }
+            tcounts[FOOTPRINTS]++;
+        }
+#endif
         top->clock = 1;
         top->eval();
         dump(cycle * 10 + 5);
@@ -355,6 +429,7 @@ void Bench::run(uint64_t budget) {
     struct Queued {
         size_t frame;
         std::array<uint32_t, SETUP_WORDS> word;
+        std::array<uint32_t, TEX_WORDS> tex;
     };
     std::deque<Queued> queue;
     std::vector<uint32_t> tdata, answer;
@@ -388,19 +463,40 @@ void Bench::run(uint64_t budget) {
         if (setup_offer) {
             top->setup_cmd__024valid = 1;
             for (int k = 0; k < SETUP_WORDS; k++) top->setup_cmd__024data[k] = queue.front().word[k];
+#ifdef TEXTURED
+            for (int k = 0; k < TEX_WORDS; k++) top->setup_tex[k] = queue.front().tex[k];
+#endif
             if (frames[queue.front().frame].setup_first < 0) frames[queue.front().frame].setup_first = (long long)cycle;
         }
         // Scan-out of frame scan_f.
         if (scan == Scan::Wait && frames[scan_f].drawn >= 0 && (scan_f == 0 || frames[scan_f - 1].scan_done >= 0)) {
             frames[scan_f].scan_begin = (long long)cycle;
             config_k = 0;
-            scan = frames[scan_f].config.empty() ? Scan::Start : Scan::Config;
+            scan = frames[scan_f].config_writes() == 0 ? Scan::Start : Scan::Config;
+            // No scan runs: the host loads the frame's texture into the banks.
+            if (frames[scan_f].tex) banks = frames[scan_f].tex;
         }
         Frame& sf = frames[scan_f];
         top->scan_background = sf.background;
         top->scan_clear_behind = 1;
         top->scan_phong = sf.phong;
-        if (scan == Scan::Config) drive_config(&sf.config[config_k * CONFIG_WORDS]);
+        const size_t phong_writes = sf.config.size() / CONFIG_WORDS;
+        if (scan == Scan::Config && config_k < phong_writes) drive_config(&sf.config[config_k * CONFIG_WORDS]);
+#ifdef TEXTURED
+        top->scan_texture = sf.tex ? 1 : 0;
+        if (sf.tex) {
+            top->tex_w0_log2 = sf.tex->w0_log2;
+            top->tex_h0_log2 = sf.tex->h0_log2;
+            top->tex_last_level = sf.tex->last_level;
+            top->tex_filter = sf.tex->filter;
+            top->tex_clamp = sf.tex->clamp;
+            if (scan == Scan::Config && config_k >= phong_writes) {
+                top->tex_base_we = 1;
+                top->tex_base_sel = uint32_t(config_k - phong_writes);
+                top->tex_base_data = sf.tex->bases[config_k - phong_writes];
+            }
+        }
+#endif
         if (scan == Scan::Start) top->scan_start = 1;
         low();
         const bool rc_taken = rc_offer && top->rc_cmd__024ready;
@@ -446,10 +542,16 @@ void Bench::run(uint64_t budget) {
                 if (r & visible_bit) {
                     fprintf(proto_out, "Q %zu %zu\n", res_f, fr.results - 1);
                     fflush(proto_out);
-                    if (!read_words(answer, 1 + SETUP_WORDS)) exit(4);
+#ifdef TEXTURED
+                    const size_t answer_words = 1 + SETUP_WORDS + TEX_WORDS;
+#else
+                    const size_t answer_words = 1 + SETUP_WORDS;
+#endif
+                    if (!read_words(answer, answer_words)) exit(4);
                     if (answer[0] != 1) throw Failure{"host: the lower pipeline failed"};
-                    Queued q{res_f, {}};
+                    Queued q{res_f, {}, {}};
                     for (int k = 0; k < SETUP_WORDS; k++) q.word[k] = answer[1 + k];
+                    for (size_t k = 0; k + 1 + SETUP_WORDS < answer_words; k++) q.tex[k] = answer[1 + SETUP_WORDS + k];
                     queue.push_back(q);
                 }
             }
@@ -462,6 +564,8 @@ void Bench::run(uint64_t budget) {
         }
         if (draw_f < nf) frames[draw_f].traffic[TDBS_WR] += counts[TDBS_WR];
         for (Port p : {SCAN_I_RD, SCAN_I_WR, TDBS_RD}) frames[scan_f].traffic[p] += counts[p];
+        if (draw_f < nf) frames[draw_f].tex_traffic[TT_WR] += tcounts[TT_WR];
+        for (TexCount c : {TT_RD, BANK_WORDS, FOOTPRINTS, COVERED}) frames[scan_f].tex_traffic[c] += tcounts[c];
         const long long now = (long long)cycle;
         if (rc_taken) {
             rc_presenting = false;
@@ -507,7 +611,7 @@ void Bench::run(uint64_t budget) {
         }
         if (scan == Scan::Config) {
             config_k++;
-            if (config_k == frames[scan_f].config.size() / CONFIG_WORDS) scan = Scan::Start;
+            if (config_k == frames[scan_f].config_writes()) scan = Scan::Start;
         } else if (scan == Scan::Start && start_taken) {
             frames[scan_f].scan_taken = now - 1;
             scan = Scan::Running;
@@ -555,6 +659,9 @@ void Bench::run(uint64_t budget) {
                 fr.last_cmd_taken, fr.eof, fr.clear_writes, fr.z_reads, fr.setup_first, fr.drawn, fr.scan_begin,
                 fr.scan_taken, fr.scan_done);
         for (long long t : fr.traffic) fprintf(proto_out, " %lld", t);
+#ifdef TEXTURED
+        for (long long t : fr.tex_traffic) fprintf(proto_out, " %lld", t);
+#endif
         fprintf(proto_out, "\n");
     }
     fprintf(proto_out, "D %llu\n", (unsigned long long)cycle);
@@ -605,6 +712,21 @@ int main(int argc, char** argv) {
                 f.background = uint32_t(b);
                 f.phong = c != 0;
                 bench.frames.push_back(std::move(f));
+            } else if (got == 6 && !strcmp(cmd, "texture")) {
+                if (bench.frames.empty()) throw Failure{"harness: a texture before any frame"};
+                std::vector<uint32_t> size;
+                if (!read_words(size, 1)) return 4;
+                auto t = std::make_shared<Texture>();
+                t->w0_log2 = uint32_t(a);
+                t->h0_log2 = uint32_t(b);
+                t->last_level = uint32_t(c) - 1;
+                t->filter = uint32_t(d);
+                t->clamp = uint32_t(e);
+                if (!read_words(t->bases, size_t(c))) return 4;
+                for (auto& bank : t->banks) {
+                    if (!read_words(bank, size[0])) return 4;
+                }
+                bench.frames.back().tex = t;
             } else if (got == 6 && !strcmp(cmd, "run")) {
                 bench.visible_bit = uint32_t(b);
                 bench.rng = c ? c : 1;
