@@ -235,6 +235,8 @@ fn known_struct(top: &str) -> Option<&'static str> {
         "cs" => "ColorShader",
         "chipset" => "Chipset",
         "chipset3" => "Chipset3",
+        "cs_tex" => "ColorShaderTex",
+        "chipset_tex" => "ChipsetTex",
         _ => return None,
     })
 }
@@ -303,6 +305,8 @@ fn memory_interface(top: &str, screen: (u32, u32)) -> String {
         "colour_setup" => "TdbS (2^16 words x 424 bits, address = triangle index): write port `tdbs_write_enable`/`tdbs_write_address`/`tdbs_write_data`.",
         "chipset" => "Z-buffer (W*H x 24, one bank, the RC's): `z_re`/`z_rd_addr` -> `z_rd_data`, `z_we`/`z_wr_addr`/`z_wr_data`. I-buffer (two banks of W*H x 16, address bit 20 = bank): draw side (the RC, bank `draw_bank`) `id_re`/`id_rd_addr` -> `id_rd_data` (read with the depth), `id_we`/`id_wr_addr`/`id_wr_data`; scan side (the CS, the other bank) `is_re`/`is_rd_addr` -> `is_rd_data`, `is_we`/`is_wr_addr`/`is_wr_data` (clear-behind). TdbS (two banks of 2^16 x 424, address bit 16 = bank): `t_we`/`t_wr_addr`/`t_wr_data` (colour setup, draw bank), `t_re`/`t_rd_addr` -> `t_rd_data` (the CS, scan bank). A scan start the CS takes swaps the banks.",
         "chipset3" => "No Z-buffer. TdbV (2^16 records x 136 bits, one bank, the RC's; address = triangle index, a depth plane: A 40 bits, B 40, C 56): `tdbv_re`/`tdbv_rd_addr` -> `tdbv_rd_a`/`_b`/`_c`, `tdbv_we`/`tdbv_wr_addr`/`tdbv_wr_a`/`_b`/`_c`. I-buffer (two banks of W*H x 16, address bit 20 = bank): draw side (the RC, bank `draw_bank`) `id_re`/`id_rd_addr` -> `id_rd_data` (the index whose plane gives the old depth), `id_we`/`id_wr_addr`/`id_wr_data`; scan side as `chipset`'s. TdbS as `chipset`'s. A scan start the CS takes swaps the banks of the I-buffer and TdbS; TdbV has one bank.",
+        "cs_tex" => "As `cs`, and: TdbT (2^16 x 408, address = triangle index): read port `tdbt_read_enable`/`tdbt_read_address` -> `tdbt_read_data` (beside TdbS, textured frames only). Four texture banks (RGB888 words, `golden::texbank`'s layout: texel (x, y) of a level in bank (x & 1) | (y & 1) << 1 at word base + (y >> 1) * ceil(w / 2) + (x >> 1)): bank k read when bit k of `tex_rd` is set, at `tex_addrk` -> `tex_datak` one cycle later. The level table (each mipmap level's first word) is inside, written through `tex_base_*` while idle.",
+        "chipset_tex" => "As `chipset`, and: TdbT (two banks of 2^16 x 408, address bit 16 = bank): `tt_we`/`tt_wr_addr`/`tt_wr_data` (texture setup, draw bank), `tt_re`/`tt_rd_addr` -> `tt_rd_data` (the CS, scan bank); a scan start swaps them with TdbS. Four texture banks (one set: the frame's texture, loaded by the host while no scan runs): bank k read when bit k of `tex_rd` is set, at `tex_addrk` -> `tex_datak` one cycle later.",
         "opp" => "No external memory: the object parameters are loaded through `load`/`load_op`/`load_params`; the FIFOs are inside.",
         "proof_shade" => "No external memory: the object table and the light parameters are inside (written through `cfg_*`).",
         "proof_filter" => "No external memory: the direction table and the filter's parameters are inside (written through `cfg_*`).",

@@ -28,6 +28,8 @@ pub const TOPS: &[(&str, &str)] = &[
     ("chipset", "The raster chipset for 320x200: RC + colour setup + CS around Z/I-buffer and TdbS memory ports"),
     ("chipset3", "The Type III raster chipset for 320x200 (seed 000): rc3 + colour setup + CS around I-buffer, TdbV and TdbS memory ports, no Z-buffer"),
     ("cs", "Color Shader: I-buffer + TdbS scan-out, 1 pixel/clock, AXI4-Stream video, clear-behind ports"),
+    ("cs_tex", "Textured Color Shader: the cs with TdbT and four texture-bank read ports, per-pixel perspective-correct coordinates, nearest/bilinear at 1 pixel/clock, trilinear at 1 pixel per 2 clocks, MODULATE"),
+    ("chipset_tex", "The textured raster chipset for 320x200: RC + textured setup (colour and texture planes) + cs_tex around Z/I-buffer, TdbS, TdbT and texture-bank memory ports"),
 ];
 
 /// The screen the screen-sized tops are generated for unless another is asked for.
@@ -35,7 +37,7 @@ pub const DEFAULT_SCREEN: (u32, u32) = (320, 200);
 
 /// The tops whose RTL depends on the screen size (address widths, the 2x2 filter's line buffer):
 /// `idxrender verilog --size WxH` applies to these and leaves the others as they are.
-pub const SCREEN_TOPS: &[&str] = &["proof_filter2x2", "rc", "rc3", "chipset", "chipset3"];
+pub const SCREEN_TOPS: &[&str] = &["proof_filter2x2", "rc", "rc3", "chipset", "chipset3", "chipset_tex"];
 
 /// A text written for [`DEFAULT_SCREEN`] ("320x200", "320-column") said of a `screen` of width x
 /// height pixels instead.
@@ -70,6 +72,8 @@ pub fn verilog_top_for(block: &str, screen: (u32, u32)) -> Result<String, String
         "cs" => cs::color_shader_verilog(),
         "chipset" => chipset::verilog(w, h),
         "chipset3" => chipset::chipset3::verilog(w, h),
+        "cs_tex" => cs::color_shader_tex::verilog(),
+        "chipset_tex" => chipset::chipset_tex::verilog(w, h),
         _ => Err(format!(
             "unknown block '{block}': known blocks are {}",
             TOPS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")

@@ -28,12 +28,12 @@ pub const LINT_WAIVERS: &[Waiver] = &[
     Waiver {
         warning: "UNUSEDPARAM",
         why: "rust-hdl copies each block's localparams (enum states, constants) into every child DFF module",
-        tops: &["rc", "rc3", "colour_setup", "cs", "cs_tex", "chipset", "chipset3", "textured_setup"],
+        tops: &["rc", "rc3", "colour_setup", "cs", "cs_tex", "chipset", "chipset3", "chipset_tex", "textured_setup"],
     },
     Waiver {
         warning: "UNOPTFLAT",
         why: "rust-hdl emits a block's combinational logic as one always @(*), so a block that drives a child's inputs (a multiplier, a division step) and reads its outputs is one vertex on a cycle for Verilator's scheduler, though no signal depends on itself (check_all finds no loop, Icarus settles every cycle; on `cs_tex` slowly, about 2 cycles/s, so its replay runs under Verilator)",
-        tops: &["rc", "rc3", "colour_setup", "cs", "cs_tex", "chipset", "chipset3", "tex_coord", "tex_lod", "tex_setup", "textured_setup"],
+        tops: &["rc", "rc3", "colour_setup", "cs", "cs_tex", "chipset", "chipset3", "chipset_tex", "tex_coord", "tex_lod", "tex_setup", "textured_setup"],
     },
 ];
 
