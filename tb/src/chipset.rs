@@ -890,41 +890,9 @@ pub(crate) struct FrameRun {
     pub scan_taken: Option<u64>,
     pub scan_done: Option<u64>,
     /// The frame's texture, when it is textured.
-    pub tex: Option<FrameTexture>,
+    pub tex: Option<crate::cs::color_shader_bench::FrameTexture>,
     /// The texture ports' words while the frame was drawn (TdbT writes) and scanned out.
     pub tex_traffic: TexTraffic,
-}
-
-/// A textured frame's texture as the host loads it: the CS's settings, its level table and the four
-/// banks' contents (`golden::texbank`).
-pub(crate) struct FrameTexture {
-    pub w0_log2: u32,
-    pub h0_log2: u32,
-    pub last_level: u32,
-    /// 0 nearest, 1 bilinear, 2 trilinear.
-    pub filter: u64,
-    pub clamp: bool,
-    /// Each level's first word in the banks.
-    pub bases: Vec<u32>,
-    pub banks: std::sync::Arc<[Vec<[u8; 3]>; 4]>,
-    /// Texels per footprint: 1 nearest, 4 bilinear and trilinear.
-    pub texels_per_footprint: u64,
-}
-
-impl FrameTexture {
-    pub(crate) fn of(t: &golden::render::Texturing) -> FrameTexture {
-        let geoms = golden::texbank::layout(&t.texture);
-        FrameTexture {
-            w0_log2: geoms[0].w_log2,
-            h0_log2: geoms[0].h_log2,
-            last_level: geoms.len() as u32 - 1,
-            filter: crate::cs::texture_sampler_bench::filter_code(t.filter),
-            clamp: t.wrap == golden::texture::Wrap::ClampToEdge,
-            bases: geoms.iter().map(|g| g.base).collect(),
-            banks: std::sync::Arc::new(golden::texbank::banks(&t.texture)),
-            texels_per_footprint: if t.filter == golden::texture::Filter::Nearest { 1 } else { 4 },
-        }
-    }
 }
 
 /// Why the RTL chipsets refuse a textured frame (the CLI says it before it simulates anything).
@@ -962,7 +930,7 @@ impl FrameRun {
             scan_begin: None,
             scan_taken: None,
             scan_done: None,
-            tex: job.texturing.as_ref().map(FrameTexture::of),
+            tex: job.texturing.as_ref().map(crate::cs::color_shader_bench::FrameTexture::of),
             tex_traffic: TexTraffic::default(),
         })
     }

@@ -12,8 +12,7 @@ use crate::cs::replay::{port, PortSpec, Recording};
 use golden::cycle::color_shader::{ColorShaderModel, CsConfigWrite, CsInputs, CsMemories, CsOutputs, ReadPort, VideoBeat, WritePort};
 use hdl::cs::{LightVectors, MaterialWord};
 use golden::render::Texturing;
-use golden::texbank::{banks, layout, Footprint};
-use golden::texture::Wrap;
+use golden::texbank::Footprint;
 use hdl::cs::color_shader::ColorShader;
 use hdl::cs::color_shader_tex::ColorShaderTex;
 use rust_hdl::prelude::*;
@@ -346,6 +345,38 @@ pub struct TexInputs {
     pub data: [u64; 4],
 }
 
+/// A frame's texture as a host loads it into a textured CS (this bench, and the chipset's host loop in
+/// `crate::chipset`): the CS's settings, its level table and the four banks' contents (`golden::texbank`).
+pub struct FrameTexture {
+    pub w0_log2: u32,
+    pub h0_log2: u32,
+    pub last_level: u32,
+    /// 0 nearest, 1 bilinear, 2 trilinear.
+    pub filter: u64,
+    pub clamp: bool,
+    /// Each level's first word in the banks.
+    pub bases: Vec<u32>,
+    pub banks: std::sync::Arc<[Vec<[u8; 3]>; 4]>,
+    /// Texels per footprint: 1 nearest, 4 bilinear and trilinear.
+    pub texels_per_footprint: u64,
+}
+
+impl FrameTexture {
+    pub fn of(t: &golden::render::Texturing) -> FrameTexture {
+        let geoms = golden::texbank::layout(&t.texture);
+        FrameTexture {
+            w0_log2: geoms[0].w_log2,
+            h0_log2: geoms[0].h_log2,
+            last_level: geoms.len() as u32 - 1,
+            filter: crate::cs::texture_sampler_bench::filter_code(t.filter),
+            clamp: t.wrap == golden::texture::Wrap::ClampToEdge,
+            bases: geoms.iter().map(|g| g.base).collect(),
+            banks: std::sync::Arc::new(golden::texbank::banks(&t.texture)),
+            texels_per_footprint: if t.filter == golden::texture::Filter::Nearest { 1 } else { 4 },
+        }
+    }
+}
+
 /// A CS top the bench can drive: `cs` or `cs_tex`.
 pub trait CsUut: Block + Default {
     /// The top's name (the VCD directory, messages).
@@ -483,20 +514,11 @@ fn run_inner<U: CsUut>(
     let mut rtl = if with_rtl { Some(Rtl::<U>::new(vcd).map_err(Stop::Error)?) } else { None };
     // The texture: its level table (written in the first cycles, beside the constants), its banks
     // and settings; the banks answer the last cycle's footprint.
-    let geoms = tex.map_or(Vec::new(), |t| layout(&t.texturing.texture));
-    let banks = tex.map(|t| banks(&t.texturing.texture));
+    let loaded = tex.map(|t| FrameTexture::of(&t.texturing));
     let mut footprint = Footprint::default();
     let settings = |on: bool| -> TexInputs {
-        match tex {
-            Some(t) => TexInputs {
-                enable: on,
-                w0_log2: geoms[0].w_log2,
-                h0_log2: geoms[0].h_log2,
-                last_level: geoms.len() as u32 - 1,
-                filter: crate::cs::texture_sampler_bench::filter_code(t.texturing.filter),
-                clamp: t.texturing.wrap == Wrap::ClampToEdge,
-                ..Default::default()
-            },
+        match &loaded {
+            Some(t) => TexInputs { enable: on, w0_log2: t.w0_log2, h0_log2: t.h0_log2, last_level: t.last_level, filter: t.filter, clamp: t.clamp, ..Default::default() },
             None => TexInputs::default(),
         }
     };
@@ -527,7 +549,7 @@ fn run_inner<U: CsUut>(
         let spec = frames.get(next).copied();
         // The Phong constants go in first, one write per cycle, while the CS is idle.
         let cfg = config.get(cycle as usize).copied();
-        let base = geoms.get(cycle as usize).map(|g| (cycle as u32, g.base));
+        let base = loaded.as_ref().and_then(|t| t.bases.get(cycle as usize)).map(|&base| (cycle as u32, base));
         let textured = tex.is_some_and(|t| t.textured.get(next).copied().unwrap_or(false));
         let start = match spec {
             _ if cfg.is_some() || base.is_some() => false,
@@ -557,7 +579,7 @@ fn run_inner<U: CsUut>(
         // (The random draws only in a textured run: a `cs` run's stimulus is what it was before `cs_tex`.)
         let mut tin = settings(if busy { tex.is_some() && rng.chance(50) } else { textured });
         tin.base = base;
-        if let Some(b) = &banks {
+        if let Some(b) = loaded.as_ref().map(|t| &t.banks) {
             for (k, d) in tin.data.iter_mut().enumerate() {
                 *d = if footprint.read[k] { tdata_of(b[k][footprint.addr[k] as usize]) as u64 } else { noise.next_u64() & 0xff_ffff };
             }
