@@ -20,7 +20,7 @@ pub struct VerilogArgs {
     /// folder holding other files is refused).
     #[arg(long, default_value = "out/verilog")]
     pub out: PathBuf,
-    /// Screen size WxH that the screen-sized tops (proof_filter2x2, rc, rc3, chipset, chipset3) are
+    /// Screen size WxH that the screen-sized tops (proof_filter2x2, rc, rc3, chipset, chipset3, chipset_tex) are
     /// generated for: their address widths and the 2x2 filter's line buffer follow it. The other
     /// tops do not depend on it.
     #[arg(long, default_value = "320x200")]

@@ -19,7 +19,7 @@ pub use div_step::DivStep;
 pub use fast_ram::FastRAM;
 pub use leading_one::LeadingOne36;
 pub use merge_modules::merge_identical_modules;
-pub use mul::{MulS, MulU};
+pub use mul::{LerpDeltaLogic, MulLogicU, MulS, MulU};
 pub use normalize::{LeftAlign, Normalize18};
 pub use stream::{StreamIn, StreamOut};
 

@@ -56,6 +56,77 @@ impl<const A: usize, const B: usize, const P: usize> Logic for MulU<A, B, P> {
     }
 }
 
+/// The Verilog of an unsigned product in logic: one sum of B partial products (`a` shifted by i where
+/// bit i of `b` is set, each extended to P bits by the context), so that Yosys builds an adder tree of
+/// LUTs (its `$macc` mapping) instead of a `$mul` that `synth_ecp5` would put on a MULT18X18D. The
+/// same function as `a * b` truncated to P bits.
+pub fn logic_product_verilog(a_bits: usize, b_bits: usize, p_bits: usize) -> String {
+    assert!(p_bits >= a_bits && b_bits >= 1, "logic product {a_bits}x{b_bits} into {p_bits} bits");
+    let terms: Vec<String> = (0..b_bits)
+        .map(|i| if i == 0 { format!("(b[0] ? a : {p_bits}'d0)") } else { format!("(b[{i}] ? (a << {i}) : {p_bits}'d0)") })
+        .collect();
+    format!("always @(*) p = {};", terms.join("\n    + "))
+}
+
+/// Unsigned A x B -> P bits, in logic rather than on a DSP block ([`logic_product_verilog`]): for the
+/// small products of the texture path (8-bit texels times 8- or 5-bit weights), where a MULT18X18D
+/// would be mostly unused and the chip has too few of them (docs/texture.md, the budget).
+#[derive(LogicBlock, Default)]
+pub struct MulLogicU<const A: usize, const B: usize, const P: usize> {
+    pub a: Signal<In, Bits<A>>,
+    pub b: Signal<In, Bits<B>>,
+    pub p: Signal<Out, Bits<P>>,
+}
+
+impl<const A: usize, const B: usize, const P: usize> Logic for MulLogicU<A, B, P> {
+    fn update(&mut self) {
+        if !self.a.changed && !self.b.changed {
+            return;
+        }
+        let prod = self.a.val().to_u128().wrapping_mul(self.b.val().to_u128());
+        self.p.next = bits_from_u128::<P>(prod);
+    }
+    fn connect(&mut self) {
+        self.p.connect();
+    }
+    fn hdl(&self) -> Verilog {
+        Verilog::Custom(logic_product_verilog(A, B, P))
+    }
+}
+
+/// `(hi - lo) * f` -> P bits, in logic (as [`logic_product_verilog`], with the signed A + 1-bit
+/// difference `hi - lo` in place of `a`): the product of a lerp `lo (2^B - f) + hi f = (lo << B) + (hi - lo) f`. The difference
+/// is taken inside the leaf: Verilator reads a parent that computes a child's input and uses its output
+/// in one `always` block as a combinational loop (UNOPTFLAT) when the child is a sum like this one.
+#[derive(LogicBlock, Default)]
+pub struct LerpDeltaLogic<const A: usize, const B: usize, const P: usize> {
+    pub lo: Signal<In, Bits<A>>,
+    pub hi: Signal<In, Bits<A>>,
+    pub f: Signal<In, Bits<B>>,
+    pub p: Signal<Out, Signed<P>>,
+}
+
+impl<const A: usize, const B: usize, const P: usize> Logic for LerpDeltaLogic<A, B, P> {
+    fn update(&mut self) {
+        if !self.lo.changed && !self.hi.changed && !self.f.changed {
+            return;
+        }
+        let d = self.hi.val().to_u128() as i128 - self.lo.val().to_u128() as i128;
+        self.p.next = from_i128::<P>(d.wrapping_mul(self.f.val().to_u128() as i128));
+    }
+    fn connect(&mut self) {
+        self.p.connect();
+    }
+    fn hdl(&self) -> Verilog {
+        assert!(P > A, "lerp delta {A}x{B} into {P} bits");
+        let d = "($signed({1'b0, hi}) - $signed({1'b0, lo}))";
+        let terms: Vec<String> = (0..B)
+            .map(|i| if i == 0 { format!("(f[0] ? {d} : {P}'sd0)") } else { format!("(f[{i}] ? ({d} <<< {i}) : {P}'sd0)") })
+            .collect();
+        Verilog::Custom(format!("always @(*) p = {};", terms.join("\n    + ")))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

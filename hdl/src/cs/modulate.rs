@@ -3,7 +3,7 @@
 //! and the texture unit. RGB888 packed R in 23:16, G in 15:8, B in 7:0; `rgb_out` is 0 while
 //! `valid_out` is low.
 
-use crate::common::MulU;
+use crate::common::MulLogicU;
 use rust_hdl::prelude::*;
 
 #[derive(LogicBlock)]
@@ -14,7 +14,7 @@ pub struct Modulate {
     pub colour: Signal<In, Bits<24>>,
     pub valid_out: Signal<Out, Bit>,
     pub rgb_out: Signal<Out, Bits<24>>,
-    mm: [MulU<8, 8, 16>; 3],
+    mm: [MulLogicU<8, 8, 16>; 3],
     m_p: [Signal<Local, Bits<16>>; 3],
     m_hi: [Signal<Local, Bits<16>>; 3],
     m_sum: [Signal<Local, Bits<16>>; 3],

@@ -7,8 +7,8 @@
 //! ```text
 //!               +--------------------------------------------------------------------------+
 //!  t00..t11 --->| stage 1: per channel  h0 = t00 (256-fx) + t10 fx,  h1 = t01 (256-fx) + t11 fx |
-//!  fx, fy ----->|          (12 products 8x9)                                                |
-//!  colour ----->| stage 2: per channel  (h0 (256-fy) + h1 fy + 2^15) >> 16  (6 products 17x9) |
+//!  fx, fy ----->|          as lerps (t00 << 8) + (t10 - t00) fx (6 products 9x8, in logic)  |
+//!  colour ----->| stage 2: per channel  (h0 (256-fy) + h1 fy + 2^15) >> 16  (3 lerps 18x8)    |
 //!  valid_in --->| stage 3: per channel  p = texel colour + 128, (p + (p >> 8)) >> 8 (3 x 8x8) |--> rgb_out, valid_out
 //!               +--------------------------------------------------------------------------+
 //! ```
@@ -18,7 +18,7 @@
 //! with one rounding (the two-step form is the same sum), and `h0`, `h1` are at most 255 x 256, so no
 //! stage loses bits. `rgb_out` is 0 while `valid_out` is low.
 
-use crate::common::MulU;
+use crate::common::{LerpDeltaLogic, MulS};
 use crate::cs::modulate::Modulate;
 use rust_hdl::prelude::*;
 
@@ -28,6 +28,10 @@ pub const TEXEL_FILTER_LATENCY: u64 = 3;
 pub const BILINEAR_LATENCY: u64 = 2;
 
 /// The bilinear blend of a footprint: `golden::texture::bilinear`, latency 2.
+///
+/// Each blend is written as a lerp, `a (256 - f) + b f = (a << 8) + (b - a) f`, the same integer
+/// with one product in place of two: the six horizontal products (signed 9 x 8) are in logic
+/// ([`LerpDeltaLogic`]), the three vertical ones (signed 18 x 8) on one multiplier block each.
 #[derive(LogicBlock)]
 pub struct Bilinear {
     pub clock: Signal<In, Clock>,
@@ -43,27 +47,29 @@ pub struct Bilinear {
     pub valid_out: Signal<Out, Bit>,
     pub texel_out: Signal<Out, Bits<24>>,
 
-    // Weights, 9 bits (256 - f reaches 256).
-    wx0: Signal<Local, Bits<9>>,
-    wx1: Signal<Local, Bits<9>>,
-    wy0_in: Signal<Local, Bits<9>>,
-    // Stage 1: horizontal blends, [channel] with channel 0 = R.
-    mh: [MulU<8, 9, 17>; 12],
-    h0_sum: [Signal<Local, Bits<17>>; 3],
-    h1_sum: [Signal<Local, Bits<17>>; 3],
+    // Stage 1: horizontal lerps, [channel] with channel 0 = R; row 0 (t00, t10) and row 1 (t01, t11).
+    mh0: [LerpDeltaLogic<8, 8, 17>; 3],
+    mh1: [LerpDeltaLogic<8, 8, 17>; 3],
+    base0: [Signal<Local, Bits<17>>; 3],
+    base1: [Signal<Local, Bits<17>>; 3],
     h0: [DFF<Bits<17>>; 3],
     h1: [DFF<Bits<17>>; 3],
-    wy0: DFF<Bits<9>>,
-    wy1: DFF<Bits<9>>,
+    fy1: DFF<Bits<8>>,
+    fy1_9: Signal<Local, Bits<9>>,
     valid1: DFF<Bit>,
-    // Stage 2: vertical blend and rounding.
-    mv: [MulU<17, 9, 26>; 6],
+    // Stage 2: vertical lerp and rounding.
+    h0_18: [Signal<Local, Bits<18>>; 3],
+    h1_18: [Signal<Local, Bits<18>>; 3],
+    dv: [Signal<Local, Bits<18>>; 3],
+    mv: [MulS<18, 9, 26>; 3],
+    vbase: [Signal<Local, Bits<26>>; 3],
     v_sum: [Signal<Local, Bits<26>>; 3],
     v_round: [Signal<Local, Bits<26>>; 3],
     texel: [DFF<Bits<8>>; 3],
     valid2: DFF<Bit>,
     packed: [Signal<Local, Bits<24>>; 3],
-    k256_9: Constant<Bits<9>>,
+    k8_17: Constant<Bits<17>>,
+    k8_26: Constant<Bits<26>>,
     khalf_26: Constant<Bits<26>>,
 }
 
@@ -80,24 +86,27 @@ impl Default for Bilinear {
             fy: Default::default(),
             valid_out: Default::default(),
             texel_out: Default::default(),
-            wx0: Default::default(),
-            wx1: Default::default(),
-            wy0_in: Default::default(),
-            mh: Default::default(),
-            h0_sum: Default::default(),
-            h1_sum: Default::default(),
+            mh0: Default::default(),
+            mh1: Default::default(),
+            base0: Default::default(),
+            base1: Default::default(),
             h0: Default::default(),
             h1: Default::default(),
-            wy0: Default::default(),
-            wy1: Default::default(),
+            fy1: Default::default(),
+            fy1_9: Default::default(),
             valid1: Default::default(),
+            h0_18: Default::default(),
+            h1_18: Default::default(),
+            dv: Default::default(),
             mv: Default::default(),
+            vbase: Default::default(),
             v_sum: Default::default(),
             v_round: Default::default(),
             texel: Default::default(),
             valid2: Default::default(),
             packed: Default::default(),
-            k256_9: Constant::new(256u64.into()),
+            k8_17: Constant::new(8u64.into()),
+            k8_26: Constant::new(8u64.into()),
             khalf_26: Constant::new((1u64 << 15).into()),
         }
     }
@@ -106,49 +115,56 @@ impl Default for Bilinear {
 impl Logic for Bilinear {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, wy0, wy1, valid1, valid2);
+        dff_setup!(self, clock, fy1, valid1, valid2);
         for c in 0..3 {
             self.h0[c].clock.next = self.clock.val();
             self.h1[c].clock.next = self.clock.val();
             self.texel[c].clock.next = self.clock.val();
         }
-        // Weights.
-        self.wx1.next = bit_cast::<9, 8>(self.fx.val());
-        self.wx0.next = self.k256_9.val() - self.wx1.val();
-        self.wy0_in.next = bit_cast::<9, 8>(self.fy.val());
-        // Stage 1: the texel channels into the horizontal products (R, G, B at 16, 8, 0).
-        self.mh[0].a.next = self.t00.val().get_bits::<8>(16);
-        self.mh[1].a.next = self.t10.val().get_bits::<8>(16);
-        self.mh[2].a.next = self.t01.val().get_bits::<8>(16);
-        self.mh[3].a.next = self.t11.val().get_bits::<8>(16);
-        self.mh[4].a.next = self.t00.val().get_bits::<8>(8);
-        self.mh[5].a.next = self.t10.val().get_bits::<8>(8);
-        self.mh[6].a.next = self.t01.val().get_bits::<8>(8);
-        self.mh[7].a.next = self.t11.val().get_bits::<8>(8);
-        self.mh[8].a.next = self.t00.val().get_bits::<8>(0);
-        self.mh[9].a.next = self.t10.val().get_bits::<8>(0);
-        self.mh[10].a.next = self.t01.val().get_bits::<8>(0);
-        self.mh[11].a.next = self.t11.val().get_bits::<8>(0);
+        self.mh0[0].lo.next = self.t00.val().get_bits::<8>(16);
+        self.mh0[0].hi.next = self.t10.val().get_bits::<8>(16);
+        self.mh1[0].lo.next = self.t01.val().get_bits::<8>(16);
+        self.mh1[0].hi.next = self.t11.val().get_bits::<8>(16);
+        self.base0[0].next = bit_cast::<17, 8>(self.t00.val().get_bits::<8>(16)) << self.k8_17.val();
+        self.base1[0].next = bit_cast::<17, 8>(self.t01.val().get_bits::<8>(16)) << self.k8_17.val();
+        self.mh0[1].lo.next = self.t00.val().get_bits::<8>(8);
+        self.mh0[1].hi.next = self.t10.val().get_bits::<8>(8);
+        self.mh1[1].lo.next = self.t01.val().get_bits::<8>(8);
+        self.mh1[1].hi.next = self.t11.val().get_bits::<8>(8);
+        self.base0[1].next = bit_cast::<17, 8>(self.t00.val().get_bits::<8>(8)) << self.k8_17.val();
+        self.base1[1].next = bit_cast::<17, 8>(self.t01.val().get_bits::<8>(8)) << self.k8_17.val();
+        self.mh0[2].lo.next = self.t00.val().get_bits::<8>(0);
+        self.mh0[2].hi.next = self.t10.val().get_bits::<8>(0);
+        self.mh1[2].lo.next = self.t01.val().get_bits::<8>(0);
+        self.mh1[2].hi.next = self.t11.val().get_bits::<8>(0);
+        self.base0[2].next = bit_cast::<17, 8>(self.t00.val().get_bits::<8>(0)) << self.k8_17.val();
+        self.base1[2].next = bit_cast::<17, 8>(self.t01.val().get_bits::<8>(0)) << self.k8_17.val();
         for c in 0..3 {
-            self.mh[4 * c].b.next = self.wx0.val();
-            self.mh[4 * c + 1].b.next = self.wx1.val();
-            self.mh[4 * c + 2].b.next = self.wx0.val();
-            self.mh[4 * c + 3].b.next = self.wx1.val();
-            self.h0_sum[c].next = self.mh[4 * c].p.val() + self.mh[4 * c + 1].p.val();
-            self.h1_sum[c].next = self.mh[4 * c + 2].p.val() + self.mh[4 * c + 3].p.val();
-            self.h0[c].d.next = self.h0_sum[c].val();
-            self.h1[c].d.next = self.h1_sum[c].val();
+            // h = (left << 8) + (right - left) fx, with h (0..=65280) in 17 bits: the wrapping
+            // sum is exact.
+            self.mh0[c].f.next = self.fx.val();
+            self.mh1[c].f.next = self.fx.val();
+            self.h0[c].d.next = self.base0[c].val() + unsigned_cast(self.mh0[c].p.val());
+            self.h1[c].d.next = self.base1[c].val() + unsigned_cast(self.mh1[c].p.val());
         }
-        self.wy1.d.next = self.wy0_in.val();
-        self.wy0.d.next = self.k256_9.val() - self.wy0_in.val();
+        self.fy1.d.next = self.fy.val();
+        self.fy1_9.next = bit_cast::<9, 8>(self.fy1.q.val());
         self.valid1.d.next = self.valid_in.val();
-        // Stage 2: vertical blend, + 2^15, >> 16.
+        // Stage 2: v = (h0 << 8) + (h1 - h0) fy, + 2^15, >> 16 (v at most 65280 x 256, in 26 bits).
+        self.h0_18[0].next = bit_cast::<18, 17>(self.h0[0].q.val());
+        self.h1_18[0].next = bit_cast::<18, 17>(self.h1[0].q.val());
+        self.vbase[0].next = bit_cast::<26, 17>(self.h0[0].q.val()) << self.k8_26.val();
+        self.h0_18[1].next = bit_cast::<18, 17>(self.h0[1].q.val());
+        self.h1_18[1].next = bit_cast::<18, 17>(self.h1[1].q.val());
+        self.vbase[1].next = bit_cast::<26, 17>(self.h0[1].q.val()) << self.k8_26.val();
+        self.h0_18[2].next = bit_cast::<18, 17>(self.h0[2].q.val());
+        self.h1_18[2].next = bit_cast::<18, 17>(self.h1[2].q.val());
+        self.vbase[2].next = bit_cast::<26, 17>(self.h0[2].q.val()) << self.k8_26.val();
         for c in 0..3 {
-            self.mv[2 * c].a.next = self.h0[c].q.val();
-            self.mv[2 * c].b.next = self.wy0.q.val();
-            self.mv[2 * c + 1].a.next = self.h1[c].q.val();
-            self.mv[2 * c + 1].b.next = self.wy1.q.val();
-            self.v_sum[c].next = self.mv[2 * c].p.val() + self.mv[2 * c + 1].p.val();
+            self.dv[c].next = self.h1_18[c].val() - self.h0_18[c].val();
+            self.mv[c].a.next = signed_cast(self.dv[c].val());
+            self.mv[c].b.next = signed_cast(self.fy1_9.val());
+            self.v_sum[c].next = self.vbase[c].val() + unsigned_cast(self.mv[c].p.val());
             self.v_round[c].next = self.v_sum[c].val() + self.khalf_26.val();
             self.texel[c].d.next = self.v_round[c].val().get_bits::<8>(16);
         }

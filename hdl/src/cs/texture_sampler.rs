@@ -28,7 +28,7 @@
 //! `base_we`/`base_sel`/`base_data`; `w0_log2`, `h0_log2`, `last_level`, `filter` and `clamp` are the
 //! texture's settings, held for the frame.
 
-use crate::common::MulU;
+use crate::common::MulLogicU;
 use crate::cs::texel_address::{TexelAddress, ADDR_BITS};
 use crate::cs::modulate::Modulate;
 use crate::cs::texel_filter::Bilinear;
@@ -113,7 +113,7 @@ pub struct TextureSampler {
     slot_data: [Signal<Local, Bits<24>>; 4],
     // Trilinear blend.
     first_texel: DFF<Bits<24>>,
-    mb: [MulU<8, 5, 13>; 6],
+    mb: [MulLogicU<8, 5, 13>; 6],
     wa: Signal<Local, Bits<5>>,
     wb: Signal<Local, Bits<5>>,
     b_sum: [Signal<Local, Bits<13>>; 3],
