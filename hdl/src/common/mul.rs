@@ -32,30 +32,6 @@ impl<const A: usize, const B: usize, const P: usize> Logic for MulS<A, B, P> {
     }
 }
 
-/// Unsigned A x B -> P bits.
-#[derive(LogicBlock, Default)]
-pub struct MulU<const A: usize, const B: usize, const P: usize> {
-    pub a: Signal<In, Bits<A>>,
-    pub b: Signal<In, Bits<B>>,
-    pub p: Signal<Out, Bits<P>>,
-}
-
-impl<const A: usize, const B: usize, const P: usize> Logic for MulU<A, B, P> {
-    fn update(&mut self) {
-        if !self.a.changed && !self.b.changed {
-            return;
-        }
-        let prod = self.a.val().to_u128().wrapping_mul(self.b.val().to_u128());
-        self.p.next = bits_from_u128::<P>(prod);
-    }
-    fn connect(&mut self) {
-        self.p.connect();
-    }
-    fn hdl(&self) -> Verilog {
-        Verilog::Custom("always @(*) p = a * b;".into())
-    }
-}
-
 /// The Verilog of an unsigned product in logic: one sum of B partial products (`a` shifted by i where
 /// bit i of `b` is set, each extended to P bits by the context), so that Yosys builds an adder tree of
 /// LUTs (its `$macc` mapping) instead of a `$mul` that `synth_ecp5` would put on a MULT18X18D. The
@@ -68,17 +44,25 @@ pub fn logic_product_verilog(a_bits: usize, b_bits: usize, p_bits: usize) -> Str
     format!("always @(*) p = {};", terms.join("\n    + "))
 }
 
-/// Unsigned A x B -> P bits, in logic rather than on a DSP block ([`logic_product_verilog`]): for the
-/// small products of the texture path (8-bit texels times 8- or 5-bit weights), where a MULT18X18D
-/// would be mostly unused and the chip has too few of them (docs/texture.md, the budget).
+/// Unsigned A x B -> P bits: [`MulU`] (`p = a * b`, which synthesis puts on multiplier blocks) or
+/// [`MulLogicU`] (the same product as a sum in logic, [`logic_product_verilog`]); `IN_LOGIC` picks the
+/// Verilog, the Rust model is the same.
 #[derive(LogicBlock, Default)]
-pub struct MulLogicU<const A: usize, const B: usize, const P: usize> {
+pub struct MulUnsigned<const A: usize, const B: usize, const P: usize, const IN_LOGIC: bool> {
     pub a: Signal<In, Bits<A>>,
     pub b: Signal<In, Bits<B>>,
     pub p: Signal<Out, Bits<P>>,
 }
 
-impl<const A: usize, const B: usize, const P: usize> Logic for MulLogicU<A, B, P> {
+/// Unsigned A x B -> P bits.
+pub type MulU<const A: usize, const B: usize, const P: usize> = MulUnsigned<A, B, P, false>;
+
+/// Unsigned A x B -> P bits, in logic rather than on a DSP block ([`logic_product_verilog`]): for the
+/// small products of the texture path (8-bit texels times 8- or 5-bit weights), where a MULT18X18D
+/// would be mostly unused and the chip has too few of them (docs/texture.md, the budget).
+pub type MulLogicU<const A: usize, const B: usize, const P: usize> = MulUnsigned<A, B, P, true>;
+
+impl<const A: usize, const B: usize, const P: usize, const IN_LOGIC: bool> Logic for MulUnsigned<A, B, P, IN_LOGIC> {
     fn update(&mut self) {
         if !self.a.changed && !self.b.changed {
             return;
@@ -90,7 +74,11 @@ impl<const A: usize, const B: usize, const P: usize> Logic for MulLogicU<A, B, P
         self.p.connect();
     }
     fn hdl(&self) -> Verilog {
-        Verilog::Custom(logic_product_verilog(A, B, P))
+        if IN_LOGIC {
+            Verilog::Custom(logic_product_verilog(A, B, P))
+        } else {
+            Verilog::Custom("always @(*) p = a * b;".into())
+        }
     }
 }
 
