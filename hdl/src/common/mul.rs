@@ -38,8 +38,15 @@ impl<const A: usize, const B: usize, const P: usize> Logic for MulS<A, B, P> {
 /// same function as `a * b` truncated to P bits.
 pub fn logic_product_verilog(a_bits: usize, b_bits: usize, p_bits: usize) -> String {
     assert!(p_bits >= a_bits && b_bits >= 1, "logic product {a_bits}x{b_bits} into {p_bits} bits");
-    let terms: Vec<String> = (0..b_bits)
-        .map(|i| if i == 0 { format!("(b[0] ? a : {p_bits}'d0)") } else { format!("(b[{i}] ? (a << {i}) : {p_bits}'d0)") })
+    shifted_sum_verilog("a", "b", b_bits, p_bits, false)
+}
+
+/// `always @(*) p = ...`: the sum over i < `bits` of `x << i` where bit i of `sel` is set, each term P
+/// bits (signed terms, zero and shift when `signed`).
+fn shifted_sum_verilog(x: &str, sel: &str, bits: usize, p_bits: usize, signed: bool) -> String {
+    let (zero, shl) = if signed { (format!("{p_bits}'sd0"), "<<<") } else { (format!("{p_bits}'d0"), "<<") };
+    let terms: Vec<String> = (0..bits)
+        .map(|i| if i == 0 { format!("({sel}[0] ? {x} : {zero})") } else { format!("({sel}[{i}] ? ({x} {shl} {i}) : {zero})") })
         .collect();
     format!("always @(*) p = {};", terms.join("\n    + "))
 }
@@ -107,11 +114,7 @@ impl<const A: usize, const B: usize, const P: usize> Logic for LerpDeltaLogic<A,
     }
     fn hdl(&self) -> Verilog {
         assert!(P > A, "lerp delta {A}x{B} into {P} bits");
-        let d = "($signed({1'b0, hi}) - $signed({1'b0, lo}))";
-        let terms: Vec<String> = (0..B)
-            .map(|i| if i == 0 { format!("(f[0] ? {d} : {P}'sd0)") } else { format!("(f[{i}] ? ({d} <<< {i}) : {P}'sd0)") })
-            .collect();
-        Verilog::Custom(format!("always @(*) p = {};", terms.join("\n    + ")))
+        Verilog::Custom(shifted_sum_verilog("($signed({1'b0, hi}) - $signed({1'b0, lo}))", "f", B, P, true))
     }
 }
 
