@@ -10,7 +10,7 @@
 // those the host can give (filter 0-2, sizes to 1024, the last level at most the larger size's log2);
 // TdbT's and the texture banks' read data arbitrary. Asserted besides: every TdbT write (texture
 // setup) is in bank `draw_bank`, every TdbT read (the CS) in the other bank. Reach point 4: texture
-// setup writing TdbT bank 1.
+// setup writing TdbT bank 1. Reach point 5: the CS reading TdbT.
 module chipset_tex_formal #(
     parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
 ) (
@@ -114,5 +114,9 @@ module chipset_tex_formal #(
         if ($past(setup_cmd_valid && !setup_cmd_ready)) assume (setup_tex == $past(setup_tex));
         cover (tt_we && draw_bank);
         if (REACH == 4) assert (!(tt_we && draw_bank));
+        cover (tt_re);
+        if (REACH == 5) assert (!tt_re);
+        cover (tt_re && tt_rd_addr[16]);
+        if (REACH == 6) assert (!(tt_re && tt_rd_addr[16]));
     end
 endmodule
