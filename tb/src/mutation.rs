@@ -1,6 +1,6 @@
 //! Mutation cover of the generated netlists, by the method of YosysHQ's mcy: Yosys draws mutations of a
-//! top's netlist (`mutate -list N`), each mutant is written out as Verilog and replayed under Icarus on
-//! the vectors that the top's Verilog replay test uses (every cycle's inputs and the cycle model's
+//! top's netlist (`mutate -list N`), each mutant is written out as Verilog and replayed under Icarus
+//! (Verilator for `cs_tex`) on the vectors that the top's Verilog replay test uses (every cycle's inputs and the cycle model's
 //! outputs). A mutant is **killed** when any port differs in any cycle (or the simulation never ends).
 //! A mutant that survives is checked for equivalence with the original: its cell dead in the flattened
 //! top, or Yosys's `equiv_make`, `equiv_simple` and `equiv_induct` (an induction proof over the mutated
@@ -9,8 +9,8 @@
 //! never called equivalent ([`CLOCK_UNDECIDED`]).
 //!
 //! Run by `bash scripts/mutation.sh TOP N` (`tb/src/bin/mutation.rs`); results in
-//! `target/mutation/TOP.json`. The tops: `rc`, `rc3`, `colour_setup`, `cs`, `opp`, and the texture
-//! setup block `tex_setup` (not yet in a `verilog` top).
+//! `target/mutation/TOP.json`. The tops: `rc`, `rc3`, `colour_setup`, `cs`, `cs_tex`, `opp`, and the
+//! texture setup block `tex_setup` (not yet in a `verilog` top).
 
 use crate::common::{workspace_target, Rng};
 use golden::format::Screen;
@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// The tops this cover knows, with the stimulus each is replayed on.
-pub const TOPS: [&str; 6] = ["rc", "rc3", "colour_setup", "cs", "opp", "tex_setup"];
+pub const TOPS: [&str; 7] = ["rc", "rc3", "colour_setup", "cs", "cs_tex", "opp", "tex_setup"];
 
 type Replay = Box<dyn Fn(&str, &Path) -> Result<(), String> + Send + Sync>;
 
@@ -63,6 +63,19 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
             );
             let replay: Replay = Box::new(move |v, d| recs.iter().try_for_each(|rec| crate::cs::replay::replay_iverilog(v, "cs", rec, d).map(|_| ())));
             Ok(Target { top: "cs", verilog: hdl::verilog_top("cs")?, stimulus, replay })
+        }
+        "cs_tex" => {
+            // One recording per filter (Phong with bilinear), each a Verilator build and run per mutant:
+            // Icarus replays cs_tex at about two cycles per second. (The replay test's own recording,
+            // trilinear Gouraud on 40x24, killed 2 of the first 11 mutants drawn.)
+            let recs = crate::cs::stimulus::cs_tex_filter_recordings(0x7E57)?;
+            let cycles: Vec<String> = recs.iter().map(|r| r.cycles().to_string()).collect();
+            let stimulus = format!(
+                "{} cycles: per filter (nearest with clamping, bilinear with Phong, trilinear) a textured and an untextured 48x32 frame of the checkered teapot-floor scene, 30% stalls, starts offered while busy",
+                cycles.join(" + ")
+            );
+            let replay: Replay = Box::new(move |v, d| recs.iter().try_for_each(|rec| crate::cs::replay::replay_verilator(v, "cs_tex", rec, d).map(|_| ())));
+            Ok(Target { top: "cs_tex", verilog: hdl::cs::color_shader_tex::verilog()?, stimulus, replay })
         }
         "opp" => opp_target(dir),
         "tex_setup" => {

@@ -1,6 +1,7 @@
 //! Yosys reads the generated Verilog as the simulators do: the netlist that `yosys prep` makes of each
-//! top (the netlist the FPGA flow and the mutation cover start from: rc, rc3, colour_setup, cs, opp) replays the same recorded
-//! vectors as the generated Verilog, every port in every cycle, under Icarus.
+//! top (the netlist the FPGA flow and the mutation cover start from: every top of `tb::mutation::TOPS`)
+//! replays the same recorded vectors as the generated Verilog, every port in every cycle, under Icarus
+//! (Verilator for `cs_tex`).
 //!
 //! Before `hdl::common::sized_localparams`, Yosys 0.23 read rust-hdl's `localparam signed k = 17'b111;`
 //! as unsigned, and the netlist of `rc` clipped the boxes of triangles left of or above the screen
@@ -10,8 +11,8 @@ use tb::common::{require_tools, workspace_target};
 use tb::mutation::{target, yosys_netlist, TOPS};
 
 #[test]
-fn yosys_netlists_of_rc_rc3_colour_setup_cs_and_opp_replay_as_the_generated_verilog_does() {
-    if !require_tools("yosys_netlists_of_rc_rc3_colour_setup_cs_and_opp_replay_as_the_generated_verilog_does", &["yosys", "iverilog", "vvp"]) {
+fn yosys_netlists_of_every_mutation_top_replay_as_the_generated_verilog_does() {
+    if !require_tools("yosys_netlists_of_every_mutation_top_replay_as_the_generated_verilog_does", &["yosys", "iverilog", "vvp", "verilator"]) {
         return;
     }
     for top in TOPS {

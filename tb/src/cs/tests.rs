@@ -313,17 +313,6 @@ fn a_cs_run_that_stops_making_progress_ends_at_once_naming_the_phase_and_the_wav
     assert!(e.contains("waveform"), "{e}");
 }
 
-/// The built-in checker with `filter` and `wrap`, perspective-correct.
-fn checker_texturing(filter: golden::texture::Filter, wrap: golden::texture::Wrap) -> golden::render::Texturing {
-    golden::render::Texturing {
-        texture: std::sync::Arc::new(golden::texture::checker()),
-        source: "built-in checker".into(),
-        filter,
-        coords: golden::texcoord::Coords::Perspective,
-        wrap,
-    }
-}
-
 #[test]
 fn cs_tex_matches_its_cycle_model_every_cycle_on_textured_and_untextured_frames_under_back_pressure() {
     use golden::texture::{Filter, Wrap};
@@ -363,27 +352,12 @@ fn cs_tex_matches_its_cycle_model_every_cycle_on_textured_and_untextured_frames_
     }
 }
 
-/// A short textured run (trilinear between levels, a held offer, back-pressure) for the Verilog replay.
-fn cs_tex_recording() -> super::replay::Recording {
-    use golden::texture::{Filter, Wrap};
-    let (w, h) = (40, 24);
-    let tx = checker_texturing(Filter::Trilinear, Wrap::Repeat);
-    let f = super::frames::record_textured(Shading::Gouraud, &tx, w, h).unwrap();
-    let mut mem = f.textured_memories();
-    let spec = FrameSpec { width: w, height: h, background: f.background, clear_behind: false, phong: false };
-    let tex = csb::TexRun { texturing: tx, textured: vec![true, false] };
-    let drive = CsDrive { stall_percent: 25, start_while_busy_percent: 10, max_idle: 2, seed: 0x7E5 };
-    let run = csb::run_tex_rtl_vs_model("cs_tex_replay", &mut mem, &[spec; 2], &[], &tex, drive, true).unwrap();
-    assert!(csb::frame_image(&run.frames[0], w, h).unwrap() == f.frame.rgb, "the recorded textured frame differs from golden");
-    run.recording.unwrap()
-}
-
 #[test]
 fn the_cs_tex_verilog_replays_the_recorded_vectors_and_a_changed_blend_is_caught() {
     if !require_tools("the_cs_tex_verilog_replays_the_recorded_vectors_and_a_changed_blend_is_caught", &["verilator"]) {
         return;
     }
-    let rec = cs_tex_recording();
+    let rec = cs_tex_replay_recording().unwrap();
     let v = hdl::cs::color_shader_tex::verilog().unwrap();
     let r = super::replay::replay_verilator(&v, "cs_tex", &rec, &scratch_dir("cs/cs_tex_replay")).unwrap();
     println!("cs_tex Verilog (Verilator): {} cycles replayed in {:.2} s, 0 mismatches", r.cycles, r.seconds);
