@@ -10,7 +10,9 @@
 // those the host can give (filter 0-2, sizes to 1024, the last level at most the larger size's log2);
 // TdbT's and the texture banks' read data arbitrary. Asserted besides: every TdbT write (texture
 // setup) is in bank `draw_bank`, every TdbT read (the CS) in the other bank. Reach point 4: texture
-// setup writing TdbT bank 1. Reach point 5: the CS reading TdbT.
+// setup writing TdbT bank 1. Reach point 5: the CS reading TdbT (frame 15). Reach point 6: the CS
+// reading TdbT bank 1 (after a second swap, frame 55: beyond the bmc depth of 36, so the bmc checks
+// the read assertion on bank-0 reads only).
 module chipset_tex_formal #(
     parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
 ) (
