@@ -67,7 +67,7 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
         "cs_tex" => {
             // One recording per filter (Phong with bilinear), each a Verilator build and run per mutant:
             // Icarus replays cs_tex at about two cycles per second. (The replay test's own recording,
-            // trilinear Gouraud on 40x24, killed 2 of the first 11 mutants drawn.)
+            // trilinear Gouraud on 40x24, killed the same 2 of the first 12 mutants drawn.)
             let recs = crate::cs::stimulus::cs_tex_filter_recordings(0x7E57)?;
             let cycles: Vec<String> = recs.iter().map(|r| r.cycles().to_string()).collect();
             let stimulus = format!(

@@ -188,56 +188,45 @@ pub fn checker_texturing(filter: golden::texture::Filter, wrap: golden::texture:
     }
 }
 
-/// A short textured run for the Verilog replay of `cs_tex` (and its mutation cover): two 40x24 frames
-/// of the checker, trilinear between levels, the first textured and the second not, 25% output stalls,
-/// starts offered while busy (a held offer). The RustHDL bench checks every cycle against the cycle
-/// model while recording; the textured frame is also checked against golden.
-pub fn cs_tex_replay_recording() -> Result<Recording, String> {
-    use golden::shade::Shading;
-    use golden::texture::{Filter, Wrap};
-    let (w, h) = (40, 24);
-    let tx = checker_texturing(Filter::Trilinear, Wrap::Repeat);
-    let f = super::frames::record_textured(Shading::Gouraud, &tx, w, h)?;
+/// One recording of `cs_tex` over the checkered teapot-floor scene at `w` x `h`: a textured and then
+/// an untextured frame with `filter`, `wrap` and `shading` (Phong: its lights and materials written
+/// first), driven by `drive`. The RustHDL bench checks every cycle against the cycle model while
+/// recording; the textured frame is also checked against golden.
+fn cs_tex_recording(test: &str, filter: golden::texture::Filter, wrap: golden::texture::Wrap, shading: golden::shade::Shading, (w, h): (u32, u32), drive: CsDrive) -> Result<Recording, String> {
+    let tx = checker_texturing(filter, wrap);
+    let f = super::frames::record_textured(shading, &tx, w, h)?;
     let mut mem = f.textured_memories();
-    let spec = FrameSpec { width: w, height: h, background: f.background, clear_behind: false, phong: false };
+    let phong = shading == golden::shade::Shading::Phong;
+    let config = if phong { phong_config(&f.lights)? } else { Vec::new() };
+    let spec = FrameSpec { width: w, height: h, background: f.background, clear_behind: false, phong };
     let tex = csb::TexRun { texturing: tx, textured: vec![true, false] };
-    let drive = CsDrive { stall_percent: 25, start_while_busy_percent: 10, max_idle: 2, seed: 0x7E5 };
-    let run = csb::run_tex_rtl_vs_model("cs_tex_replay", &mut mem, &[spec; 2], &[], &tex, drive, true)?;
+    let run = csb::run_tex_rtl_vs_model(test, &mut mem, &[spec; 2], &config, &tex, drive, true)?;
     if csb::frame_image(&run.frames[0], w, h)? != f.frame.rgb {
-        return Err("cs_tex replay recording: the textured frame differs from golden".into());
+        return Err(format!("{test}: the textured {filter:?} frame differs from golden"));
     }
-    run.recording.ok_or_else(|| "cs_tex replay recording: the bench recorded nothing".to_string())
+    run.recording.ok_or_else(|| format!("{test}: the bench recorded nothing"))
 }
 
-/// The mutation cover's stimulus for `cs_tex`, beyond [`cs_tex_replay_recording`]: one recording per
-/// filter, as the RustHDL test `cs_tex_matches_its_cycle_model_...` runs them (nearest with clamping
-/// and Gouraud; bilinear with repeat and Phong, its lights and materials written first; trilinear with
-/// repeat and Gouraud), each a textured then an untextured 48x32 frame, 30% stalls. Every frame is
-/// checked against the cycle model while recording and the textured ones against golden.
+/// A short textured run for the Verilog replay test of `cs_tex`: two 40x24 frames of the checker,
+/// trilinear between levels, Gouraud, 25% output stalls, starts offered while busy (a held offer).
+pub fn cs_tex_replay_recording() -> Result<Recording, String> {
+    use golden::texture::{Filter, Wrap};
+    let drive = CsDrive { stall_percent: 25, start_while_busy_percent: 10, max_idle: 2, seed: 0x7E5 };
+    cs_tex_recording("cs_tex_replay", Filter::Trilinear, Wrap::Repeat, golden::shade::Shading::Gouraud, (40, 24), drive)
+}
+
+/// The mutation cover's stimulus for `cs_tex`: one recording per filter, as the RustHDL test
+/// `cs_tex_matches_its_cycle_model_...` runs them (nearest with clamping and Gouraud; bilinear with
+/// repeat and Phong; trilinear with repeat and Gouraud), each 48x32, 30% stalls.
 pub fn cs_tex_filter_recordings(seed: u64) -> Result<Vec<Recording>, String> {
     use golden::shade::Shading;
     use golden::texture::{Filter, Wrap};
-    let (w, h) = (48, 32);
-    let mut recs = Vec::new();
-    for (k, (filter, wrap, shading)) in
-        [(Filter::Nearest, Wrap::ClampToEdge, Shading::Gouraud), (Filter::Bilinear, Wrap::Repeat, Shading::Phong), (Filter::Trilinear, Wrap::Repeat, Shading::Gouraud)]
-            .into_iter()
-            .enumerate()
-    {
-        let tx = checker_texturing(filter, wrap);
-        let f = super::frames::record_textured(shading, &tx, w, h)?;
-        let mut mem = f.textured_memories();
-        let phong = shading == Shading::Phong;
-        let config = if phong { phong_config(&f.lights)? } else { Vec::new() };
-        let spec = FrameSpec { width: w, height: h, background: f.background, clear_behind: false, phong };
-        let tex = csb::TexRun { texturing: tx, textured: vec![true, false] };
-        let drive = CsDrive { stall_percent: 30, start_while_busy_percent: 10, max_idle: 3, seed: seed + k as u64 };
-        let test = format!("cs_tex_mutation_{filter:?}").to_lowercase();
-        let run = csb::run_tex_rtl_vs_model(&test, &mut mem, &[spec; 2], &config, &tex, drive, true)?;
-        if csb::frame_image(&run.frames[0], w, h)? != f.frame.rgb {
-            return Err(format!("cs_tex mutation recording: the {filter:?} frame differs from golden"));
-        }
-        recs.push(run.recording.ok_or_else(|| "cs_tex mutation recording: the bench recorded nothing".to_string())?);
-    }
-    Ok(recs)
+    [(Filter::Nearest, Wrap::ClampToEdge, Shading::Gouraud), (Filter::Bilinear, Wrap::Repeat, Shading::Phong), (Filter::Trilinear, Wrap::Repeat, Shading::Gouraud)]
+        .into_iter()
+        .enumerate()
+        .map(|(k, (filter, wrap, shading))| {
+            let drive = CsDrive { stall_percent: 30, start_while_busy_percent: 10, max_idle: 3, seed: seed + k as u64 };
+            cs_tex_recording(&format!("cs_tex_mutation_{filter:?}").to_lowercase(), filter, wrap, shading, (48, 32), drive)
+        })
+        .collect()
 }
