@@ -16,9 +16,11 @@
 //! ```
 //!
 //! Schedule. A command taken in cycle 0 is in window j during cycles 4j-3 ..= 4j, and its data in
-//! station j (register arrays indexed by j: `c_*` the carried fields, `na_*`/`nb_*` the numerators,
-//! `rem`/`den`/`quo`/`shift`/`neg`/`zero` the division, `r_a`..`b_c` the planes); station j is loaded
-//! from station j-1 at the end of cycle 4(j-1). A value computed in cycle c is written into the
+//! station j (register arrays: `c_*` the carried fields, `na_*`/`nb_*` the numerators,
+//! `rem`/`den`/`quo`/`shift`/`neg`/`zero` the division, `r_a`..`b_c` the planes; each holds only the
+//! stations where some later stage reads it, so entry i of an array whose first station is f is
+//! station f + i, as each declaration says); station j is loaded from station j-1 at the end of cycle
+//! 4(j-1). A value computed in cycle c is written into the
 //! station of cycle c+1 (when c ends a window, into the next station as it loads). Commands are at
 //! least 4 cycles apart (`cmd.ready` is low for 3 cycles after a command is taken), so every station
 //! and multiplier is used by one command at a time. `tok` (bit o-1 set in cycle o of a command) times
@@ -84,34 +86,62 @@ pub struct ColourSetup {
     opab_m: DFF<Signed<26>>,
     cv1: DFF<Signed<16>>,
     cv2: DFF<Signed<16>>,
-    c_index: [DFF<Bits<16>>; 12],
-    c_material: [DFF<Bits<16>>; 12],
-    c_x0: [DFF<Bits<16>>; 12],
-    c_y0: [DFF<Bits<16>>; 12],
-    c_v0r: [DFF<Bits<16>>; 12],
-    c_v0g: [DFF<Bits<16>>; 12],
-    c_v0b: [DFF<Bits<16>>; 12],
-    na_r: [DFF<Bits<35>>; 12],
-    nb_r: [DFF<Bits<35>>; 12],
-    na_g: [DFF<Bits<35>>; 12],
-    nb_g: [DFF<Bits<35>>; 12],
-    na_b: [DFF<Bits<35>>; 12],
-    nb_b: [DFF<Bits<35>>; 12],
-    rem: [DFF<Bits<37>>; 12],
-    den: [DFF<Bits<37>>; 12],
-    quo: [DFF<Bits<25>>; 12],
-    shift: [DFF<Bits<6>>; 12],
-    neg: [DFF<Bit>; 12],
-    zero: [DFF<Bit>; 12],
-    r_a: [DFF<Bits<40>>; 12],
-    r_b: [DFF<Bits<40>>; 12],
-    r_c: [DFF<Bits<56>>; 12],
-    g_a: [DFF<Bits<40>>; 12],
-    g_b: [DFF<Bits<40>>; 12],
-    g_c: [DFF<Bits<56>>; 12],
-    b_a: [DFF<Bits<40>>; 12],
-    b_b: [DFF<Bits<40>>; 12],
-    b_c: [DFF<Bits<56>>; 12],
+    /// Stations 1..=11 (`c_index[j - 1]`: station j).
+    c_index: [DFF<Bits<16>>; 11],
+    /// Stations 1..=11 (`c_material[j - 1]`: station j).
+    c_material: [DFF<Bits<16>>; 11],
+    /// Stations 1..=10 (`c_x0[j - 1]`: station j).
+    c_x0: [DFF<Bits<16>>; 10],
+    /// Stations 1..=10 (`c_y0[j - 1]`: station j).
+    c_y0: [DFF<Bits<16>>; 10],
+    /// Stations 1..=10 (`c_v0r[j - 1]`: station j).
+    c_v0r: [DFF<Bits<16>>; 10],
+    /// Stations 1..=10 (`c_v0g[j - 1]`: station j).
+    c_v0g: [DFF<Bits<16>>; 10],
+    /// Stations 1..=10 (`c_v0b[j - 1]`: station j).
+    c_v0b: [DFF<Bits<16>>; 10],
+    /// Stations 1..=9 (`na_r[j - 1]`: station j).
+    na_r: [DFF<Bits<35>>; 9],
+    /// Stations 2..=9 (`nb_r[j - 2]`: station j).
+    nb_r: [DFF<Bits<35>>; 8],
+    /// Stations 2..=9 (`na_g[j - 2]`: station j).
+    na_g: [DFF<Bits<35>>; 8],
+    /// Stations 2..=9 (`nb_g[j - 2]`: station j).
+    nb_g: [DFF<Bits<35>>; 8],
+    /// Stations 2..=9 (`na_b[j - 2]`: station j).
+    na_b: [DFF<Bits<35>>; 8],
+    /// Stations 2..=9 (`nb_b[j - 2]`: station j).
+    nb_b: [DFF<Bits<35>>; 8],
+    /// Stations 2..=8 (`rem[j - 2]`: station j).
+    rem: [DFF<Bits<37>>; 7],
+    /// Stations 2..=8 (`den[j - 2]`: station j).
+    den: [DFF<Bits<37>>; 7],
+    /// Stations 2..=9 (`quo[j - 2]`: station j).
+    quo: [DFF<Bits<25>>; 8],
+    /// Stations 2..=9 (`shift[j - 2]`: station j).
+    shift: [DFF<Bits<6>>; 8],
+    /// Stations 2..=9 (`neg[j - 2]`: station j).
+    neg: [DFF<Bit>; 8],
+    /// Stations 2..=9 (`zero[j - 2]`: station j).
+    zero: [DFF<Bit>; 8],
+    /// Stations 9..=11 (`r_a[j - 9]`: station j).
+    r_a: [DFF<Bits<40>>; 3],
+    /// Stations 9..=11 (`r_b[j - 9]`: station j).
+    r_b: [DFF<Bits<40>>; 3],
+    /// Stations 10..=11 (`r_c[j - 10]`: station j).
+    r_c: [DFF<Bits<56>>; 2],
+    /// Stations 10..=11 (`g_a[j - 10]`: station j).
+    g_a: [DFF<Bits<40>>; 2],
+    /// Stations 10..=11 (`g_b[j - 10]`: station j).
+    g_b: [DFF<Bits<40>>; 2],
+    /// Stations 10..=11 (`g_c[j - 10]`: station j).
+    g_c: [DFF<Bits<56>>; 2],
+    /// Stations 10..=11 (`b_a[j - 10]`: station j).
+    b_a: [DFF<Bits<40>>; 2],
+    /// Stations 10..=11 (`b_b[j - 10]`: station j).
+    b_b: [DFF<Bits<40>>; 2],
+    /// Stations 11..=11 (`b_c[j - 11]`: station j).
+    b_c: [DFF<Bits<56>>; 1],
     opn_a: [DFF<Signed<18>>; 4],
     opn_b: [DFF<Signed<18>>; 4],
     pn: [DFF<Signed<36>>; 4],
@@ -365,61 +395,115 @@ impl Logic for ColourSetup {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, tok, cmd1, det1, det2, sh_ab1, sh_ab2, z_ab1, z_ab2, opab_m, cv1, cv2);
-        for j in 0..12 {
+        for j in 0..11 {
             self.c_index[j].clock.next = self.clock.val();
             self.c_index[j].d.next = self.c_index[j].q.val();
+        }
+        for j in 0..11 {
             self.c_material[j].clock.next = self.clock.val();
             self.c_material[j].d.next = self.c_material[j].q.val();
+        }
+        for j in 0..10 {
             self.c_x0[j].clock.next = self.clock.val();
             self.c_x0[j].d.next = self.c_x0[j].q.val();
+        }
+        for j in 0..10 {
             self.c_y0[j].clock.next = self.clock.val();
             self.c_y0[j].d.next = self.c_y0[j].q.val();
+        }
+        for j in 0..10 {
             self.c_v0r[j].clock.next = self.clock.val();
             self.c_v0r[j].d.next = self.c_v0r[j].q.val();
+        }
+        for j in 0..10 {
             self.c_v0g[j].clock.next = self.clock.val();
             self.c_v0g[j].d.next = self.c_v0g[j].q.val();
+        }
+        for j in 0..10 {
             self.c_v0b[j].clock.next = self.clock.val();
             self.c_v0b[j].d.next = self.c_v0b[j].q.val();
+        }
+        for j in 0..9 {
             self.na_r[j].clock.next = self.clock.val();
             self.na_r[j].d.next = self.na_r[j].q.val();
+        }
+        for j in 0..8 {
             self.nb_r[j].clock.next = self.clock.val();
             self.nb_r[j].d.next = self.nb_r[j].q.val();
+        }
+        for j in 0..8 {
             self.na_g[j].clock.next = self.clock.val();
             self.na_g[j].d.next = self.na_g[j].q.val();
+        }
+        for j in 0..8 {
             self.nb_g[j].clock.next = self.clock.val();
             self.nb_g[j].d.next = self.nb_g[j].q.val();
+        }
+        for j in 0..8 {
             self.na_b[j].clock.next = self.clock.val();
             self.na_b[j].d.next = self.na_b[j].q.val();
+        }
+        for j in 0..8 {
             self.nb_b[j].clock.next = self.clock.val();
             self.nb_b[j].d.next = self.nb_b[j].q.val();
+        }
+        for j in 0..7 {
             self.rem[j].clock.next = self.clock.val();
             self.rem[j].d.next = self.rem[j].q.val();
+        }
+        for j in 0..7 {
             self.den[j].clock.next = self.clock.val();
             self.den[j].d.next = self.den[j].q.val();
+        }
+        for j in 0..8 {
             self.quo[j].clock.next = self.clock.val();
             self.quo[j].d.next = self.quo[j].q.val();
+        }
+        for j in 0..8 {
             self.shift[j].clock.next = self.clock.val();
             self.shift[j].d.next = self.shift[j].q.val();
+        }
+        for j in 0..8 {
             self.neg[j].clock.next = self.clock.val();
             self.neg[j].d.next = self.neg[j].q.val();
+        }
+        for j in 0..8 {
             self.zero[j].clock.next = self.clock.val();
             self.zero[j].d.next = self.zero[j].q.val();
+        }
+        for j in 0..3 {
             self.r_a[j].clock.next = self.clock.val();
             self.r_a[j].d.next = self.r_a[j].q.val();
+        }
+        for j in 0..3 {
             self.r_b[j].clock.next = self.clock.val();
             self.r_b[j].d.next = self.r_b[j].q.val();
+        }
+        for j in 0..2 {
             self.r_c[j].clock.next = self.clock.val();
             self.r_c[j].d.next = self.r_c[j].q.val();
+        }
+        for j in 0..2 {
             self.g_a[j].clock.next = self.clock.val();
             self.g_a[j].d.next = self.g_a[j].q.val();
+        }
+        for j in 0..2 {
             self.g_b[j].clock.next = self.clock.val();
             self.g_b[j].d.next = self.g_b[j].q.val();
+        }
+        for j in 0..2 {
             self.g_c[j].clock.next = self.clock.val();
             self.g_c[j].d.next = self.g_c[j].q.val();
+        }
+        for j in 0..2 {
             self.b_a[j].clock.next = self.clock.val();
             self.b_a[j].d.next = self.b_a[j].q.val();
+        }
+        for j in 0..2 {
             self.b_b[j].clock.next = self.clock.val();
             self.b_b[j].d.next = self.b_b[j].q.val();
+        }
+        for j in 0..1 {
             self.b_c[j].clock.next = self.clock.val();
             self.b_c[j].d.next = self.b_c[j].q.val();
         }
@@ -512,13 +596,13 @@ impl Logic for ColourSetup {
         self.dv20b.next = signed_bit_cast_safe::<18, 16>(self.s2b.val()) - signed_bit_cast_safe::<18, 16>(self.s0b.val());
         // The carried fields enter station 1 from the command register in cycle 1.
         if self.tok.q.val().get_bit(0) {
-            self.c_index[1].d.next = self.cmd1.q.val().index;
-            self.c_material[1].d.next = self.cmd1.q.val().material;
-            self.c_x0[1].d.next = self.cmd1.q.val().x0;
-            self.c_y0[1].d.next = self.cmd1.q.val().y0;
-            self.c_v0r[1].d.next = self.cmd1.q.val().v0r;
-            self.c_v0g[1].d.next = self.cmd1.q.val().v0g;
-            self.c_v0b[1].d.next = self.cmd1.q.val().v0b;
+            self.c_index[0].d.next = self.cmd1.q.val().index;
+            self.c_material[0].d.next = self.cmd1.q.val().material;
+            self.c_x0[0].d.next = self.cmd1.q.val().x0;
+            self.c_y0[0].d.next = self.cmd1.q.val().y0;
+            self.c_v0r[0].d.next = self.cmd1.q.val().v0r;
+            self.c_v0g[0].d.next = self.cmd1.q.val().v0g;
+            self.c_v0b[0].d.next = self.cmd1.q.val().v0b;
         }
 
         // Cycles 1-4: the 14 products of det and the numerators, operands and products registered.
@@ -576,6 +660,16 @@ impl Logic for ColourSetup {
 
         // Station loads: station j from station j-1 at the end of cycle 4(j-1).
         if self.tok.q.val().get_bit(3) {
+            self.c_index[1].d.next = self.c_index[0].q.val();
+            self.c_material[1].d.next = self.c_material[0].q.val();
+            self.c_x0[1].d.next = self.c_x0[0].q.val();
+            self.c_y0[1].d.next = self.c_y0[0].q.val();
+            self.c_v0r[1].d.next = self.c_v0r[0].q.val();
+            self.c_v0g[1].d.next = self.c_v0g[0].q.val();
+            self.c_v0b[1].d.next = self.c_v0b[0].q.val();
+            self.na_r[1].d.next = self.na_r[0].q.val();
+        }
+        if self.tok.q.val().get_bit(7) {
             self.c_index[2].d.next = self.c_index[1].q.val();
             self.c_material[2].d.next = self.c_material[1].q.val();
             self.c_x0[2].d.next = self.c_x0[1].q.val();
@@ -584,13 +678,19 @@ impl Logic for ColourSetup {
             self.c_v0g[2].d.next = self.c_v0g[1].q.val();
             self.c_v0b[2].d.next = self.c_v0b[1].q.val();
             self.na_r[2].d.next = self.na_r[1].q.val();
-            self.nb_r[2].d.next = self.nb_r[1].q.val();
-            self.na_g[2].d.next = self.na_g[1].q.val();
-            self.nb_g[2].d.next = self.nb_g[1].q.val();
-            self.na_b[2].d.next = self.na_b[1].q.val();
-            self.nb_b[2].d.next = self.nb_b[1].q.val();
+            self.nb_r[1].d.next = self.nb_r[0].q.val();
+            self.na_g[1].d.next = self.na_g[0].q.val();
+            self.nb_g[1].d.next = self.nb_g[0].q.val();
+            self.na_b[1].d.next = self.na_b[0].q.val();
+            self.nb_b[1].d.next = self.nb_b[0].q.val();
+            self.den[1].d.next = self.den[0].q.val();
+            self.shift[1].d.next = self.shift[0].q.val();
+            self.neg[1].d.next = self.neg[0].q.val();
+            self.zero[1].d.next = self.zero[0].q.val();
+            self.rem[1].d.next = self.step[0].rem_next.val();
+            self.quo[1].d.next = self.step[0].quo_next.val();
         }
-        if self.tok.q.val().get_bit(7) {
+        if self.tok.q.val().get_bit(11) {
             self.c_index[3].d.next = self.c_index[2].q.val();
             self.c_material[3].d.next = self.c_material[2].q.val();
             self.c_x0[3].d.next = self.c_x0[2].q.val();
@@ -599,6 +699,27 @@ impl Logic for ColourSetup {
             self.c_v0g[3].d.next = self.c_v0g[2].q.val();
             self.c_v0b[3].d.next = self.c_v0b[2].q.val();
             self.na_r[3].d.next = self.na_r[2].q.val();
+            self.nb_r[2].d.next = self.nb_r[1].q.val();
+            self.na_g[2].d.next = self.na_g[1].q.val();
+            self.nb_g[2].d.next = self.nb_g[1].q.val();
+            self.na_b[2].d.next = self.na_b[1].q.val();
+            self.nb_b[2].d.next = self.nb_b[1].q.val();
+            self.den[2].d.next = self.den[1].q.val();
+            self.shift[2].d.next = self.shift[1].q.val();
+            self.neg[2].d.next = self.neg[1].q.val();
+            self.zero[2].d.next = self.zero[1].q.val();
+            self.rem[2].d.next = self.step[1].rem_next.val();
+            self.quo[2].d.next = self.step[1].quo_next.val();
+        }
+        if self.tok.q.val().get_bit(15) {
+            self.c_index[4].d.next = self.c_index[3].q.val();
+            self.c_material[4].d.next = self.c_material[3].q.val();
+            self.c_x0[4].d.next = self.c_x0[3].q.val();
+            self.c_y0[4].d.next = self.c_y0[3].q.val();
+            self.c_v0r[4].d.next = self.c_v0r[3].q.val();
+            self.c_v0g[4].d.next = self.c_v0g[3].q.val();
+            self.c_v0b[4].d.next = self.c_v0b[3].q.val();
+            self.na_r[4].d.next = self.na_r[3].q.val();
             self.nb_r[3].d.next = self.nb_r[2].q.val();
             self.na_g[3].d.next = self.na_g[2].q.val();
             self.nb_g[3].d.next = self.nb_g[2].q.val();
@@ -608,18 +729,18 @@ impl Logic for ColourSetup {
             self.shift[3].d.next = self.shift[2].q.val();
             self.neg[3].d.next = self.neg[2].q.val();
             self.zero[3].d.next = self.zero[2].q.val();
-            self.rem[3].d.next = self.step[0].rem_next.val();
-            self.quo[3].d.next = self.step[0].quo_next.val();
+            self.rem[3].d.next = self.step[2].rem_next.val();
+            self.quo[3].d.next = self.step[2].quo_next.val();
         }
-        if self.tok.q.val().get_bit(11) {
-            self.c_index[4].d.next = self.c_index[3].q.val();
-            self.c_material[4].d.next = self.c_material[3].q.val();
-            self.c_x0[4].d.next = self.c_x0[3].q.val();
-            self.c_y0[4].d.next = self.c_y0[3].q.val();
-            self.c_v0r[4].d.next = self.c_v0r[3].q.val();
-            self.c_v0g[4].d.next = self.c_v0g[3].q.val();
-            self.c_v0b[4].d.next = self.c_v0b[3].q.val();
-            self.na_r[4].d.next = self.na_r[3].q.val();
+        if self.tok.q.val().get_bit(19) {
+            self.c_index[5].d.next = self.c_index[4].q.val();
+            self.c_material[5].d.next = self.c_material[4].q.val();
+            self.c_x0[5].d.next = self.c_x0[4].q.val();
+            self.c_y0[5].d.next = self.c_y0[4].q.val();
+            self.c_v0r[5].d.next = self.c_v0r[4].q.val();
+            self.c_v0g[5].d.next = self.c_v0g[4].q.val();
+            self.c_v0b[5].d.next = self.c_v0b[4].q.val();
+            self.na_r[5].d.next = self.na_r[4].q.val();
             self.nb_r[4].d.next = self.nb_r[3].q.val();
             self.na_g[4].d.next = self.na_g[3].q.val();
             self.nb_g[4].d.next = self.nb_g[3].q.val();
@@ -629,18 +750,18 @@ impl Logic for ColourSetup {
             self.shift[4].d.next = self.shift[3].q.val();
             self.neg[4].d.next = self.neg[3].q.val();
             self.zero[4].d.next = self.zero[3].q.val();
-            self.rem[4].d.next = self.step[1].rem_next.val();
-            self.quo[4].d.next = self.step[1].quo_next.val();
+            self.rem[4].d.next = self.step[3].rem_next.val();
+            self.quo[4].d.next = self.step[3].quo_next.val();
         }
-        if self.tok.q.val().get_bit(15) {
-            self.c_index[5].d.next = self.c_index[4].q.val();
-            self.c_material[5].d.next = self.c_material[4].q.val();
-            self.c_x0[5].d.next = self.c_x0[4].q.val();
-            self.c_y0[5].d.next = self.c_y0[4].q.val();
-            self.c_v0r[5].d.next = self.c_v0r[4].q.val();
-            self.c_v0g[5].d.next = self.c_v0g[4].q.val();
-            self.c_v0b[5].d.next = self.c_v0b[4].q.val();
-            self.na_r[5].d.next = self.na_r[4].q.val();
+        if self.tok.q.val().get_bit(23) {
+            self.c_index[6].d.next = self.c_index[5].q.val();
+            self.c_material[6].d.next = self.c_material[5].q.val();
+            self.c_x0[6].d.next = self.c_x0[5].q.val();
+            self.c_y0[6].d.next = self.c_y0[5].q.val();
+            self.c_v0r[6].d.next = self.c_v0r[5].q.val();
+            self.c_v0g[6].d.next = self.c_v0g[5].q.val();
+            self.c_v0b[6].d.next = self.c_v0b[5].q.val();
+            self.na_r[6].d.next = self.na_r[5].q.val();
             self.nb_r[5].d.next = self.nb_r[4].q.val();
             self.na_g[5].d.next = self.na_g[4].q.val();
             self.nb_g[5].d.next = self.nb_g[4].q.val();
@@ -650,18 +771,18 @@ impl Logic for ColourSetup {
             self.shift[5].d.next = self.shift[4].q.val();
             self.neg[5].d.next = self.neg[4].q.val();
             self.zero[5].d.next = self.zero[4].q.val();
-            self.rem[5].d.next = self.step[2].rem_next.val();
-            self.quo[5].d.next = self.step[2].quo_next.val();
+            self.rem[5].d.next = self.step[4].rem_next.val();
+            self.quo[5].d.next = self.step[4].quo_next.val();
         }
-        if self.tok.q.val().get_bit(19) {
-            self.c_index[6].d.next = self.c_index[5].q.val();
-            self.c_material[6].d.next = self.c_material[5].q.val();
-            self.c_x0[6].d.next = self.c_x0[5].q.val();
-            self.c_y0[6].d.next = self.c_y0[5].q.val();
-            self.c_v0r[6].d.next = self.c_v0r[5].q.val();
-            self.c_v0g[6].d.next = self.c_v0g[5].q.val();
-            self.c_v0b[6].d.next = self.c_v0b[5].q.val();
-            self.na_r[6].d.next = self.na_r[5].q.val();
+        if self.tok.q.val().get_bit(27) {
+            self.c_index[7].d.next = self.c_index[6].q.val();
+            self.c_material[7].d.next = self.c_material[6].q.val();
+            self.c_x0[7].d.next = self.c_x0[6].q.val();
+            self.c_y0[7].d.next = self.c_y0[6].q.val();
+            self.c_v0r[7].d.next = self.c_v0r[6].q.val();
+            self.c_v0g[7].d.next = self.c_v0g[6].q.val();
+            self.c_v0b[7].d.next = self.c_v0b[6].q.val();
+            self.na_r[7].d.next = self.na_r[6].q.val();
             self.nb_r[6].d.next = self.nb_r[5].q.val();
             self.na_g[6].d.next = self.na_g[5].q.val();
             self.nb_g[6].d.next = self.nb_g[5].q.val();
@@ -671,31 +792,10 @@ impl Logic for ColourSetup {
             self.shift[6].d.next = self.shift[5].q.val();
             self.neg[6].d.next = self.neg[5].q.val();
             self.zero[6].d.next = self.zero[5].q.val();
-            self.rem[6].d.next = self.step[3].rem_next.val();
-            self.quo[6].d.next = self.step[3].quo_next.val();
+            self.rem[6].d.next = self.step[5].rem_next.val();
+            self.quo[6].d.next = self.step[5].quo_next.val();
         }
-        if self.tok.q.val().get_bit(23) {
-            self.c_index[7].d.next = self.c_index[6].q.val();
-            self.c_material[7].d.next = self.c_material[6].q.val();
-            self.c_x0[7].d.next = self.c_x0[6].q.val();
-            self.c_y0[7].d.next = self.c_y0[6].q.val();
-            self.c_v0r[7].d.next = self.c_v0r[6].q.val();
-            self.c_v0g[7].d.next = self.c_v0g[6].q.val();
-            self.c_v0b[7].d.next = self.c_v0b[6].q.val();
-            self.na_r[7].d.next = self.na_r[6].q.val();
-            self.nb_r[7].d.next = self.nb_r[6].q.val();
-            self.na_g[7].d.next = self.na_g[6].q.val();
-            self.nb_g[7].d.next = self.nb_g[6].q.val();
-            self.na_b[7].d.next = self.na_b[6].q.val();
-            self.nb_b[7].d.next = self.nb_b[6].q.val();
-            self.den[7].d.next = self.den[6].q.val();
-            self.shift[7].d.next = self.shift[6].q.val();
-            self.neg[7].d.next = self.neg[6].q.val();
-            self.zero[7].d.next = self.zero[6].q.val();
-            self.rem[7].d.next = self.step[4].rem_next.val();
-            self.quo[7].d.next = self.step[4].quo_next.val();
-        }
-        if self.tok.q.val().get_bit(27) {
+        if self.tok.q.val().get_bit(31) {
             self.c_index[8].d.next = self.c_index[7].q.val();
             self.c_material[8].d.next = self.c_material[7].q.val();
             self.c_x0[8].d.next = self.c_x0[7].q.val();
@@ -704,19 +804,17 @@ impl Logic for ColourSetup {
             self.c_v0g[8].d.next = self.c_v0g[7].q.val();
             self.c_v0b[8].d.next = self.c_v0b[7].q.val();
             self.na_r[8].d.next = self.na_r[7].q.val();
-            self.nb_r[8].d.next = self.nb_r[7].q.val();
-            self.na_g[8].d.next = self.na_g[7].q.val();
-            self.nb_g[8].d.next = self.nb_g[7].q.val();
-            self.na_b[8].d.next = self.na_b[7].q.val();
-            self.nb_b[8].d.next = self.nb_b[7].q.val();
-            self.den[8].d.next = self.den[7].q.val();
-            self.shift[8].d.next = self.shift[7].q.val();
-            self.neg[8].d.next = self.neg[7].q.val();
-            self.zero[8].d.next = self.zero[7].q.val();
-            self.rem[8].d.next = self.step[5].rem_next.val();
-            self.quo[8].d.next = self.step[5].quo_next.val();
+            self.nb_r[7].d.next = self.nb_r[6].q.val();
+            self.na_g[7].d.next = self.na_g[6].q.val();
+            self.nb_g[7].d.next = self.nb_g[6].q.val();
+            self.na_b[7].d.next = self.na_b[6].q.val();
+            self.nb_b[7].d.next = self.nb_b[6].q.val();
+            self.shift[7].d.next = self.shift[6].q.val();
+            self.neg[7].d.next = self.neg[6].q.val();
+            self.zero[7].d.next = self.zero[6].q.val();
+            self.quo[7].d.next = self.quo[6].q.val();
         }
-        if self.tok.q.val().get_bit(31) {
+        if self.tok.q.val().get_bit(35) {
             self.c_index[9].d.next = self.c_index[8].q.val();
             self.c_material[9].d.next = self.c_material[8].q.val();
             self.c_x0[9].d.next = self.c_x0[8].q.val();
@@ -724,60 +822,20 @@ impl Logic for ColourSetup {
             self.c_v0r[9].d.next = self.c_v0r[8].q.val();
             self.c_v0g[9].d.next = self.c_v0g[8].q.val();
             self.c_v0b[9].d.next = self.c_v0b[8].q.val();
-            self.na_r[9].d.next = self.na_r[8].q.val();
-            self.nb_r[9].d.next = self.nb_r[8].q.val();
-            self.na_g[9].d.next = self.na_g[8].q.val();
-            self.nb_g[9].d.next = self.nb_g[8].q.val();
-            self.na_b[9].d.next = self.na_b[8].q.val();
-            self.nb_b[9].d.next = self.nb_b[8].q.val();
-            self.den[9].d.next = self.den[8].q.val();
-            self.shift[9].d.next = self.shift[8].q.val();
-            self.neg[9].d.next = self.neg[8].q.val();
-            self.zero[9].d.next = self.zero[8].q.val();
-            self.rem[9].d.next = self.rem[8].q.val();
-            self.quo[9].d.next = self.quo[8].q.val();
-        }
-        if self.tok.q.val().get_bit(35) {
-            self.c_index[10].d.next = self.c_index[9].q.val();
-            self.c_material[10].d.next = self.c_material[9].q.val();
-            self.c_x0[10].d.next = self.c_x0[9].q.val();
-            self.c_y0[10].d.next = self.c_y0[9].q.val();
-            self.c_v0r[10].d.next = self.c_v0r[9].q.val();
-            self.c_v0g[10].d.next = self.c_v0g[9].q.val();
-            self.c_v0b[10].d.next = self.c_v0b[9].q.val();
-            self.den[10].d.next = self.den[9].q.val();
-            self.shift[10].d.next = self.shift[9].q.val();
-            self.neg[10].d.next = self.neg[9].q.val();
-            self.zero[10].d.next = self.zero[9].q.val();
-            self.rem[10].d.next = self.rem[9].q.val();
-            self.quo[10].d.next = self.quo[9].q.val();
-            self.r_a[10].d.next = self.r_a[9].q.val();
-            self.r_b[10].d.next = self.r_b[9].q.val();
-            self.r_c[10].d.next = self.r_c[9].q.val();
-            self.g_a[10].d.next = self.g_a[9].q.val();
-            self.g_b[10].d.next = self.g_b[9].q.val();
-            self.g_c[10].d.next = self.g_c[9].q.val();
-            self.b_a[10].d.next = self.b_a[9].q.val();
-            self.b_b[10].d.next = self.b_b[9].q.val();
-            self.b_c[10].d.next = self.b_c[9].q.val();
+            self.r_a[1].d.next = self.r_a[0].q.val();
+            self.r_b[1].d.next = self.r_b[0].q.val();
         }
         if self.tok.q.val().get_bit(39) {
-            self.c_index[11].d.next = self.c_index[10].q.val();
-            self.c_material[11].d.next = self.c_material[10].q.val();
-            self.c_x0[11].d.next = self.c_x0[10].q.val();
-            self.c_y0[11].d.next = self.c_y0[10].q.val();
-            self.c_v0r[11].d.next = self.c_v0r[10].q.val();
-            self.c_v0g[11].d.next = self.c_v0g[10].q.val();
-            self.c_v0b[11].d.next = self.c_v0b[10].q.val();
-            self.r_a[11].d.next = self.r_a[10].q.val();
-            self.r_b[11].d.next = self.r_b[10].q.val();
-            self.r_c[11].d.next = self.r_c[10].q.val();
-            self.g_a[11].d.next = self.g_a[10].q.val();
-            self.g_b[11].d.next = self.g_b[10].q.val();
-            self.g_c[11].d.next = self.g_c[10].q.val();
-            self.b_a[11].d.next = self.b_a[10].q.val();
-            self.b_b[11].d.next = self.b_b[10].q.val();
-            self.b_c[11].d.next = self.b_c[10].q.val();
+            self.c_index[10].d.next = self.c_index[9].q.val();
+            self.c_material[10].d.next = self.c_material[9].q.val();
+            self.r_a[2].d.next = self.r_a[1].q.val();
+            self.r_b[2].d.next = self.r_b[1].q.val();
+            self.r_c[1].d.next = self.r_c[0].q.val();
+            self.g_a[1].d.next = self.g_a[0].q.val();
+            self.g_b[1].d.next = self.g_b[0].q.val();
+            self.g_c[1].d.next = self.g_c[0].q.val();
+            self.b_a[1].d.next = self.b_a[0].q.val();
+            self.b_b[1].d.next = self.b_b[0].q.val();
         }
         if self.tok.q.val().get_bit(3) {
             self.det2.d.next = self.det1.q.val();
@@ -785,18 +843,18 @@ impl Logic for ColourSetup {
         // The numerators and det into the station of the cycle after (cycles 3-6).
         if self.tok.q.val().get_bit(2) {
             self.det1.d.next = self.d01.val();
-            self.na_r[1].d.next = self.n23.val();
+            self.na_r[0].d.next = self.n23.val();
         }
         if self.tok.q.val().get_bit(3) {
-            self.nb_r[2].d.next = self.n01.val();
-            self.na_g[2].d.next = self.n23.val();
+            self.nb_r[0].d.next = self.n01.val();
+            self.na_g[0].d.next = self.n23.val();
         }
         if self.tok.q.val().get_bit(4) {
-            self.nb_g[2].d.next = self.n01.val();
-            self.na_b[2].d.next = self.n23.val();
+            self.nb_g[0].d.next = self.n01.val();
+            self.na_b[0].d.next = self.n23.val();
         }
         if self.tok.q.val().get_bit(5) {
-            self.nb_b[2].d.next = self.n01.val();
+            self.nb_b[0].d.next = self.n01.val();
         }
 
         // Cycle 5: |det| and its leading one start the division.
@@ -807,73 +865,73 @@ impl Logic for ColourSetup {
         self.det_absu.next = unsigned_cast(self.det_abs.val());
         self.lead.x.next = self.det_absu.val();
         if self.tok.q.val().get_bit(4) {
-            self.rem[2].d.next = bit_cast::<37, 36>(self.lead.onehot.val());
-            self.den[2].d.next = bit_cast::<37, 36>(self.det_absu.val());
-            self.quo[2].d.next = self.k0_25.val();
-            self.shift[2].d.next = self.lead.index.val();
-            self.neg[2].d.next = self.det2.q.val().get_bit(35);
-            self.zero[2].d.next = self.det2.q.val() == self.k0_36.val();
+            self.rem[0].d.next = bit_cast::<37, 36>(self.lead.onehot.val());
+            self.den[0].d.next = bit_cast::<37, 36>(self.det_absu.val());
+            self.quo[0].d.next = self.k0_25.val();
+            self.shift[0].d.next = self.lead.index.val();
+            self.neg[0].d.next = self.det2.q.val().get_bit(35);
+            self.zero[0].d.next = self.det2.q.val() == self.k0_36.val();
         }
         // The division steps of stations 2..=8: in place in the station's window, into the next
         // station at its end.
         for k in 0..7 {
-            self.step[k].rem.next = self.rem[k + 2].q.val();
-            self.step[k].den.next = self.den[k + 2].q.val();
-            self.step[k].quo.next = self.quo[k + 2].q.val();
+            self.step[k].rem.next = self.rem[k].q.val();
+            self.step[k].den.next = self.den[k].q.val();
+            self.step[k].quo.next = self.quo[k].q.val();
         }
         if self.tok.q.val().get_bit(5) | self.tok.q.val().get_bit(6) {
-            self.rem[2].d.next = self.step[0].rem_next.val();
-            self.quo[2].d.next = self.step[0].quo_next.val();
+            self.rem[0].d.next = self.step[0].rem_next.val();
+            self.quo[0].d.next = self.step[0].quo_next.val();
         }
         if self.tok.q.val().get_bit(8) | self.tok.q.val().get_bit(9) | self.tok.q.val().get_bit(10) {
-            self.rem[3].d.next = self.step[1].rem_next.val();
-            self.quo[3].d.next = self.step[1].quo_next.val();
+            self.rem[1].d.next = self.step[1].rem_next.val();
+            self.quo[1].d.next = self.step[1].quo_next.val();
         }
         if self.tok.q.val().get_bit(12) | self.tok.q.val().get_bit(13) | self.tok.q.val().get_bit(14) {
-            self.rem[4].d.next = self.step[2].rem_next.val();
-            self.quo[4].d.next = self.step[2].quo_next.val();
+            self.rem[2].d.next = self.step[2].rem_next.val();
+            self.quo[2].d.next = self.step[2].quo_next.val();
         }
         if self.tok.q.val().get_bit(16) | self.tok.q.val().get_bit(17) | self.tok.q.val().get_bit(18) {
-            self.rem[5].d.next = self.step[3].rem_next.val();
-            self.quo[5].d.next = self.step[3].quo_next.val();
+            self.rem[3].d.next = self.step[3].rem_next.val();
+            self.quo[3].d.next = self.step[3].quo_next.val();
         }
         if self.tok.q.val().get_bit(20) | self.tok.q.val().get_bit(21) | self.tok.q.val().get_bit(22) {
-            self.rem[6].d.next = self.step[4].rem_next.val();
-            self.quo[6].d.next = self.step[4].quo_next.val();
+            self.rem[4].d.next = self.step[4].rem_next.val();
+            self.quo[4].d.next = self.step[4].quo_next.val();
         }
         if self.tok.q.val().get_bit(24) | self.tok.q.val().get_bit(25) | self.tok.q.val().get_bit(26) {
-            self.rem[7].d.next = self.step[5].rem_next.val();
-            self.quo[7].d.next = self.step[5].quo_next.val();
+            self.rem[5].d.next = self.step[5].rem_next.val();
+            self.quo[5].d.next = self.step[5].quo_next.val();
         }
         if self.tok.q.val().get_bit(28) | self.tok.q.val().get_bit(29) {
-            self.rem[8].d.next = self.step[6].rem_next.val();
-            self.quo[8].d.next = self.step[6].quo_next.val();
+            self.rem[6].d.next = self.step[6].rem_next.val();
+            self.quo[6].d.next = self.step[6].quo_next.val();
         }
 
         // Cycles 33-35: A and B of R, G, B: n (negated if det < 0) * mant on two multipliers.
-        self.n_a.next = self.na_r[9].q.val();
-        self.n_b.next = self.nb_r[9].q.val();
+        self.n_a.next = self.na_r[8].q.val();
+        self.n_b.next = self.nb_r[7].q.val();
         if self.tok.q.val().get_bit(33) {
-            self.n_a.next = self.na_g[9].q.val();
-            self.n_b.next = self.nb_g[9].q.val();
+            self.n_a.next = self.na_g[7].q.val();
+            self.n_b.next = self.nb_g[7].q.val();
         }
         if self.tok.q.val().get_bit(34) {
-            self.n_a.next = self.na_b[9].q.val();
-            self.n_b.next = self.nb_b[9].q.val();
+            self.n_a.next = self.na_b[7].q.val();
+            self.n_b.next = self.nb_b[7].q.val();
         }
         self.sn_a.next = signed_cast(self.n_a.val());
         self.sn_b.next = signed_cast(self.n_b.val());
         self.wn_a.next = signed_bit_cast_safe::<36, 35>(self.sn_a.val());
         self.wn_b.next = signed_bit_cast_safe::<36, 35>(self.sn_b.val());
-        if self.neg[9].q.val() {
+        if self.neg[7].q.val() {
             self.wn_a.next = self.k0_36s.val() - signed_bit_cast_safe::<36, 35>(self.sn_a.val());
             self.wn_b.next = self.k0_36s.val() - signed_bit_cast_safe::<36, 35>(self.sn_b.val());
         }
         self.opab_n[0].d.next = self.wn_a.val();
         self.opab_n[1].d.next = self.wn_b.val();
-        self.opab_m.d.next = signed_cast(bit_cast::<26, 25>(self.quo[9].q.val()));
-        self.sh_ab1.d.next = bit_cast::<7, 6>(self.shift[9].q.val()) + self.k4_7.val();
-        self.z_ab1.d.next = self.zero[9].q.val();
+        self.opab_m.d.next = signed_cast(bit_cast::<26, 25>(self.quo[7].q.val()));
+        self.sh_ab1.d.next = bit_cast::<7, 6>(self.shift[7].q.val()) + self.k4_7.val();
+        self.z_ab1.d.next = self.zero[7].q.val();
         self.sh_ab2.d.next = self.sh_ab1.q.val();
         self.z_ab2.d.next = self.z_ab1.q.val();
         for u in 0..2 {
@@ -890,37 +948,37 @@ impl Logic for ColourSetup {
             self.ab_b.next = self.k0_40.val();
         }
         if self.tok.q.val().get_bit(34) {
-            self.r_a[9].d.next = self.ab_a.val();
-            self.r_b[9].d.next = self.ab_b.val();
+            self.r_a[0].d.next = self.ab_a.val();
+            self.r_b[0].d.next = self.ab_b.val();
         }
         if self.tok.q.val().get_bit(35) {
-            self.g_a[10].d.next = self.ab_a.val();
-            self.g_b[10].d.next = self.ab_b.val();
+            self.g_a[0].d.next = self.ab_a.val();
+            self.g_b[0].d.next = self.ab_b.val();
         }
         if self.tok.q.val().get_bit(36) {
-            self.b_a[10].d.next = self.ab_a.val();
-            self.b_b[10].d.next = self.ab_b.val();
+            self.b_a[0].d.next = self.ab_a.val();
+            self.b_b[0].d.next = self.ab_b.val();
         }
 
         // Cycles 36-38: A*(8-x0) and B*(8-y0) of R, G, B; C two cycles later (38-40).
-        self.ca.next = self.r_a[9].q.val();
-        self.cb.next = self.r_b[9].q.val();
-        self.cx0.next = self.c_x0[9].q.val();
-        self.cy0.next = self.c_y0[9].q.val();
-        self.cv.next = self.c_v0r[9].q.val();
+        self.ca.next = self.r_a[0].q.val();
+        self.cb.next = self.r_b[0].q.val();
+        self.cx0.next = self.c_x0[8].q.val();
+        self.cy0.next = self.c_y0[8].q.val();
+        self.cv.next = self.c_v0r[8].q.val();
         if self.tok.q.val().get_bit(36) {
-            self.ca.next = self.g_a[10].q.val();
-            self.cb.next = self.g_b[10].q.val();
-            self.cx0.next = self.c_x0[10].q.val();
-            self.cy0.next = self.c_y0[10].q.val();
-            self.cv.next = self.c_v0g[10].q.val();
+            self.ca.next = self.g_a[0].q.val();
+            self.cb.next = self.g_b[0].q.val();
+            self.cx0.next = self.c_x0[9].q.val();
+            self.cy0.next = self.c_y0[9].q.val();
+            self.cv.next = self.c_v0g[9].q.val();
         }
         if self.tok.q.val().get_bit(37) {
-            self.ca.next = self.b_a[10].q.val();
-            self.cb.next = self.b_b[10].q.val();
-            self.cx0.next = self.c_x0[10].q.val();
-            self.cy0.next = self.c_y0[10].q.val();
-            self.cv.next = self.c_v0b[10].q.val();
+            self.ca.next = self.b_a[0].q.val();
+            self.cb.next = self.b_b[0].q.val();
+            self.cx0.next = self.c_x0[9].q.val();
+            self.cy0.next = self.c_y0[9].q.val();
+            self.cv.next = self.c_v0b[9].q.val();
         }
         self.scx0.next = signed_cast(self.cx0.val());
         self.scy0.next = signed_cast(self.cy0.val());
@@ -957,13 +1015,13 @@ impl Logic for ColourSetup {
             }
         }
         if self.tok.q.val().get_bit(37) {
-            self.r_c[10].d.next = self.c56.val();
+            self.r_c[0].d.next = self.c56.val();
         }
         if self.tok.q.val().get_bit(38) {
-            self.g_c[10].d.next = self.c56.val();
+            self.g_c[0].d.next = self.c56.val();
         }
         if self.tok.q.val().get_bit(39) {
-            self.b_c[11].d.next = self.c56.val();
+            self.b_c[0].d.next = self.c56.val();
         }
 
         // Cycle 41: the write.
@@ -981,17 +1039,17 @@ impl Logic for ColourSetup {
         self.tdbs_write_data.next.material = self.k0_16.val();
         if self.tok.q.val().get_bit(40) {
             self.tdbs_write_enable.next = true;
-            self.tdbs_write_address.next = self.c_index[11].q.val();
-            self.tdbs_write_data.next.r_a = self.r_a[11].q.val();
-            self.tdbs_write_data.next.r_b = self.r_b[11].q.val();
-            self.tdbs_write_data.next.r_c = self.r_c[11].q.val();
-            self.tdbs_write_data.next.g_a = self.g_a[11].q.val();
-            self.tdbs_write_data.next.g_b = self.g_b[11].q.val();
-            self.tdbs_write_data.next.g_c = self.g_c[11].q.val();
-            self.tdbs_write_data.next.b_a = self.b_a[11].q.val();
-            self.tdbs_write_data.next.b_b = self.b_b[11].q.val();
-            self.tdbs_write_data.next.b_c = self.b_c[11].q.val();
-            self.tdbs_write_data.next.material = self.c_material[11].q.val();
+            self.tdbs_write_address.next = self.c_index[10].q.val();
+            self.tdbs_write_data.next.r_a = self.r_a[2].q.val();
+            self.tdbs_write_data.next.r_b = self.r_b[2].q.val();
+            self.tdbs_write_data.next.r_c = self.r_c[1].q.val();
+            self.tdbs_write_data.next.g_a = self.g_a[1].q.val();
+            self.tdbs_write_data.next.g_b = self.g_b[1].q.val();
+            self.tdbs_write_data.next.g_c = self.g_c[1].q.val();
+            self.tdbs_write_data.next.b_a = self.b_a[1].q.val();
+            self.tdbs_write_data.next.b_b = self.b_b[1].q.val();
+            self.tdbs_write_data.next.b_c = self.b_c[0].q.val();
+            self.tdbs_write_data.next.material = self.c_material[10].q.val();
         }
     }
 }
