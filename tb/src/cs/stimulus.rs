@@ -190,18 +190,26 @@ pub fn checker_texturing(filter: golden::texture::Filter, wrap: golden::texture:
 
 /// One recording of `cs_tex` over the checkered teapot-floor scene at `w` x `h`: a textured and then
 /// an untextured frame with `filter`, `wrap` and `shading` (Phong: its lights and materials written
-/// first), driven by `drive`. The RustHDL bench checks every cycle against the cycle model while
+/// first), driven by `drive`. With `mirror`, the texture is mirrored in s and t (every TdbT record's
+/// s/w and t/w planes negated), so that the planes' gradients take the signs the scene gives them
+/// least often. The RustHDL bench checks every cycle against the cycle model while
 /// recording; the textured frame is also checked against golden.
-fn cs_tex_recording(test: &str, filter: golden::texture::Filter, wrap: golden::texture::Wrap, shading: golden::shade::Shading, (w, h): (u32, u32), drive: CsDrive) -> Result<Recording, String> {
+fn cs_tex_recording(test: &str, filter: golden::texture::Filter, wrap: golden::texture::Wrap, shading: golden::shade::Shading, (w, h): (u32, u32), mirror: bool, drive: CsDrive) -> Result<Recording, String> {
     let tx = checker_texturing(filter, wrap);
     let f = super::frames::record_textured(shading, &tx, w, h)?;
     let mut mem = f.textured_memories();
+    if mirror {
+        let neg = |p: golden::format::Plane| golden::format::Plane { a: -p.a, b: -p.b, c: -p.c };
+        let tdbt = f.chip.tdbt.iter().map(|t| t.unwrap_or_default()).map(|t| golden::texcoord::TexPlanes { sw: neg(t.sw), tw: neg(t.tw), q: t.q }).collect();
+        mem = f.memories().with_tdbt(tdbt);
+    }
     let phong = shading == golden::shade::Shading::Phong;
     let config = if phong { phong_config(&f.lights)? } else { Vec::new() };
     let spec = FrameSpec { width: w, height: h, background: f.background, clear_behind: false, phong };
     let tex = csb::TexRun { texturing: tx, textured: vec![true, false] };
     let run = csb::run_tex_rtl_vs_model(test, &mut mem, &[spec; 2], &config, &tex, drive, true)?;
-    if csb::frame_image(&run.frames[0], w, h)? != f.frame.rgb {
+    // The mirrored frame is checked against the cycle model only (in every cycle, as all are).
+    if !mirror && csb::frame_image(&run.frames[0], w, h)? != f.frame.rgb {
         return Err(format!("{test}: the textured {filter:?} frame differs from golden"));
     }
     run.recording.ok_or_else(|| format!("{test}: the bench recorded nothing"))
@@ -212,21 +220,28 @@ fn cs_tex_recording(test: &str, filter: golden::texture::Filter, wrap: golden::t
 pub fn cs_tex_replay_recording() -> Result<Recording, String> {
     use golden::texture::{Filter, Wrap};
     let drive = CsDrive { stall_percent: 25, start_while_busy_percent: 10, max_idle: 2, seed: 0x7E5 };
-    cs_tex_recording("cs_tex_replay", Filter::Trilinear, Wrap::Repeat, golden::shade::Shading::Gouraud, (40, 24), drive)
+    cs_tex_recording("cs_tex_replay", Filter::Trilinear, Wrap::Repeat, golden::shade::Shading::Gouraud, (40, 24), false, drive)
 }
 
 /// The mutation cover's stimulus for `cs_tex`: one recording per filter, as the RustHDL test
 /// `cs_tex_matches_its_cycle_model_...` runs them (nearest with clamping and Gouraud; bilinear with
-/// repeat and Phong; trilinear with repeat and Gouraud), each 48x32, 30% stalls.
+/// repeat and Phong; trilinear with repeat and Gouraud), each 48x32, 30% stalls; and a fourth,
+/// trilinear with repeat and Phong, with the texture mirrored in s and t.
 pub fn cs_tex_filter_recordings(seed: u64) -> Result<Vec<Recording>, String> {
     use golden::shade::Shading;
     use golden::texture::{Filter, Wrap};
-    [(Filter::Nearest, Wrap::ClampToEdge, Shading::Gouraud), (Filter::Bilinear, Wrap::Repeat, Shading::Phong), (Filter::Trilinear, Wrap::Repeat, Shading::Gouraud)]
-        .into_iter()
-        .enumerate()
-        .map(|(k, (filter, wrap, shading))| {
-            let drive = CsDrive { stall_percent: 30, start_while_busy_percent: 10, max_idle: 3, seed: seed + k as u64 };
-            cs_tex_recording(&format!("cs_tex_mutation_{filter:?}").to_lowercase(), filter, wrap, shading, (48, 32), drive)
-        })
-        .collect()
+    [
+        (Filter::Nearest, Wrap::ClampToEdge, Shading::Gouraud, false),
+        (Filter::Bilinear, Wrap::Repeat, Shading::Phong, false),
+        (Filter::Trilinear, Wrap::Repeat, Shading::Gouraud, false),
+        (Filter::Trilinear, Wrap::Repeat, Shading::Phong, true),
+    ]
+    .into_iter()
+    .enumerate()
+    .map(|(k, (filter, wrap, shading, mirror))| {
+        let drive = CsDrive { stall_percent: 30, start_while_busy_percent: 10, max_idle: 3, seed: seed + k as u64 };
+        let name = format!("cs_tex_mutation_{filter:?}{}", if mirror { "_mirrored" } else { "" });
+        cs_tex_recording(&name.to_lowercase(), filter, wrap, shading, (48, 32), mirror, drive)
+    })
+    .collect()
 }
