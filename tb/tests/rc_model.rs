@@ -6,7 +6,7 @@
 use golden::format::Screen;
 use tb::common::Rng;
 use tb::rc::bench::{run_model, Drive};
-use tb::rc::stimulus::{frame, hand_made, hand_made_screen, hazard_triangles, random_triangles, reference, scene_triangles};
+use tb::rc::stimulus::{frame, hand_made, hand_made_screen, hazard_triangles, power_of_two_triangles, random_triangles, reference, scene_triangles};
 
 fn check(name: &str, screen: Screen, cmds: &[golden::cycle::rc::RcCmd], drive: Drive) -> u64 {
     let run = run_model(screen, cmds, drive, None).unwrap_or_else(|e| panic!("{name}: {e}"));
@@ -155,4 +155,25 @@ fn the_fill_rule_case_puts_lone_pixel_centres_on_every_edge_index_of_both_kinds(
         }
     }
     assert_eq!(seen, [[true; 2]; 3], "[edge][top-left] with a lone centre on the edge");
+}
+
+/// The mutation cover's power-of-two lists (`power_of_two_triangles`) do what they are for: every
+/// determinant is plus or minus a power of two (the reciprocal's divisor 2^s), both signs and exponents
+/// from 0 to 16 occur, and the cycle model draws them as the algorithmic model does.
+#[test]
+fn power_of_two_triangle_lists_give_the_reciprocal_power_of_two_divisors_and_draw_as_the_reference() {
+    let mut rng = Rng::new(0x2_0002);
+    let screen = hand_made_screen();
+    let tris = power_of_two_triangles(&mut rng, screen, 80);
+    let (mut signs, mut exps) = ([false; 2], std::collections::BTreeSet::new());
+    for t in &tris {
+        let d = golden::raster::det(&t.v);
+        assert!(d != 0 && d.unsigned_abs().is_power_of_two(), "triangle {} has determinant {d}", t.index);
+        signs[(d > 0) as usize] = true;
+        exps.insert(d.unsigned_abs().trailing_zeros());
+    }
+    assert_eq!(signs, [true, true], "both windings");
+    assert!(exps.contains(&0) && exps.contains(&16) && exps.len() >= 12, "exponents {exps:?}");
+    let cmds = frame(true, tris);
+    check("power-of-two list", screen, &cmds, Drive::random("power-of-two list", 0x2_0002));
 }

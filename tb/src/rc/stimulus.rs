@@ -245,6 +245,30 @@ pub fn hazard_triangles(rng: &mut Rng, screen: Screen, n: usize, staircase: bool
         .collect()
 }
 
+/// `n` right triangles whose determinant is a power of two: legs of 2^a and 2^b subpixels (a, b in
+/// 0..=8) along the axes, at random places on the screen, in a random vertex order (so either
+/// winding; drawn with no culling), random depths and indices. The reciprocal's divisor is then 2^s,
+/// the one case in which the restoring division's remainder becomes 0 after its first step and every
+/// later step takes the "does not fit" branch.
+pub fn power_of_two_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
+    (0..n)
+        .map(|_| {
+            let (a, b) = (rng.below(9) as i32, rng.below(9) as i32);
+            let (lx, ly) = (1 << a, 1 << b);
+            let x0 = rng.below((screen.width as i32 * 16 - lx) as u64) as i32;
+            let y0 = rng.below((screen.height as i32 * 16 - ly) as u64) as i32;
+            let mut z = || rng.below(DEPTH_MAX as u64 + 1) as u32;
+            let mut v = [WinVertex { x: x0, y: y0, z: z() }, WinVertex { x: x0 + lx, y: y0, z: z() }, WinVertex { x: x0, y: y0 + ly, z: z() }];
+            if rng.chance(50) {
+                v.swap(1, 2);
+            }
+            let index = 1 + rng.below((1 << golden::cycle::rc::INDEX_BITS) - 1) as u32;
+            let front = if rng.chance(50) { FrontFace::Ccw } else { FrontFace::Cw };
+            RcCmd::triangle(index, v, CullMode::None, front).expect("on-screen vertices fit the formats")
+        })
+        .collect()
+}
+
 /// The stream that fills the RC's queues (on a 40x24 screen): a screen-size triangle keeps the
 /// traversal busy while 40 small drawn and back-facing triangles pile up behind it.
 pub fn queue_filling_triangles() -> (Screen, Vec<RcCmd>) {
