@@ -9,6 +9,7 @@ use golden::raster::{CullMode, FrontFace};
 use golden::render::{render_with, Frame, GoldenChipset, RenderOptions, Texturing};
 use golden::scene::{builtin, Winding};
 use golden::shade::{PhongLights, Shading};
+use golden::texcoord::TexPlanes;
 
 /// The golden chipset, which keeps the colour-setup commands it was sent (`setups`).
 pub type Recorder = GoldenChipset;
@@ -32,7 +33,12 @@ impl RecordedFrame {
 
     /// The same with the TdbT of a textured frame (records of untextured triangles are 0).
     pub fn textured_memories(&self) -> CsMemories {
-        let tdbt = self.chip.tdbt.iter().map(|t| t.unwrap_or_default()).collect();
+        self.textured_memories_mapped(|t| t)
+    }
+
+    /// [`Self::textured_memories`] with every TdbT record passed through `f` first.
+    pub fn textured_memories_mapped(&self, f: impl Fn(TexPlanes) -> TexPlanes) -> CsMemories {
+        let tdbt = self.chip.tdbt.iter().map(|t| f(t.unwrap_or_default())).collect();
         self.memories().with_tdbt(tdbt)
     }
 }

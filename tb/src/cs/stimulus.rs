@@ -197,12 +197,8 @@ pub fn checker_texturing(filter: golden::texture::Filter, wrap: golden::texture:
 fn cs_tex_recording(test: &str, filter: golden::texture::Filter, wrap: golden::texture::Wrap, shading: golden::shade::Shading, (w, h): (u32, u32), mirror: bool, drive: CsDrive) -> Result<Recording, String> {
     let tx = checker_texturing(filter, wrap);
     let f = super::frames::record_textured(shading, &tx, w, h)?;
-    let mut mem = f.textured_memories();
-    if mirror {
-        let neg = |p: golden::format::Plane| golden::format::Plane { a: -p.a, b: -p.b, c: -p.c };
-        let tdbt = f.chip.tdbt.iter().map(|t| t.unwrap_or_default()).map(|t| golden::texcoord::TexPlanes { sw: neg(t.sw), tw: neg(t.tw), q: t.q }).collect();
-        mem = f.memories().with_tdbt(tdbt);
-    }
+    let neg = |p: golden::format::Plane| golden::format::Plane { a: -p.a, b: -p.b, c: -p.c };
+    let mut mem = if mirror { f.textured_memories_mapped(|t| golden::texcoord::TexPlanes { sw: neg(t.sw), tw: neg(t.tw), q: t.q }) } else { f.textured_memories() };
     let phong = shading == golden::shade::Shading::Phong;
     let config = if phong { phong_config(&f.lights)? } else { Vec::new() };
     let spec = FrameSpec { width: w, height: h, background: f.background, clear_behind: false, phong };
