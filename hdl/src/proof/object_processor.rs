@@ -14,6 +14,8 @@
 //!                  +-------------------------------------------------+
 //! ```
 //!
+//! * Parameters: the load puts the start values (edge distances, depth, normal) straight into the
+//!   accumulators and keeps the rest ([`ObjSteps`]: id, box, steps, thresholds, opacity) in `params`.
 //! * Primitive processor: per quantity a `row` accumulator (the current line's first box pixel) and a
 //!   `cur` accumulator (the current box pixel). When a box pixel's list has left, `cur` steps by the
 //!   per-pixel increment, or at the box's right edge `row` steps by the per-line increment and `cur`
@@ -24,7 +26,7 @@
 //!   (the rest is dropped, one slot per cycle, without output); a full head drops the own entry.
 
 use super::slot_fifo::SlotFifo;
-use super::types::{ObjParams, ProofSlot};
+use super::types::{ObjParams, ObjSteps, ProofSlot};
 use crate::common::{signed_bit_cast_safe, StreamIn, StreamOut};
 use rust_hdl::prelude::*;
 
@@ -47,7 +49,8 @@ pub struct ObjectProcessor {
     pub free: Signal<Out, Bit>,
 
     // Registers (pub so that the testbench can compare them with the model).
-    pub params: DFF<ObjParams>,
+    /// The loaded object's id, box, steps, thresholds and opacity (not its start values).
+    pub params: DFF<ObjSteps>,
     pub row_d0: DFF<Signed<27>>,
     pub row_d1: DFF<Signed<27>>,
     pub row_d2: DFF<Signed<27>>,
@@ -76,7 +79,7 @@ pub struct ObjectProcessor {
     pub fifo: SlotFifo,
 
     // Combinational temporaries.
-    p: Signal<Local, ObjParams>,
+    p: Signal<Local, ObjSteps>,
     h: Signal<Local, ProofSlot>,
     own_slot: Signal<Local, ProofSlot>,
     emit_slot: Signal<Local, ProofSlot>,
@@ -478,7 +481,32 @@ impl Logic for ObjectProcessor {
 
         // ---- Loading (only while free; overrides the step).
         if self.load.val() {
-            self.params.d.next = self.load_params.val();
+            self.params.d.next.id = self.load_params.val().id;
+            self.params.d.next.x0 = self.load_params.val().x0;
+            self.params.d.next.x1 = self.load_params.val().x1;
+            self.params.d.next.y0 = self.load_params.val().y0;
+            self.params.d.next.y1 = self.load_params.val().y1;
+            self.params.d.next.e0_sx = self.load_params.val().e0_sx;
+            self.params.d.next.e0_sy = self.load_params.val().e0_sy;
+            self.params.d.next.e0_tn = self.load_params.val().e0_tn;
+            self.params.d.next.e0_tf = self.load_params.val().e0_tf;
+            self.params.d.next.e1_sx = self.load_params.val().e1_sx;
+            self.params.d.next.e1_sy = self.load_params.val().e1_sy;
+            self.params.d.next.e1_tn = self.load_params.val().e1_tn;
+            self.params.d.next.e1_tf = self.load_params.val().e1_tf;
+            self.params.d.next.e2_sx = self.load_params.val().e2_sx;
+            self.params.d.next.e2_sy = self.load_params.val().e2_sy;
+            self.params.d.next.e2_tn = self.load_params.val().e2_tn;
+            self.params.d.next.e2_tf = self.load_params.val().e2_tf;
+            self.params.d.next.z_dx = self.load_params.val().z_dx;
+            self.params.d.next.z_dy = self.load_params.val().z_dy;
+            self.params.d.next.nx_dx = self.load_params.val().nx_dx;
+            self.params.d.next.nx_dy = self.load_params.val().nx_dy;
+            self.params.d.next.ny_dx = self.load_params.val().ny_dx;
+            self.params.d.next.ny_dy = self.load_params.val().ny_dy;
+            self.params.d.next.nz_dx = self.load_params.val().nz_dx;
+            self.params.d.next.nz_dy = self.load_params.val().nz_dy;
+            self.params.d.next.opaque = self.load_params.val().opaque;
             self.loaded.d.next = true;
             self.done.d.next = false;
             self.row_d0.d.next = signed_cast(self.load_params.val().e0_d);

@@ -77,6 +77,40 @@ pub struct ObjParams {
     pub opaque: Bit,
 }
 
+/// What an object processor keeps of its [`ObjParams`] after the load: the id, the box, the steps, the
+/// thresholds and the opacity. The start values (`e*_d`, `z_v`, `n*_v`) go straight into the
+/// accumulators at the load and are never read again, so the OP does not store them (209 of the 732
+/// bits).
+#[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
+pub struct ObjSteps {
+    pub id: Bits<16>,
+    pub x0: Bits<10>,
+    pub x1: Bits<10>,
+    pub y0: Bits<10>,
+    pub y1: Bits<10>,
+    pub e0_sx: Bits<17>,
+    pub e0_sy: Bits<17>,
+    pub e0_tn: Bits<18>,
+    pub e0_tf: Bits<18>,
+    pub e1_sx: Bits<17>,
+    pub e1_sy: Bits<17>,
+    pub e1_tn: Bits<18>,
+    pub e1_tf: Bits<18>,
+    pub e2_sx: Bits<17>,
+    pub e2_sy: Bits<17>,
+    pub e2_tn: Bits<18>,
+    pub e2_tf: Bits<18>,
+    pub z_dx: Bits<32>,
+    pub z_dy: Bits<32>,
+    pub nx_dx: Bits<32>,
+    pub nx_dy: Bits<32>,
+    pub ny_dx: Bits<32>,
+    pub ny_dy: Bits<32>,
+    pub nz_dx: Bits<32>,
+    pub nz_dy: Bits<32>,
+    pub opaque: Bit,
+}
+
 /// A shaded time slot (shading stage -> filter): the slot without depth and normal, with the entry's
 /// colour (0 for an empty slot).
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
