@@ -65,8 +65,8 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
             Ok(Target { top: "cs", verilog: hdl::verilog_top("cs")?, stimulus, replay })
         }
         "cs_tex" => {
-            // One recording per filter (Phong with bilinear) and a mirrored one, each a Verilator build and run per mutant:
-            // Icarus replays cs_tex at about two cycles per second. (The replay test's own recording,
+            // One recording per filter (Phong with bilinear) and a mirrored one, one Verilator build and four runs per
+            // mutant: Icarus replays cs_tex at about two cycles per second. (The replay test's own recording,
             // trilinear Gouraud on 40x24, killed the same 2 of the first 12 mutants drawn.)
             let recs = crate::cs::stimulus::cs_tex_filter_recordings(0x7E57)?;
             let cycles: Vec<String> = recs.iter().map(|r| r.cycles().to_string()).collect();
@@ -74,7 +74,7 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
                 "{} cycles: per filter (nearest with clamping, bilinear with Phong, trilinear), then trilinear Phong with the texture mirrored in s and t, a textured and an untextured 48x32 frame of the checkered teapot-floor scene, 30% stalls, starts offered while busy",
                 cycles.join(" + ")
             );
-            let replay: Replay = Box::new(move |v, d| recs.iter().try_for_each(|rec| crate::cs::replay::replay_verilator(v, "cs_tex", rec, d).map(|_| ())));
+            let replay: Replay = Box::new(move |v, d| crate::cs::replay::replay_verilator_all(v, "cs_tex", &recs, d).map(|_| ()));
             Ok(Target { top: "cs_tex", verilog: hdl::cs::color_shader_tex::verilog()?, stimulus, replay })
         }
         "opp" => opp_target(dir),

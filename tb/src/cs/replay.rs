@@ -55,12 +55,19 @@ fn ident(name: &str) -> String {
 
 /// The self-checking testbench for `top` and this recording.
 pub fn testbench(top: &str, rec: &Recording) -> String {
+    testbench_for(top, rec, rec.cycles())
+}
+
+/// The self-checking testbench for `top`, the ports of `rec` and recordings of up to `capacity`
+/// cycles: it replays `rec.cycles()` of them, or `+cycles=N` given at run time (one build for several
+/// recordings of the same ports, [`replay_verilator_all`]).
+fn testbench_for(top: &str, rec: &Recording, capacity: usize) -> String {
     let wi = Recording::width(&rec.inputs);
     let wo = Recording::width(&rec.outputs);
     let n = rec.cycles();
     let mut s = String::new();
     let _ = writeln!(s, "`timescale 1ns/1ps\nmodule replay_tb;");
-    let _ = writeln!(s, "  reg clock = 1'b0;\n  reg [{}:0] vin [0:{}];\n  reg [{}:0] vout [0:{}];", wi - 1, n - 1, wo - 1, n - 1);
+    let _ = writeln!(s, "  reg clock = 1'b0;\n  reg [{}:0] vin [0:{}];\n  reg [{}:0] vout [0:{}];", wi - 1, capacity - 1, wo - 1, capacity - 1);
     let _ = writeln!(s, "  reg [{}:0] cur_in;\n  reg [{}:0] cur_out;", wi - 1, wo - 1);
     let mut off = 0;
     for p in &rec.inputs {
@@ -74,10 +81,11 @@ pub fn testbench(top: &str, rec: &Recording) -> String {
     conns.extend(rec.inputs.iter().map(|p| format!(".{}(in_{})", p.name, ident(&p.name))));
     conns.extend(rec.outputs.iter().map(|p| format!(".{}(out_{})", p.name, ident(&p.name))));
     let _ = writeln!(s, "  {top} dut(\n    {}\n  );", conns.join(",\n    "));
-    let _ = writeln!(s, "  integer cyc, errors;");
+    let _ = writeln!(s, "  integer cyc, errors, n;");
     let _ = writeln!(s, "  initial begin");
+    let _ = writeln!(s, "    if (!$value$plusargs(\"cycles=%d\", n)) n = {n};");
     let _ = writeln!(s, "    $readmemh(\"in.hex\", vin);\n    $readmemh(\"out.hex\", vout);\n    errors = 0;");
-    let _ = writeln!(s, "    for (cyc = 0; cyc < {n}; cyc = cyc + 1) begin");
+    let _ = writeln!(s, "    for (cyc = 0; cyc < n; cyc = cyc + 1) begin");
     let _ = writeln!(s, "      cur_in = vin[cyc];\n      cur_out = vout[cyc];\n      clock = 1'b0;\n      #5;");
     let mut off = 0;
     for p in &rec.outputs {
@@ -92,7 +100,7 @@ pub fn testbench(top: &str, rec: &Recording) -> String {
     }
     let _ = writeln!(s, "      if (errors >= 8) begin\n        $display(\"REPLAY STOPPED errors %0d\", errors);\n        $finish;\n      end");
     let _ = writeln!(s, "      clock = 1'b1;\n      #5;\n    end");
-    let _ = writeln!(s, "    $display(\"REPLAY DONE cycles %0d errors %0d\", {n}, errors);\n    $finish;\n  end\nendmodule");
+    let _ = writeln!(s, "    $display(\"REPLAY DONE cycles %0d errors %0d\", n, errors);\n    $finish;\n  end\nendmodule");
     s
 }
 
@@ -105,13 +113,24 @@ pub struct ReplayReport {
 
 /// Write the top's Verilog, the testbench and the vectors of `rec` into `dir`.
 fn write_replay(verilog: &str, top: &str, rec: &Recording, dir: &Path) -> Result<(), String> {
+    write_replay_for(verilog, top, rec, rec.cycles(), dir)
+}
+
+/// [`write_replay`] with a testbench for up to `capacity` cycles.
+fn write_replay_for(verilog: &str, top: &str, rec: &Recording, capacity: usize, dir: &Path) -> Result<(), String> {
     if rec.cycles() == 0 {
         return Err("replay: empty recording".into());
     }
     std::fs::create_dir_all(dir).map_err(|e| format!("replay: cannot create {}: {e}", dir.display()))?;
     let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).map_err(|e| format!("replay: cannot write {name}: {e}"));
     write(&format!("{top}.v"), verilog)?;
-    write("replay_tb.v", &testbench(top, rec))?;
+    write("replay_tb.v", &testbench_for(top, rec, capacity))?;
+    write_vectors(rec, dir)
+}
+
+/// The vectors of `rec` as `in.hex` and `out.hex` in `dir`.
+fn write_vectors(rec: &Recording, dir: &Path) -> Result<(), String> {
+    let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).map_err(|e| format!("replay: cannot write {name}: {e}"));
     write("in.hex", &rec.vin.iter().map(|v| v.hex() + "\n").collect::<String>())?;
     write("out.hex", &rec.vout.iter().map(|v| v.hex() + "\n").collect::<String>())
 }
@@ -169,7 +188,19 @@ pub fn replay_iverilog(verilog: &str, top: &str, rec: &Recording, dir: &Path) ->
 /// block re-runs for every change of the texture unit's outputs), Verilator the whole run in 0.1 s
 /// after a 15 s build.
 pub fn replay_verilator(verilog: &str, top: &str, rec: &Recording, dir: &Path) -> Result<ReplayReport, String> {
-    write_replay(verilog, top, rec, dir)?;
+    replay_verilator_all(verilog, top, std::slice::from_ref(rec), dir).map(|mut r| r.remove(0))
+}
+
+/// [`replay_verilator`] of several recordings of the same ports, one after another, each from the
+/// top's initial state (a new run of the one Verilator build, which takes most of the time: about
+/// 15 s on `cs_tex`, its Yosys netlist longer). The first failing recording ends it.
+pub fn replay_verilator_all(verilog: &str, top: &str, recs: &[Recording], dir: &Path) -> Result<Vec<ReplayReport>, String> {
+    let first = recs.first().ok_or("replay: no recording")?;
+    if let Some(k) = recs.iter().position(|r| r.inputs != first.inputs || r.outputs != first.outputs) {
+        return Err(format!("replay: recording {k} has other ports than recording 0"));
+    }
+    let capacity = recs.iter().map(|r| r.cycles()).max().unwrap_or(0);
+    write_replay_for(verilog, top, first, capacity, dir)?;
     let _ = std::fs::remove_dir_all(dir.join("obj_dir"));
     let out = Command::new("verilator")
         .current_dir(dir)
@@ -179,7 +210,17 @@ pub fn replay_verilator(verilog: &str, top: &str, rec: &Recording, dir: &Path) -
     if !out.status.success() {
         return Err(format!("replay: verilator failed to build {top}:\n{}", String::from_utf8_lossy(&out.stderr)));
     }
-    run_replay(&["./obj_dir/Vreplay_tb"], "the Verilator model", top, rec, dir)
+    let mut reports = Vec::new();
+    for (k, rec) in recs.iter().enumerate() {
+        if k > 0 {
+            write_vectors(rec, dir)?;
+        }
+        let cycles = format!("+cycles={}", rec.cycles());
+        let r = run_replay(&["./obj_dir/Vreplay_tb", &cycles], "the Verilator model", top, rec, dir)
+            .map_err(|e| if recs.len() > 1 { format!("recording {k} of {}: {e}", recs.len()) } else { e })?;
+        reports.push(r);
+    }
+    Ok(reports)
 }
 
 /// Cell counts of `yosys synth_ice40 -dsp`.
