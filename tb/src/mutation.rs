@@ -113,15 +113,19 @@ fn rc_target(dir: &Path) -> Result<Target, String> {
 }
 
 /// What [`rc_stream`] holds, after its cycle count.
-const RC_STREAM: &str = "cycles at 32x24: the hand-made cases, 6 random lists of 40 triangles, 8 lists of 80 triangles on one pixel each (fragments back to back; random, near or stepping depths; 16-bit indices) and 2 lists of 40 right triangles with power-of-two determinants, random gaps and stalls";
+const RC_STREAM: &str = "cycles at 32x24: the hand-made cases, 6 random lists of 40 triangles, 8 lists of 80 triangles on one pixel each (fragments back to back; random, near or stepping depths; 16-bit indices) 2 lists of 40 right triangles with power-of-two determinants and 2 queue-filling lists (40 small, then 40 random triangles behind a screen-size one), random gaps and stalls";
 
 /// The RCs' stream at 32x24: the hand-made cases, then six random lists of 40 triangles, then eight
 /// lists of 80 triangles on one pixel each (four with random depths, four with a staircase) ([`hazard_triangles`](crate::rc::stimulus::hazard_triangles),
 /// added for the survivors of the first run: forwarded depths and high index bits), then two lists of
 /// 40 right triangles with power-of-two determinants ([`power_of_two_triangles`](crate::rc::stimulus::power_of_two_triangles),
-/// added for a survivor in the reciprocal's remainder).
+/// added for a survivor in the reciprocal's remainder), then two queue-filling lists: a screen-size
+/// triangle with 40 small ones piling up behind it
+/// ([`queue_filling_triangles_on`](crate::rc::stimulus::queue_filling_triangles_on)), and with 40
+/// random ones ([`queue_filling_random_triangles`](crate::rc::stimulus::queue_filling_random_triangles));
+/// added for a survivor in a queue entry's hold.
 fn rc_stream() -> (Screen, Vec<golden::cycle::rc::RcCmd>) {
-    use crate::rc::stimulus::{frame, hand_made, hand_made_screen, hazard_triangles, power_of_two_triangles, random_triangles};
+    use crate::rc::stimulus::{frame, hand_made, hand_made_screen, hazard_triangles, power_of_two_triangles, queue_filling_random_triangles, queue_filling_triangles_on, random_triangles};
     let screen = hand_made_screen();
     let mut cmds: Vec<_> = hand_made().into_iter().flat_map(|(_, c)| c).collect();
     let mut rng = Rng::new(0x3_7a7e);
@@ -134,6 +138,8 @@ fn rc_stream() -> (Screen, Vec<golden::cycle::rc::RcCmd>) {
     for _ in 0..2 {
         cmds.extend(frame(true, power_of_two_triangles(&mut rng, screen, 40)));
     }
+    cmds.extend(queue_filling_triangles_on(screen));
+    cmds.extend(queue_filling_random_triangles(&mut rng, screen, 40));
     (screen, cmds)
 }
 

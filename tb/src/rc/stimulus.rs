@@ -163,29 +163,30 @@ pub fn hand_made_screen() -> Screen {
 /// `n` random triangles over a screen: vertices anywhere in the guard band, some tiny, some large,
 /// random depths, cull modes and front faces.
 pub fn random_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
+    (0..n).map(|i| random_triangle(rng, screen, i as u32 + 1)).collect()
+}
+
+/// One triangle of [`random_triangles`], with index `index`.
+fn random_triangle(rng: &mut Rng, screen: Screen, index: u32) -> RcCmd {
     let (gx0, gx1) = screen.guard_x();
     let (gy0, gy1) = screen.guard_y();
-    let mut v = Vec::with_capacity(n);
-    for i in 0..n {
-        let big = rng.chance(20);
-        let (cx, cy) = (rng.below((gx1 - gx0) as u64) as i32 + gx0, rng.below((gy1 - gy0) as u64) as i32 + gy0);
-        let (cx, cy) = if big { (cx, cy) } else { (rng.below(screen.width as u64 * 16) as i32, rng.below(screen.height as u64 * 16) as i32) };
-        let r = if big { (gx1 - gx0) as u64 } else { 1 + rng.below(6 * 16) };
-        let mut p = [WinVertex::default(); 3];
-        for q in &mut p {
-            let dx = rng.below(2 * r + 1) as i32 - r as i32;
-            let dy = rng.below(2 * r + 1) as i32 - r as i32;
-            *q = WinVertex {
-                x: (cx + dx).clamp(gx0, gx1 - 1),
-                y: (cy + dy).clamp(gy0, gy1 - 1),
-                z: if rng.chance(10) { DEPTH_MAX - rng.below(4) as u32 } else { rng.below(DEPTH_MAX as u64 + 1) as u32 },
-            };
-        }
-        let cull = [CullMode::Back, CullMode::Front, CullMode::None][rng.below(3) as usize];
-        let front = if rng.chance(50) { FrontFace::Ccw } else { FrontFace::Cw };
-        v.push(RcCmd::triangle(i as u32 + 1, p, cull, front).expect("guard-band vertices fit the formats"));
+    let big = rng.chance(20);
+    let (cx, cy) = (rng.below((gx1 - gx0) as u64) as i32 + gx0, rng.below((gy1 - gy0) as u64) as i32 + gy0);
+    let (cx, cy) = if big { (cx, cy) } else { (rng.below(screen.width as u64 * 16) as i32, rng.below(screen.height as u64 * 16) as i32) };
+    let r = if big { (gx1 - gx0) as u64 } else { 1 + rng.below(6 * 16) };
+    let mut p = [WinVertex::default(); 3];
+    for q in &mut p {
+        let dx = rng.below(2 * r + 1) as i32 - r as i32;
+        let dy = rng.below(2 * r + 1) as i32 - r as i32;
+        *q = WinVertex {
+            x: (cx + dx).clamp(gx0, gx1 - 1),
+            y: (cy + dy).clamp(gy0, gy1 - 1),
+            z: if rng.chance(10) { DEPTH_MAX - rng.below(4) as u32 } else { rng.below(DEPTH_MAX as u64 + 1) as u32 },
+        };
     }
-    v
+    let cull = [CullMode::Back, CullMode::Front, CullMode::None][rng.below(3) as usize];
+    let front = if rng.chance(50) { FrontFace::Ccw } else { FrontFace::Cw };
+    RcCmd::triangle(index, p, cull, front).expect("guard-band vertices fit the formats")
 }
 
 /// `n` triangles on one pixel, for the Z-test's forwarding: groups of a triangle of about 8x8 pixels
@@ -273,10 +274,27 @@ pub fn power_of_two_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<Rc
 /// traversal busy while 40 small drawn and back-facing triangles pile up behind it.
 pub fn queue_filling_triangles() -> (Screen, Vec<RcCmd>) {
     let screen = Screen::new(40, 24).expect("a valid size");
+    (screen, queue_filling_triangles_on(screen))
+}
+
+/// [`queue_filling_triangles_on`] with `n` of [`random_triangles`] behind the screen-size triangle
+/// (indices 2 to n + 1): the queues fill with records of every kind (drawn, culled, zero-area; any
+/// edge steps).
+pub fn queue_filling_random_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
+    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16, y: y * 16, z };
+    let mut tris = vec![RcCmd::triangle(1, [v(-20, -20, 900), v(80, -20, 900), v(-20, 60, 900)], CullMode::None, FrontFace::Ccw).expect("fits")];
+    tris.extend((0..n).map(|i| random_triangle(rng, screen, i as u32 + 2)));
+    frame(false, tris)
+}
+
+/// [`queue_filling_triangles`] on any screen of at least 8x6 pixels: the small triangles spread over
+/// it the same way (at 40x24 the same stream).
+pub fn queue_filling_triangles_on(screen: Screen) -> Vec<RcCmd> {
+    let (xs, ys) = (screen.width as i32 - 6, screen.height as i32 - 4);
     let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16, y: y * 16, z };
     let mut tris = vec![RcCmd::triangle(1, [v(-20, -20, 900), v(80, -20, 900), v(-20, 60, 900)], CullMode::None, FrontFace::Ccw).expect("fits")];
     for i in 0..40u32 {
-        let (x, y) = (2 + (i as i32 * 3) % 34, 2 + (i as i32 * 5) % 20);
+        let (x, y) = (2 + (i as i32 * 3) % xs, 2 + (i as i32 * 5) % ys);
         let t = if i % 3 == 2 {
             // back-facing under Back culling: a result without traversal
             RcCmd::triangle(i + 2, [v(x, y, 100), v(x, y + 2, 100), v(x + 2, y, 100)], CullMode::Back, FrontFace::Cw)
@@ -285,7 +303,7 @@ pub fn queue_filling_triangles() -> (Screen, Vec<RcCmd>) {
         };
         tris.push(t.expect("fits"));
     }
-    (screen, frame(false, tris))
+    frame(false, tris)
 }
 
 /// What the algorithmic model makes of a command stream, starting from cleared buffers.
