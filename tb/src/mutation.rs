@@ -159,10 +159,17 @@ fn rc3_target(dir: &Path) -> Result<Target, String> {
 }
 
 /// `opp` (eight OPs, FIFO depth 1): random frames of 14, 20 and 20 objects at 24x16, 25% gaps on both
-/// sides (the third with 60% output stalls), and a fourth of 20 with every other object transparent
-/// (issue 22's `opaque` bit).
+/// sides (the third with 60% output stalls), a fourth of 20 with every other object transparent
+/// (issue 22's `opaque` bit), and three added for the survivors of round 3, which all sit in OP 0's
+/// parameters and comparisons: 48 small objects (OP 0 reloaded many times), 20 with vertices up to
+/// 40 pixels off a centre (edge distances and depths far from the screen's), 24 at depths 0-3
+/// (lists of near-equal depths, ties broken by the id); and two for the survivors of the draw after
+/// the parameter trim: 40 right triangles with axis-aligned legs on pixel corners
+/// ([`axis_aligned_objects`](crate::proof::bench::axis_aligned_objects): distance plus threshold
+/// exactly 0), 20 random objects on a 1024x2 screen (pixel columns above 511), and there 12 right
+/// triangles with legs of 1500-2000 pixels (edge distances above 1024 pixels).
 fn opp_target(dir: &Path) -> Result<Target, String> {
-    use crate::proof::bench::{opp_ports, random_objects, run_frame};
+    use crate::proof::bench::{axis_aligned_objects, opp_ports, random_objects, random_objects_shaped, run_frame, ObjectShape};
     use golden::proof::cycle_opp::Gaps;
     let s = Screen::new(24, 16)?;
     let mut rng = Rng::new(0x7e91a7);
@@ -170,8 +177,21 @@ fn opp_target(dir: &Path) -> Result<Target, String> {
     // Frames 0 and 1 as in the first cover run; frame 2 (added for its survivors) holds the output
     // back 60 % of the time. (Random 16-bit ids are not possible: an id is the object's position in
     // the frame's list in every model.)
-    for (i, count) in [14, 20, 20, 20].into_iter().enumerate() {
-        let mut objs = random_objects(&mut rng, s, count, 8);
+    let shaped = [
+        ObjectShape { span: 3, big_span: 6, big_percent: 20, depths: 1 << 24 },
+        ObjectShape { span: 24, big_span: 80, big_percent: 50, depths: 1 << 24 },
+        ObjectShape { span: 12, big_span: 24, big_percent: 30, depths: 4 },
+    ];
+    let wide = Screen::new(1024, 2)?;
+    for (i, count) in [14, 20, 20, 20, 48, 20, 24, 40, 20, 12].into_iter().enumerate() {
+        let screen = if i >= 8 { wide } else { s };
+        let mut objs = match i {
+            0..=3 => random_objects(&mut rng, s, count, 8),
+            4..=6 => random_objects_shaped(&mut rng, s, count, 8, shaped[i - 4]),
+            7 => axis_aligned_objects(&mut rng, s, count, 8, (1, 6)),
+            8 => random_objects_shaped(&mut rng, wide, count, 8, ObjectShape { span: 40, big_span: 200, big_percent: 30, depths: 1 << 24 }),
+            _ => axis_aligned_objects(&mut rng, wide, count, 8, (1500, 2000)),
+        };
         if i == 3 {
             for o in objs.iter_mut().step_by(2) {
                 o.alpha = 128;
@@ -179,11 +199,11 @@ fn opp_target(dir: &Path) -> Result<Target, String> {
         }
         let sink_gap_percent = if i == 2 { 60 } else { 25 };
         let gaps = Gaps { seed: rng.next_u64(), source_gap_percent: 25, sink_gap_percent };
-        let (_, rec) = run_frame(s, &objs, 8, 1, Some(gaps), None, Some(dir.join(format!("opp{i}.vec"))))?;
+        let (_, rec) = run_frame(screen, &objs, 8, 1, Some(gaps), None, Some(dir.join(format!("opp{i}.vec"))))?;
         recs.push(rec.ok_or("the OPP bench wrote no vectors")?);
     }
     let stimulus = format!(
-        "{} cycles: four random frames (14, 20, 20 and 20 objects, the third with 60% output stalls, the fourth with every other object transparent) at 24x16, 25% gaps",
+        "{} cycles: ten random frames, 25% gaps: at 24x16 14, 20, 20 and 20 objects (the third with 60% output stalls, the fourth with every other object transparent), 48 small ones, 20 far-reaching ones, 24 at depths 0-3, 40 axis-aligned right triangles on pixel corners; at 1024x2 20 objects, 12 right triangles with legs of 1500-2000 pixels",
         recs.iter().map(|r| r.1).sum::<u64>()
     );
     let replay: Replay = Box::new(move |v, d| {

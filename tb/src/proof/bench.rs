@@ -224,19 +224,64 @@ impl<B: OppTop> OppDrive for Watched<'_, B> {
 /// Random triangles on a small screen, at most `max_ops` OPs needed with reuse; some big and some in
 /// front of others so that lists have partial and full entries, insertions and drops.
 pub fn random_objects(rng: &mut crate::common::Rng, screen: Screen, count: usize, max_ops: usize) -> Vec<ObjectParams> {
+    let big_span = screen.width.max(screen.height) as i64;
+    random_objects_shaped(rng, screen, count, max_ops, ObjectShape { span: 12, big_span, big_percent: 20, depths: 1 << 24 })
+}
+
+/// Right triangles with axis-aligned legs and every vertex on a pixel corner (legs of `legs.0` to
+/// `legs.1` pixels, the right angle in any of the four corners, the legs any two of the three edges):
+/// at the pixel centres beside a leg the distance plus the "none" threshold (half a pixel there) is
+/// exactly 0, the one value where `d + t_none <= 0` tells a pixel outside from one inside.
+pub fn axis_aligned_objects(rng: &mut crate::common::Rng, screen: Screen, count: usize, max_ops: usize, legs: (u64, u64)) -> Vec<ObjectParams> {
+    let mut objs: Vec<ObjectParams> = Vec::new();
+    let mut tries = 0;
+    while objs.len() < count && tries < 10 * count {
+        tries += 1;
+        let (x, y) = (rng.below(screen.width as u64 + 2) as i32 - 1, rng.below(screen.height as u64 + 2) as i32 - 1);
+        let mut leg = || (legs.0 + rng.below(legs.1 - legs.0 + 1)) as i32;
+        let (a, b) = (leg(), leg());
+        let (sx, sy) = (if rng.chance(50) { 1 } else { -1 }, if rng.chance(50) { 1 } else { -1 });
+        let z = rng.below(1 << 24) as u32;
+        let corner = |px: i32, py: i32| golden::format::WinVertex { x: px * 16, y: py * 16, z };
+        // Rotated, so that each of the three edges (in the order with det > 0) is a leg in some objects.
+        let mut v = [corner(x, y), corner(x + sx * a, y), corner(x, y + sy * b)];
+        v.rotate_left(rng.below(3) as usize);
+        let n = [0, 1, 2].map(|_| [0, 1, 2].map(|_| rng.below(32768) as i64 - 16384));
+        if let Some(p) = golden::proof::setup::object_setup(&v, n, objs.len() as u16, screen) {
+            objs.push(p);
+            if golden::proof::render::ops_needed(screen, &objs) as usize > max_ops {
+                objs.pop();
+            }
+        }
+    }
+    objs
+}
+
+/// What [`random_objects_shaped`] draws: vertices within `span` pixels of a centre (`big_span` for
+/// `big_percent` % of the objects), depths in `[0, depths)`.
+#[derive(Clone, Copy, Debug)]
+pub struct ObjectShape {
+    pub span: i64,
+    pub big_span: i64,
+    pub big_percent: u64,
+    pub depths: u64,
+}
+
+/// Random triangles of the given shape on a small screen, at most `max_ops` OPs needed with reuse.
+pub fn random_objects_shaped(rng: &mut crate::common::Rng, screen: Screen, count: usize, max_ops: usize, shape: ObjectShape) -> Vec<ObjectParams> {
     let mut objs: Vec<ObjectParams> = Vec::new();
     let (w, h) = (screen.width as i64 * 16, screen.height as i64 * 16);
     let mut tries = 0;
     while objs.len() < count && tries < 10 * count {
         tries += 1;
-        let big = rng.chance(20);
-        let span = if big { w.max(h) } else { 12 * 16 };
+        let big = rng.chance(shape.big_percent);
+        let span = 16 * if big { shape.big_span } else { shape.span };
         let cx = rng.below((w + 64) as u64) as i64 - 32;
         let cy = rng.below((h + 64) as u64) as i64 - 32;
         let v = [0, 1, 2].map(|_| golden::format::WinVertex {
             x: (cx + rng.below(span as u64) as i64 - span / 2) as i32,
             y: (cy + rng.below(span as u64) as i64 - span / 2) as i32,
-            z: rng.below(1 << 24) as u32,
+            z: rng.below(shape.depths) as u32,
         });
         let n = [0, 1, 2].map(|_| [0, 1, 2].map(|_| rng.below(32768) as i64 - 16384));
         if let Some(p) = golden::proof::setup::object_setup(&v, n, objs.len() as u16, screen) {
