@@ -233,10 +233,7 @@ pub fn random_objects(rng: &mut crate::common::Rng, screen: Screen, count: usize
 /// at the pixel centres beside a leg the distance plus the "none" threshold (half a pixel there) is
 /// exactly 0, the one value where `d + t_none <= 0` tells a pixel outside from one inside.
 pub fn axis_aligned_objects(rng: &mut crate::common::Rng, screen: Screen, count: usize, max_ops: usize, legs: (u64, u64)) -> Vec<ObjectParams> {
-    let mut objs: Vec<ObjectParams> = Vec::new();
-    let mut tries = 0;
-    while objs.len() < count && tries < 10 * count {
-        tries += 1;
+    set_up_objects(rng, screen, count, max_ops, |rng| {
         let (x, y) = (rng.below(screen.width as u64 + 2) as i32 - 1, rng.below(screen.height as u64 + 2) as i32 - 1);
         let mut leg = || (legs.0 + rng.below(legs.1 - legs.0 + 1)) as i32;
         let (a, b) = (leg(), leg());
@@ -246,15 +243,8 @@ pub fn axis_aligned_objects(rng: &mut crate::common::Rng, screen: Screen, count:
         // Rotated, so that each of the three edges (in the order with det > 0) is a leg in some objects.
         let mut v = [corner(x, y), corner(x + sx * a, y), corner(x, y + sy * b)];
         v.rotate_left(rng.below(3) as usize);
-        let n = [0, 1, 2].map(|_| [0, 1, 2].map(|_| rng.below(32768) as i64 - 16384));
-        if let Some(p) = golden::proof::setup::object_setup(&v, n, objs.len() as u16, screen) {
-            objs.push(p);
-            if golden::proof::render::ops_needed(screen, &objs) as usize > max_ops {
-                objs.pop();
-            }
-        }
-    }
-    objs
+        v
+    })
 }
 
 /// What [`random_objects_shaped`] draws: vertices within `span` pixels of a centre (`big_span` for
@@ -269,20 +259,35 @@ pub struct ObjectShape {
 
 /// Random triangles of the given shape on a small screen, at most `max_ops` OPs needed with reuse.
 pub fn random_objects_shaped(rng: &mut crate::common::Rng, screen: Screen, count: usize, max_ops: usize, shape: ObjectShape) -> Vec<ObjectParams> {
-    let mut objs: Vec<ObjectParams> = Vec::new();
     let (w, h) = (screen.width as i64 * 16, screen.height as i64 * 16);
-    let mut tries = 0;
-    while objs.len() < count && tries < 10 * count {
-        tries += 1;
+    set_up_objects(rng, screen, count, max_ops, |rng| {
         let big = rng.chance(shape.big_percent);
         let span = 16 * if big { shape.big_span } else { shape.span };
         let cx = rng.below((w + 64) as u64) as i64 - 32;
         let cy = rng.below((h + 64) as u64) as i64 - 32;
-        let v = [0, 1, 2].map(|_| golden::format::WinVertex {
+        [0, 1, 2].map(|_| golden::format::WinVertex {
             x: (cx + rng.below(span as u64) as i64 - span / 2) as i32,
             y: (cy + rng.below(span as u64) as i64 - span / 2) as i32,
             z: rng.below(shape.depths) as u32,
-        });
+        })
+    })
+}
+
+/// Up to `count` objects from the triangles `draw` gives (each with random vertex normals), skipping
+/// those the setup rejects and those that would need more than `max_ops` OPs; at most `10 * count`
+/// tries.
+fn set_up_objects(
+    rng: &mut crate::common::Rng,
+    screen: Screen,
+    count: usize,
+    max_ops: usize,
+    mut draw: impl FnMut(&mut crate::common::Rng) -> [golden::format::WinVertex; 3],
+) -> Vec<ObjectParams> {
+    let mut objs: Vec<ObjectParams> = Vec::new();
+    let mut tries = 0;
+    while objs.len() < count && tries < 10 * count {
+        tries += 1;
+        let v = draw(rng);
         let n = [0, 1, 2].map(|_| [0, 1, 2].map(|_| rng.below(32768) as i64 - 16384));
         if let Some(p) = golden::proof::setup::object_setup(&v, n, objs.len() as u16, screen) {
             objs.push(p);
