@@ -277,12 +277,17 @@ pub fn queue_filling_triangles() -> (Screen, Vec<RcCmd>) {
     (screen, queue_filling_triangles_on(screen))
 }
 
+/// Index 1, covering any screen of up to 60x40 pixels at depth 900: the long walk the queues fill behind.
+fn screen_size_triangle() -> RcCmd {
+    let v = |x: i32, y: i32| WinVertex { x: x * 16, y: y * 16, z: 900 };
+    RcCmd::triangle(1, [v(-20, -20), v(80, -20), v(-20, 60)], CullMode::None, FrontFace::Ccw).expect("fits")
+}
+
 /// [`queue_filling_triangles_on`] with `n` of [`random_triangles`] behind the screen-size triangle
 /// (indices 2 to n + 1): the queues fill with records of every kind (drawn, culled, zero-area; any
 /// edge steps).
 pub fn queue_filling_random_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
-    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16, y: y * 16, z };
-    let mut tris = vec![RcCmd::triangle(1, [v(-20, -20, 900), v(80, -20, 900), v(-20, 60, 900)], CullMode::None, FrontFace::Ccw).expect("fits")];
+    let mut tris = vec![screen_size_triangle()];
     tris.extend((0..n).map(|i| random_triangle(rng, screen, i as u32 + 2)));
     frame(false, tris)
 }
@@ -292,7 +297,7 @@ pub fn queue_filling_random_triangles(rng: &mut Rng, screen: Screen, n: usize) -
 pub fn queue_filling_triangles_on(screen: Screen) -> Vec<RcCmd> {
     let (xs, ys) = (screen.width as i32 - 6, screen.height as i32 - 4);
     let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16, y: y * 16, z };
-    let mut tris = vec![RcCmd::triangle(1, [v(-20, -20, 900), v(80, -20, 900), v(-20, 60, 900)], CullMode::None, FrontFace::Ccw).expect("fits")];
+    let mut tris = vec![screen_size_triangle()];
     for i in 0..40u32 {
         let (x, y) = (2 + (i as i32 * 3) % xs, 2 + (i as i32 * 5) % ys);
         let t = if i % 3 == 2 {
