@@ -113,7 +113,7 @@ fn rc_target(dir: &Path) -> Result<Target, String> {
 }
 
 /// What [`rc_stream`] holds, after its cycle count.
-const RC_STREAM: &str = "cycles at 32x24: the hand-made cases, 6 random lists of 40 triangles, 8 lists of 80 triangles on one pixel each (fragments back to back; random, near or stepping depths; 16-bit indices) 2 lists of 40 right triangles with power-of-two determinants and 2 queue-filling lists (40 small, then 40 random triangles behind a screen-size one), random gaps and stalls";
+const RC_STREAM: &str = "cycles at 32x24: the hand-made cases, 6 random lists of 40 triangles, 8 lists of 80 triangles on one pixel each (fragments back to back; random, near or stepping depths; 16-bit indices), 2 lists of 40 right triangles with power-of-two determinants and 2 queue-filling lists (40 small, then 40 random triangles behind a screen-size one), random gaps and stalls";
 
 /// The RCs' stream at 32x24: the hand-made cases, then six random lists of 40 triangles, then eight
 /// lists of 80 triangles on one pixel each (four with random depths, four with a staircase) ([`hazard_triangles`](crate::rc::stimulus::hazard_triangles),
@@ -163,7 +163,7 @@ fn rc3_target(dir: &Path) -> Result<Target, String> {
 /// (issue 22's `opaque` bit), and three added for the survivors of round 3, which all sit in OP 0's
 /// parameters and comparisons: 48 small objects (OP 0 reloaded many times), 20 with vertices up to
 /// 40 pixels off a centre (edge distances and depths far from the screen's), 24 at depths 0-3
-/// (lists of near-equal depths, ties broken by the id); and two for the survivors of the draw after
+/// (lists of near-equal depths, ties broken by the id); and three for the survivors of the draw after
 /// the parameter trim: 40 right triangles with axis-aligned legs on pixel corners
 /// ([`axis_aligned_objects`](crate::proof::bench::axis_aligned_objects): distance plus threshold
 /// exactly 0), 20 random objects on a 1024x2 screen (pixel columns above 511), and there 12 right
@@ -186,11 +186,11 @@ fn opp_target(dir: &Path) -> Result<Target, String> {
     for (i, count) in [14, 20, 20, 20, 48, 20, 24, 40, 20, 12].into_iter().enumerate() {
         let screen = if i >= 8 { wide } else { s };
         let mut objs = match i {
-            0..=3 => random_objects(&mut rng, s, count, 8),
-            4..=6 => random_objects_shaped(&mut rng, s, count, 8, shaped[i - 4]),
-            7 => axis_aligned_objects(&mut rng, s, count, 8, (1, 6)),
-            8 => random_objects_shaped(&mut rng, wide, count, 8, ObjectShape { span: 40, big_span: 200, big_percent: 30, depths: 1 << 24 }),
-            _ => axis_aligned_objects(&mut rng, wide, count, 8, (1500, 2000)),
+            0..=3 => random_objects(&mut rng, screen, count, 8),
+            4..=6 => random_objects_shaped(&mut rng, screen, count, 8, shaped[i - 4]),
+            7 => axis_aligned_objects(&mut rng, screen, count, 8, (1, 6)),
+            8 => random_objects_shaped(&mut rng, screen, count, 8, ObjectShape { span: 40, big_span: 200, big_percent: 30, depths: 1 << 24 }),
+            _ => axis_aligned_objects(&mut rng, screen, count, 8, (1500, 2000)),
         };
         if i == 3 {
             for o in objs.iter_mut().step_by(2) {

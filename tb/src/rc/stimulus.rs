@@ -277,7 +277,8 @@ pub fn queue_filling_triangles() -> (Screen, Vec<RcCmd>) {
     (screen, queue_filling_triangles_on(screen))
 }
 
-/// Index 1, covering any screen of up to 60x40 pixels at depth 900: the long walk the queues fill behind.
+/// Index 1 at depth 900, covering every pixel with x + y < 60 (all of 32x24, most of 40x24): the long
+/// walk the queues fill behind.
 fn screen_size_triangle() -> RcCmd {
     let v = |x: i32, y: i32| WinVertex { x: x * 16, y: y * 16, z: 900 };
     RcCmd::triangle(1, [v(-20, -20), v(80, -20), v(-20, 60)], CullMode::None, FrontFace::Ccw).expect("fits")
