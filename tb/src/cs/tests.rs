@@ -413,6 +413,7 @@ fn the_cs_tex_verilog_equals_the_cycle_model_on_whole_textured_frames_under_veri
         return;
     }
     let v = hdl::cs::color_shader_tex::verilog().unwrap();
+    let (mut recs, mut names) = (Vec::new(), Vec::new());
     for (filter, wrap, shading, (w, h)) in [
         (Filter::Nearest, Wrap::Repeat, Shading::Gouraud, (320, 200)),
         (Filter::Bilinear, Wrap::ClampToEdge, Shading::Phong, (320, 200)),
@@ -429,11 +430,16 @@ fn the_cs_tex_verilog_equals_the_cycle_model_on_whole_textured_frames_under_veri
         let drive = CsDrive { stall_percent: 10, start_while_busy_percent: 5, max_idle: 0, seed: 0xF4A3 };
         let run = csb::record_tex_model(&mut mem, &[spec], &config, &tex, drive).unwrap();
         assert!(csb::frame_image(&run.frames[0], w, h).unwrap() == f.frame.rgb, "{filter:?} {w}x{h}: the model's frame differs from golden");
-        let rec = run.recording.unwrap();
-        let dir = scratch_dir(&format!("cs/cs_tex_frame_{filter:?}_{w}x{h}").to_lowercase());
-        let r = super::replay::replay_verilator(&v, "cs_tex", &rec, &dir).unwrap_or_else(|e| panic!("{filter:?} {w}x{h}: {e}"));
-        let _ = std::fs::remove_file(dir.join("in.hex"));
-        let _ = std::fs::remove_file(dir.join("out.hex"));
-        println!("cs_tex Verilog (Verilator), teapot-floor {w}x{h} {filter:?} {wrap:?} {shading:?}: {} cycles replayed in {:.2} s, 0 mismatches, image = golden", r.cycles, r.seconds);
+        names.push(format!("teapot-floor {w}x{h} {filter:?} {wrap:?} {shading:?}"));
+        recs.push(run.recording.unwrap());
+    }
+    // One Verilator build replays the four recordings, each from the initial state.
+    let dir = scratch_dir("cs/cs_tex_frames");
+    let reports = super::replay::replay_verilator_all(&v, "cs_tex", &recs, &dir).unwrap_or_else(|e| panic!("{e}"));
+    let _ = std::fs::remove_file(dir.join("in.hex"));
+    let _ = std::fs::remove_file(dir.join("out.hex"));
+    assert_eq!(reports.len(), recs.len());
+    for (name, r) in names.iter().zip(&reports) {
+        println!("cs_tex Verilog (Verilator), {name}: {} cycles replayed in {:.2} s, 0 mismatches, image = golden", r.cycles, r.seconds);
     }
 }
