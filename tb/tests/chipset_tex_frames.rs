@@ -46,9 +46,19 @@ fn difference(golden: &Frame, rtl: &Frame) -> Option<String> {
     None
 }
 
+/// A frame of the RTL equals golden's, and a textured one did sample the texture.
+fn assert_frame_equals_golden(what: &str, golden: &Frame, rtl: &Frame) {
+    if let Some(d) = difference(golden, rtl) {
+        panic!("{what}: {d}");
+    }
+    if let Some(t) = &rtl.stats.texture {
+        assert!(t.samples > 0 && t.bank_words_read > 0, "{what}: nothing textured: {t:?}");
+    }
+}
+
 /// Frames of teapot-floor (and, between them, untextured ones) back to back on one `chipset_tex`,
 /// each equal to its golden frame.
-fn assert_frames_equal_golden(screen: Screen, frames: &[(Shading, Option<Texturing>)], drive: HostDrive) -> Vec<Frame> {
+fn assert_frames_equal_golden(screen: Screen, frames: &[(Shading, Option<Texturing>)], drive: HostDrive) {
     let mesh = builtin::teapot_floor();
     let jobs: Vec<RenderOptions> = frames.iter().map(|(s, t)| options(&mesh, screen, *s, t.clone())).collect();
     let refs: Vec<(&Mesh, &RenderOptions)> = jobs.iter().map(|o| (&mesh, o)).collect();
@@ -57,15 +67,9 @@ fn assert_frames_equal_golden(screen: Screen, frames: &[(Shading, Option<Texturi
     for (k, (opts, r)) in jobs.iter().zip(&rtl).enumerate() {
         let golden = render(&mesh, opts).unwrap();
         let what = format!("frame {} ({:?}, {:?})", k + 1, opts.shading, opts.texturing.as_ref().map(|t| t.filter));
-        if let Some(d) = difference(&golden, r) {
-            panic!("{what}: {d}");
-        }
-        if let Some(t) = &r.stats.texture {
-            assert!(t.samples > 0 && t.bank_words_read > 0, "{what}: nothing textured: {t:?}");
-        }
+        assert_frame_equals_golden(&what, &golden, r);
         eprintln!("{what}: {:?}", r.stats.texture);
     }
-    rtl
 }
 
 #[test]
@@ -114,16 +118,9 @@ fn textured_frames_under_random_gaps_through_the_rusthdl_and_the_verilated_chips
     let rf = render_frames_with(&refs, &mut r).unwrap_or_else(|e| panic!("RustHDL run failed: {e}"));
     for (k, opts) in jobs.iter().enumerate() {
         let golden = render(&mesh, opts).unwrap();
-        if let Some(d) = difference(&golden, &vf[k]) {
-            panic!("frame {}: Verilator: {d}", k + 1);
-        }
-        if let Some(d) = difference(&golden, &rf[k]) {
-            panic!("frame {}: RustHDL: {d}", k + 1);
-        }
+        assert_frame_equals_golden(&format!("frame {}: Verilator", k + 1), &golden, &vf[k]);
+        assert_frame_equals_golden(&format!("frame {}: RustHDL", k + 1), &golden, &rf[k]);
         assert_eq!(vf[k].stats, rf[k].stats, "frame {}: statistics of the two backends", k + 1);
-        if let Some(t) = &rf[k].stats.texture {
-            assert!(t.samples > 0 && t.bank_words_read > 0, "frame {}: nothing textured: {t:?}", k + 1);
-        }
     }
     assert_eq!(v.frame_phases(), r.frame_phases(), "cycle stamps and port words per frame");
     assert_eq!(v.cycles(), r.cycles(), "cycles of the run");
@@ -155,12 +152,10 @@ fn textured_frames_at_320x200_and_640x480_through_the_verilated_chipset_tex_equa
         let t0 = std::time::Instant::now();
         let f = render_frames_with(&[(&mesh, &opts)], &mut v).unwrap_or_else(|e| panic!("{w}x{h}: Verilator run failed: {e}"));
         let what = format!("{w}x{h} {shading:?} {:?} {:?} {:?}", opts.texturing.as_ref().unwrap().filter, opts.texturing.as_ref().unwrap().wrap, opts.texturing.as_ref().unwrap().coords);
-        if let Some(d) = difference(&golden, &f[0]) {
-            panic!("{what}: {d}");
-        }
-        let t = f[0].stats.texture.as_ref().unwrap();
+        assert_frame_equals_golden(&what, &golden, &f[0]);
         if opts.texturing.as_ref().unwrap().filter == Filter::Bilinear {
             // Bilinear: four texels per sample, at most four bank words.
+            let t = f[0].stats.texture.as_ref().unwrap();
             assert_eq!(t.texels_read, 4 * t.samples, "{what}");
             assert!(t.bank_words_read <= t.texels_read, "{what}");
         }
