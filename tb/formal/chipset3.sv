@@ -16,7 +16,8 @@
 // stalled. Reach points: a bank swap; the RC writing bank 1 (after a swap); colour setup writing TdbS
 // bank 1; the CS reading bank 0 after a swap.
 module chipset3_formal #(
-    parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH = -1,  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
     input wire [189:0] rc_cmd_data,

@@ -51,11 +51,11 @@
     always @(posedge clock) if (swap) swapped <= 1'b1;
     always @(posedge clock) if (past_valid) begin
         cover (swap);
-        if (REACH == 0) assert (!swap);
+        if (REACH == 0 || REACH_SET[0]) reach_0: assert (!swap);
         cover (id_we && draw_bank);
-        if (REACH == 1) assert (!(id_we && draw_bank));
+        if (REACH == 1 || REACH_SET[1]) reach_1: assert (!(id_we && draw_bank));
         cover (t_we && draw_bank);
-        if (REACH == 2) assert (!(t_we && draw_bank));
+        if (REACH == 2 || REACH_SET[2]) reach_2: assert (!(t_we && draw_bank));
         cover (is_re && swapped && !is_rd_addr[20]);
-        if (REACH == 3) assert (!(is_re && swapped && !is_rd_addr[20]));
+        if (REACH == 3 || REACH_SET[3]) reach_3: assert (!(is_re && swapped && !is_rd_addr[20]));
     end

@@ -14,7 +14,8 @@
 // reading TdbT bank 1 (after a second swap, frame 55: beyond the bmc depth of 36, so the bmc checks
 // the read assertion on bank-0 reads only).
 module chipset_tex_formal #(
-    parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH = -1,  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
     input wire [189:0] rc_cmd_data,
@@ -115,10 +116,10 @@ module chipset_tex_formal #(
     always @(posedge clock) if (past_valid) begin
         if ($past(setup_cmd_valid && !setup_cmd_ready)) assume (setup_tex == $past(setup_tex));
         cover (tt_we && draw_bank);
-        if (REACH == 4) assert (!(tt_we && draw_bank));
+        if (REACH == 4 || REACH_SET[4]) reach_4: assert (!(tt_we && draw_bank));
         cover (tt_re);
-        if (REACH == 5) assert (!tt_re);
+        if (REACH == 5 || REACH_SET[5]) reach_5: assert (!tt_re);
         cover (tt_re && tt_rd_addr[16]);
-        if (REACH == 6) assert (!(tt_re && tt_rd_addr[16]));
+        if (REACH == 6 || REACH_SET[6]) reach_6: assert (!(tt_re && tt_rd_addr[16]));
     end
 endmodule

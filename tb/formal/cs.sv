@@ -13,7 +13,8 @@
 `include "stream.vh"
 
 module cs_formal #(
-    parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH = -1,  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
     input wire start,

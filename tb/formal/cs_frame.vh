@@ -50,5 +50,5 @@
     `STALL_REACH(video_tvalid, video_tready, 0)
     always @(posedge clock) if (past_valid) begin
         cover (beat && video_tlast && by + 11'd1 == h && h == 11'd2 && w == 11'd3);
-        if (REACH == 1) assert (!(beat && video_tlast && by + 11'd1 == h && h == 11'd2 && w == 11'd3));
+        if (REACH == 1 || REACH_SET[1]) reach_1: assert (!(beat && video_tlast && by + 11'd1 == h && h == 11'd2 && w == 11'd3));
     end

@@ -18,7 +18,8 @@
 `include "stream.vh"
 
 module cs_tex_formal #(
-    parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH = -1,  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
     input wire start,
@@ -99,6 +100,6 @@ module cs_tex_formal #(
     end
     always @(posedge clock) if (past_valid) begin
         cover (tex_rd == 4'hf);
-        if (REACH == 2) assert (tex_rd != 4'hf);
+        if (REACH == 2 || REACH_SET[2]) reach_2: assert (tex_rd != 4'hf);
     end
 endmodule

@@ -20,7 +20,8 @@
 module opp_formal #(
     // -1: check every assertion; n >= 0: check only that reach point n is unreachable, a run that
     // sby expects to fail (its counterexample is the witness that the point is reachable).
-    parameter integer REACH = -1
+    parameter integer REACH = -1,
+    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
     input wire load,
@@ -107,8 +108,8 @@ module opp_formal #(
     `STALL_REACH(up_valid, up_ready, 1)
     always @(posedge clock) if (past_valid) begin
         cover (saw_two && down_fire && d_last);
-        if (REACH == 2) assert (!(saw_two && down_fire && d_last));
+        if (REACH == 2 || REACH_SET[2]) reach_2: assert (!(saw_two && down_fire && d_last));
         cover (down_fire && d_entry && d_full);
-        if (REACH == 3) assert (!(down_fire && d_entry && d_full));
+        if (REACH == 3 || REACH_SET[3]) reach_3: assert (!(down_fire && d_entry && d_full));
     end
 endmodule

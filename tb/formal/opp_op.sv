@@ -16,7 +16,8 @@
 `include "stream.vh"
 
 module opp_op_formal #(
-    parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH = -1,  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
     input wire load,
@@ -105,10 +106,10 @@ module opp_op_formal #(
     `STALL_REACH(down_valid, down_ready, 3)
     always @(posedge clock) if (past_valid) begin
         cover (own_out && !down_data[20] && up_in_list);
-        if (REACH == 0) assert (!(own_out && !down_data[20]));
+        if (REACH == 0 || REACH_SET[0]) reach_0: assert (!(own_out && !down_data[20]));
         cover (down_fire && down_data[21] && list_len == 2'd2);
-        if (REACH == 1) assert (!(down_fire && down_data[21] && list_len == 2'd2));
+        if (REACH == 1 || REACH_SET[1]) reach_1: assert (!(down_fire && down_data[21] && list_len == 2'd2));
         cover (own_out && down_data[62] && list_len != 2'd0);
-        if (REACH == 2) assert (!(own_out && down_data[62] && list_len != 2'd0));
+        if (REACH == 2 || REACH_SET[2]) reach_2: assert (!(own_out && down_data[62] && list_len != 2'd0));
     end
 endmodule

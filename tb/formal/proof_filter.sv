@@ -14,7 +14,8 @@
 `include "stream.vh"
 
 module proof_filter_formal #(
-    parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH = -1,  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
     input wire cfg_write,
@@ -71,6 +72,6 @@ module proof_filter_formal #(
     `STALL_REACH(up_valid, up_ready, 1)
     always @(posedge clock) if (past_valid) begin
         cover (delivered && tracked_two);
-        if (REACH == 2) assert (!(delivered && tracked_two));
+        if (REACH == 2 || REACH_SET[2]) reach_2: assert (!(delivered && tracked_two));
     end
 endmodule

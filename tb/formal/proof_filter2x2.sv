@@ -20,6 +20,7 @@
 
 module proof_filter2x2_formal #(
     parameter integer REACH = -1,     // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH_SET = 0,  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
     parameter integer ORDER_ONLY = 0  // 1: the assertions on valid, position and count only (no colour
                                       // in their cone, so bmc goes a frame and a half deeper)
 ) (
@@ -88,8 +89,8 @@ module proof_filter2x2_formal #(
     `STALL_REACH(up_valid, up_ready, 1)
     always @(posedge clock) if (past_valid) begin
         cover (down_fire && down_data[19:10] == H - 10'd1);
-        if (REACH == 2) assert (!(down_fire && down_data[19:10] == H - 10'd1));
+        if (REACH == 2 || REACH_SET[2]) reach_2: assert (!(down_fire && down_data[19:10] == H - 10'd1));
         cover (down_fire && pixels_out == 8'd12);
-        if (REACH == 3) assert (!(down_fire && pixels_out == 8'd12));
+        if (REACH == 3 || REACH_SET[3]) reach_3: assert (!(down_fire && pixels_out == 8'd12));
     end
 endmodule

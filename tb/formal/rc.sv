@@ -15,7 +15,8 @@
 // RcCommand: kind 1:0 (0 frame, 1 triangle, 2 end of frame), clear 2, index 18:3, then culling and
 // the vertices. RcResult: eof 0, index 16:1, culled 17, zero_area 18, visible 19.
 module rc_formal #(
-    parameter integer REACH = -1  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH = -1,  // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
     input wire [189:0] cmd_data,

@@ -18,6 +18,7 @@
 // the vertices. RcResult: eof 0, index 16:1, culled 17, zero_area 18, visible 19.
 module rc3_formal #(
     parameter integer REACH = -1,     // -1: every assertion; n >= 0: only "reach point n is unreachable"
+    parameter integer REACH_SET = 0,  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
     parameter integer INDEX_ONLY = 0  // 1: only the assertions on the indices written to the I-buffer
                                       // and TdbV (a smaller cone: bmc reaches the first TdbV write)
 ) (
@@ -63,8 +64,8 @@ module rc3_formal #(
     end
     always @(posedge clock) if (past_valid) begin
         cover (tdbv_we);
-        if (REACH == 3) assert (!tdbv_we);
+        if (REACH == 3 || REACH_SET[3]) reach_3: assert (!tdbv_we);
         cover (i_we);
-        if (REACH == 4) assert (!i_we);
+        if (REACH == 4 || REACH_SET[4]) reach_4: assert (!i_we);
     end
 endmodule

@@ -43,6 +43,7 @@ module rc3_tdbv_test_formal #(
     // -1: check every assertion; n >= 0: check only that reach point n is unreachable, a run that
     // sby expects to fail (its counterexample is the witness that the point is reachable).
     parameter integer REACH = -1,
+    parameter integer REACH_SET = 0,  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
     // The pixel A is at most (PIXEL_MAX, PIXEL_MAX).
     parameter integer PIXEL_MAX = 3
 ) (
@@ -194,18 +195,18 @@ module rc3_tdbv_test_formal #(
     `STALL_REACH(result_valid, result_ready, 7)
     always @(posedge clock) if (past_valid) begin
         cover (fwd1 && !last1);
-        if (REACH == 0) assert (!(fwd1 && !last1));
+        if (REACH == 0 || REACH_SET[0]) reach_0: assert (!(fwd1 && !last1));
         cover (fwd1 && last1);
-        if (REACH == 1) assert (!(fwd1 && last1));
+        if (REACH == 1 || REACH_SET[1]) reach_1: assert (!(fwd1 && last1));
         cover (fwd2);
-        if (REACH == 2) assert (!fwd2);
+        if (REACH == 2 || REACH_SET[2]) reach_2: assert (!fwd2);
         cover (fwd3);
-        if (REACH == 3) assert (!fwd3);
+        if (REACH == 3 || REACH_SET[3]) reach_3: assert (!fwd3);
         cover (fwd4);
-        if (REACH == 4) assert (!fwd4);
+        if (REACH == 4 || REACH_SET[4]) reach_4: assert (!fwd4);
         cover (changed);
-        if (REACH == 5) assert (!changed);
+        if (REACH == 5 || REACH_SET[5]) reach_5: assert (!changed);
         cover (pushed - popped == 8'd6);
-        if (REACH == 6) assert (!(pushed - popped == 8'd6));
+        if (REACH == 6 || REACH_SET[6]) reach_6: assert (!(pushed - popped == 8'd6));
     end
 endmodule

@@ -38,7 +38,7 @@
     `STALL_REACH(result_valid, result_ready, 0)
     always @(posedge clock) if (past_valid) begin
         cover (pop && result_data[19]);
-        if (REACH == 1) assert (!(pop && result_data[19]));
+        if (REACH == 1 || REACH_SET[1]) reach_1: assert (!(pop && result_data[19]));
         cover (pop && result_data[0]);
-        if (REACH == 2) assert (!(pop && result_data[0]));
+        if (REACH == 2 || REACH_SET[2]) reach_2: assert (!(pop && result_data[0]));
     end

@@ -30,7 +30,8 @@
 module rc_z_test_formal #(
     // -1: check every assertion; n >= 0: check only that reach point n is unreachable, a run that
     // sby expects to fail (its counterexample is the witness that the point is reachable).
-    parameter integer REACH = -1
+    parameter integer REACH = -1,
+    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
     input wire [86:0] tok,
@@ -127,12 +128,12 @@ module rc_z_test_formal #(
     `STALL_REACH(result_valid, result_ready, 4)
     always @(posedge clock) if (past_valid) begin
         cover (forwarded && !prev_last);
-        if (REACH == 0) assert (!(forwarded && !prev_last));
+        if (REACH == 0 || REACH_SET[0]) reach_0: assert (!(forwarded && !prev_last));
         cover (forwarded && prev_last);
-        if (REACH == 1) assert (!(forwarded && prev_last));
+        if (REACH == 1 || REACH_SET[1]) reach_1: assert (!(forwarded && prev_last));
         cover (forwarded && (z_we != (f1_z < z_rd_data)));
-        if (REACH == 2) assert (!(forwarded && (z_we != (f1_z < z_rd_data))));
+        if (REACH == 2 || REACH_SET[2]) reach_2: assert (!(forwarded && (z_we != (f1_z < z_rd_data))));
         cover (pushed - popped == 8'd3);
-        if (REACH == 3) assert (!(pushed - popped == 8'd3));
+        if (REACH == 3 || REACH_SET[3]) reach_3: assert (!(pushed - popped == 8'd3));
     end
 endmodule
