@@ -148,6 +148,115 @@ pub fn cs_unit_normal_recording(seed: u64) -> Result<Recording, String> {
     run.recording.ok_or_else(|| "CS bench: no recording".to_string())
 }
 
+/// The mutation cover's third part of the CS stimulus (`crate::mutation`, after
+/// [`cs_unit_normal_recording`]): `sets` recordings, each from reset with its own random lights and
+/// materials: a Phong frame of 48x24 over unit-scale normals, then a 3x1000 frame in Phong and one in
+/// Gouraud, so that the plane products see pixel rows up to 999 (the other frames stop at row 31).
+/// One light set per recording left light 1's units and the colour products seeing few values: 44 of
+/// the 200 mutants drawn on 2026-11-29 survived the first two recordings, most of them there.
+pub fn cs_light_set_recordings(seed: u64, sets: usize) -> Result<Vec<Recording>, String> {
+    let mut rng = Rng::new(seed);
+    (0..sets)
+        .map(|k| {
+            let mut mem = random_memories(&mut rng, 3, 1000, 150);
+            for rec in mem.tdbs.iter_mut().skip(1) {
+                rec.planes = [0, 1, 2].map(|_| Plane {
+                    a: (rng.below(2 * 600 + 1) as i64 - 600) << 16,
+                    b: (rng.below(2 * 600 + 1) as i64 - 600) << 16,
+                    c: (rng.below(2 * 20000 + 1) as i64 - 20000) << 16,
+                });
+            }
+            let lights = random_lights(&mut rng);
+            let config = phong_config(&lights)?;
+            let bg = [0, 1, 2].map(|_| rng.below(256) as u8);
+            let frames = [
+                FrameSpec { width: 48, height: 24, background: bg, clear_behind: false, phong: true },
+                FrameSpec { width: 3, height: 1000, background: bg, clear_behind: false, phong: true },
+                FrameSpec { width: 3, height: 1000, background: bg, clear_behind: false, phong: false },
+            ];
+            let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed: seed + k as u64 };
+            let run = csb::run_rtl_vs_model(&format!("cs_light_set_{k}"), &mut mem, &frames, &config, drive, true)?;
+            run.recording.ok_or_else(|| "CS bench: no recording".to_string())
+        })
+        .collect()
+}
+
+/// The mutation cover's last part of the CS stimulus: Gouraud frames (48x24, 3x1000, 1000x3) over
+/// colour planes that stay inside 0..=255 across them, with every fraction bit random, so that the
+/// plane products' and the constants' low bits reach the rounding. The other recordings' Gouraud
+/// planes are random over the whole range and saturate within a few pixels, and in Phong a plane's
+/// fraction bits rarely move the 8-bit colour.
+pub fn cs_gouraud_fraction_recording(seed: u64) -> Result<Recording, String> {
+    let mut rng = Rng::new(seed);
+    let mut mem = random_memories(&mut rng, 3, 1000, 150);
+    // Per pixel at most 1/4 (a, b) from a start in 0..=255 (c): a frame edge of 1000 pixels can still
+    // leave the range, which the clamp then also sees.
+    let step = |rng: &mut Rng| rng.below(2 * (1 << 14) + 1) as i64 - (1 << 14);
+    for rec in mem.tdbs.iter_mut().skip(1) {
+        rec.planes = [0, 1, 2].map(|_| Plane { a: step(&mut rng), b: step(&mut rng), c: rng.below(256 << 16) as i64 });
+    }
+    let bg = [9, 99, 199];
+    let frames = [(48, 24), (3, 1000), (1000, 3)].map(|(width, height)| FrameSpec { width, height, background: bg, clear_behind: false, phong: false });
+    let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed };
+    let run = csb::run_rtl_vs_model("cs_gouraud_fractions", &mut mem, &frames, &[], drive, true)?;
+    run.recording.ok_or_else(|| "CS bench: no recording".to_string())
+}
+
+/// Gouraud frames where every pixel has its own record whose three colour planes sit exactly at a
+/// rounding edge there: `c + a*X + b*Y + 2^15` ends in 16 ones (one more rounds up) or 16 zeros
+/// (one less rounds down), with random gradients. A fault worth one unit of 2^-16 anywhere in a plane
+/// product or sum then changes the colour; over random planes it does so at one pixel in 2^16.
+pub fn cs_rounding_edge_recordings(seed: u64) -> Result<Vec<Recording>, String> {
+    let mut rng = Rng::new(seed);
+    [(48u32, 24u32), (2, 1000), (1000, 2)]
+        .iter()
+        .enumerate()
+        .map(|(k, &(w, h))| {
+            let mut tdbs = vec![TdbsEntry { planes: [Plane::constant(0); 3], material: 0 }];
+            for p in 0..w * h {
+                let (x, y) = (p % w, p / w);
+                let planes = [0, 1, 2].map(|_| {
+                    let a = rng.below(2 * (1 << 14) + 1) as i64 - (1 << 14);
+                    let b = rng.below(2 * (1 << 14) + 1) as i64 - (1 << 14);
+                    let up = rng.chance(50);
+                    let sum = ((20 + rng.below(216) as i64) << 16) | if up { 0xffff } else { 0 };
+                    Plane { a, b, c: sum - (1 << 15) - a * x as i64 - b * y as i64 }
+                });
+                tdbs.push(TdbsEntry { planes, material: rng.below(65536) as u16 });
+            }
+            let ibuf: Vec<u16> = (1..=w * h).map(|p| p as u16).collect();
+            let zbuf = (0..w * h).map(|_| rng.below(1 << 24) as u32).collect();
+            let mut mem = CsMemories::new(ibuf, zbuf, tdbs);
+            let spec = FrameSpec { width: w, height: h, background: [0, 0, 0], clear_behind: false, phong: false };
+            let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed: seed + k as u64 };
+            let run = csb::run_rtl_vs_model(&format!("cs_rounding_edges_{k}"), &mut mem, &[spec], &[], drive, true)?;
+            run.recording.ok_or_else(|| "CS bench: no recording".to_string())
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod rounding_edge_tests {
+    use super::*;
+
+    /// The edge construction itself, on golden's plane evaluation: one unit of 2^-16 up (or down)
+    /// moves the rounded value.
+    #[test]
+    fn a_rounding_edge_plane_changes_value_with_one_unit_more_or_less() {
+        let mut rng = Rng::new(5);
+        for _ in 0..1000 {
+            let (x, y) = (rng.below(1000) as i64, rng.below(1000) as i64);
+            let (a, b) = (rng.below(1 << 15) as i64 - (1 << 14), rng.below(1 << 15) as i64 - (1 << 14));
+            for (low, nudge) in [(0xffff, 1), (0, -1)] {
+                let p = Plane { a, b, c: ((100 << 16) | low) - (1 << 15) - a * x - b * y };
+                let q = Plane { c: p.c + nudge, ..p };
+                assert_eq!(p.eval(x as u32, y as u32), 100);
+                assert_eq!(q.eval(x as u32, y as u32), 100 + nudge);
+            }
+        }
+    }
+}
+
 /// The recording that colour setup's Verilog replays: `n` random commands (the replay test sends 60)
 /// with 30% input gaps, run on the RTL against the cycle model (which fails first if they differ).
 pub fn colour_setup_replay_recording(seed: u64, n: usize) -> Result<Recording, String> {
