@@ -122,6 +122,16 @@ pub fn ignored_writes(rng: &mut Rng) -> Vec<CsConfigWrite> {
     w
 }
 
+/// Normal planes of unit scale (Q14 at the plane's centre): x, y and z each start within +-20000 and
+/// step at most `step` per pixel, with no fraction bits.
+fn unit_normal_planes(rng: &mut Rng, step: u64) -> [Plane; 3] {
+    [0, 1, 2].map(|_| Plane {
+        a: (rng.below(2 * step + 1) as i64 - step as i64) << 16,
+        b: (rng.below(2 * step + 1) as i64 - step as i64) << 16,
+        c: (rng.below(2 * 20000 + 1) as i64 - 20000) << 16,
+    })
+}
+
 /// The mutation cover's second recording of the CS (`crate::mutation`, after [`cs_replay_recording`]):
 /// three Phong frames of 64x32 over records whose planes give normals of unit scale (Q14, as colour
 /// setup makes them from unit vertex normals) that turn across the frame, so that the normaliser and
@@ -132,11 +142,7 @@ pub fn cs_unit_normal_recording(seed: u64) -> Result<Recording, String> {
     let mut rng = Rng::new(seed);
     let mut mem = random_memories(&mut rng, 64, 32, 200);
     for rec in mem.tdbs.iter_mut().skip(100) {
-        rec.planes = [0, 1, 2].map(|_| Plane {
-            a: (rng.below(2 * 400 + 1) as i64 - 400) << 16,
-            b: (rng.below(2 * 400 + 1) as i64 - 400) << 16,
-            c: (rng.below(2 * 20000 + 1) as i64 - 20000) << 16,
-        });
+        rec.planes = unit_normal_planes(&mut rng, 400);
         rec.material = rng.below(65536) as u16;
     }
     let lights = random_lights(&mut rng);
@@ -160,11 +166,7 @@ pub fn cs_light_set_recordings(seed: u64, sets: usize) -> Result<Vec<Recording>,
         .map(|k| {
             let mut mem = random_memories(&mut rng, 3, 1000, 150);
             for rec in mem.tdbs.iter_mut().skip(1) {
-                rec.planes = [0, 1, 2].map(|_| Plane {
-                    a: (rng.below(2 * 600 + 1) as i64 - 600) << 16,
-                    b: (rng.below(2 * 600 + 1) as i64 - 600) << 16,
-                    c: (rng.below(2 * 20000 + 1) as i64 - 20000) << 16,
-                });
+                rec.planes = unit_normal_planes(&mut rng, 600);
             }
             let lights = random_lights(&mut rng);
             let config = phong_config(&lights)?;
