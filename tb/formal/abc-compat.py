@@ -27,6 +27,12 @@ import sys
 ABC = "/usr/bin/yosys-abc"
 
 
+def latch_count(aig):
+    """The latch count of an AIGER file (its header's fourth field)."""
+    with open(aig, "rb") as f:
+        return int(f.readline().split()[3])
+
+
 def witness(block, latches, output):
     """One counterexample of `write_cex -a` as the AIGER witness yosys-witness reads."""
     lines = [line.split("#")[0].strip() for line in block]
@@ -47,8 +53,7 @@ every_output = re.search(r"bmc3 [^;]*-a", command)
 if found and every_output:
     aig, cex = found.group(1), found.group(2)
     failed = {int(o): int(f) for o, f in re.findall(r"^Output (\d+) was asserted in frame +(\d+)", run.stdout, re.M)}
-    with open(aig, "rb") as f:
-        latches = int(f.readline().split()[3])
+    latches = latch_count(aig)
     with open(os.path.splitext(aig)[0] + ".ywa") as f:
         labels = [".".join(p.lstrip("\\") for p in path) for path in json.load(f)["asserts"]]
     blocks, current = {}, None
@@ -89,8 +94,6 @@ if found and failed:
     except FileNotFoundError:
         lines = []
     if lines and [line for line in lines if line.split("#")[0].strip()]:
-        with open(aig, "rb") as f:
-            latches = int(f.readline().split()[3])
         with open(cex, "w") as f:
-            f.write(witness(lines, latches, int(failed.group(1))))
+            f.write(witness(lines, latch_count(aig), int(failed.group(1))))
 sys.exit(run.returncode)
