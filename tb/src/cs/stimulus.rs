@@ -183,6 +183,11 @@ pub fn cs_light_set_recordings(seed: u64, sets: usize) -> Result<Vec<Recording>,
         .collect()
 }
 
+/// A colour plane's gradient: at most 1/4 per pixel either way, every fraction bit random.
+fn quarter_step(rng: &mut Rng) -> i64 {
+    rng.below(2 * (1 << 14) + 1) as i64 - (1 << 14)
+}
+
 /// The mutation cover's last part of the CS stimulus: Gouraud frames (48x24, 3x1000, 1000x3) over
 /// colour planes that stay inside 0..=255 across them, with every fraction bit random, so that the
 /// plane products' and the constants' low bits reach the rounding. The other recordings' Gouraud
@@ -191,11 +196,10 @@ pub fn cs_light_set_recordings(seed: u64, sets: usize) -> Result<Vec<Recording>,
 pub fn cs_gouraud_fraction_recording(seed: u64) -> Result<Recording, String> {
     let mut rng = Rng::new(seed);
     let mut mem = random_memories(&mut rng, 3, 1000, 150);
-    // Per pixel at most 1/4 (a, b) from a start in 0..=255 (c): a frame edge of 1000 pixels can still
-    // leave the range, which the clamp then also sees.
-    let step = |rng: &mut Rng| rng.below(2 * (1 << 14) + 1) as i64 - (1 << 14);
+    // A start in 0..=255 (c): a frame edge of 1000 pixels can still leave the range, which the clamp
+    // then also sees.
     for rec in mem.tdbs.iter_mut().skip(1) {
-        rec.planes = [0, 1, 2].map(|_| Plane { a: step(&mut rng), b: step(&mut rng), c: rng.below(256 << 16) as i64 });
+        rec.planes = [0, 1, 2].map(|_| Plane { a: quarter_step(&mut rng), b: quarter_step(&mut rng), c: rng.below(256 << 16) as i64 });
     }
     let bg = [9, 99, 199];
     let frames = [(48, 24), (3, 1000), (1000, 3)].map(|(width, height)| FrameSpec { width, height, background: bg, clear_behind: false, phong: false });
@@ -218,8 +222,7 @@ pub fn cs_rounding_edge_recordings(seed: u64) -> Result<Vec<Recording>, String> 
             for p in 0..w * h {
                 let (x, y) = (p % w, p / w);
                 let planes = [0, 1, 2].map(|_| {
-                    let a = rng.below(2 * (1 << 14) + 1) as i64 - (1 << 14);
-                    let b = rng.below(2 * (1 << 14) + 1) as i64 - (1 << 14);
+                    let (a, b) = (quarter_step(&mut rng), quarter_step(&mut rng));
                     let up = rng.chance(50);
                     let sum = ((20 + rng.below(216) as i64) << 16) | if up { 0xffff } else { 0 };
                     Plane { a, b, c: sum - (1 << 15) - a * x as i64 - b * y as i64 }
