@@ -175,9 +175,12 @@ fn rc3_target(dir: &Path) -> Result<Target, String> {
 /// the parameter trim: 40 right triangles with axis-aligned legs on pixel corners
 /// ([`axis_aligned_objects`](crate::proof::bench::axis_aligned_objects): distance plus threshold
 /// exactly 0), 20 random objects on a 1024x2 screen (pixel columns above 511), and there 12 right
-/// triangles with legs of 1500-2000 pixels (edge distances above 1024 pixels).
+/// triangles with legs of 1500-2000 pixels (edge distances above 1024 pixels); and one for the two
+/// survivors after that, thresholds moved by 1 or 16 LSB: three frames of 48 small objects (ids up
+/// to 47) with every edge's distance exactly on a threshold at one pixel
+/// ([`threshold_objects`](crate::proof::bench::threshold_objects): on `t_full`, on `-t_none`, one above).
 fn opp_target(dir: &Path) -> Result<Target, String> {
-    use crate::proof::bench::{axis_aligned_objects, opp_ports, random_objects, random_objects_shaped, run_frame, ObjectShape};
+    use crate::proof::bench::{axis_aligned_objects, opp_ports, random_objects, random_objects_shaped, run_frame, threshold_objects, ObjectShape, Threshold};
     use golden::proof::cycle_opp::Gaps;
     let s = Screen::new(24, 16)?;
     let mut rng = Rng::new(0x7e91a7);
@@ -191,14 +194,17 @@ fn opp_target(dir: &Path) -> Result<Target, String> {
         ObjectShape { span: 12, big_span: 24, big_percent: 30, depths: 4 },
     ];
     let wide = Screen::new(1024, 2)?;
-    for (i, count) in [14, 20, 20, 20, 48, 20, 24, 40, 20, 12].into_iter().enumerate() {
-        let screen = if i >= 8 { wide } else { s };
+    for (i, count) in [14, 20, 20, 20, 48, 20, 24, 40, 20, 12, 48, 48, 48].into_iter().enumerate() {
+        let screen = if i == 8 || i == 9 { wide } else { s };
         let mut objs = match i {
             0..=3 => random_objects(&mut rng, screen, count, 8),
             4..=6 => random_objects_shaped(&mut rng, screen, count, 8, shaped[i - 4]),
             7 => axis_aligned_objects(&mut rng, screen, count, 8, (1, 6)),
             8 => random_objects_shaped(&mut rng, screen, count, 8, ObjectShape { span: 40, big_span: 200, big_percent: 30, depths: 1 << 24 }),
-            _ => axis_aligned_objects(&mut rng, screen, count, 8, (1500, 2000)),
+            9 => axis_aligned_objects(&mut rng, screen, count, 8, (1500, 2000)),
+            10 => threshold_objects(&mut rng, screen, count, 8, Threshold::Full),
+            11 => threshold_objects(&mut rng, screen, count, 8, Threshold::None(0)),
+            _ => threshold_objects(&mut rng, screen, count, 8, Threshold::None(1)),
         };
         if i == 3 {
             for o in objs.iter_mut().step_by(2) {
@@ -211,7 +217,7 @@ fn opp_target(dir: &Path) -> Result<Target, String> {
         recs.push(rec.ok_or("the OPP bench wrote no vectors")?);
     }
     let stimulus = format!(
-        "{} cycles: ten random frames, 25% gaps: at 24x16 14, 20, 20 and 20 objects (the third with 60% output stalls, the fourth with every other object transparent), 48 small ones, 20 far-reaching ones, 24 at depths 0-3, 40 axis-aligned right triangles on pixel corners; at 1024x2 20 objects, 12 right triangles with legs of 1500-2000 pixels",
+        "{} cycles: thirteen random frames, 25% gaps: at 24x16 14, 20, 20 and 20 objects (the third with 60% output stalls, the fourth with every other object transparent), 48 small ones, 20 far-reaching ones, 24 at depths 0-3, 40 axis-aligned right triangles on pixel corners; at 1024x2 20 objects, 12 right triangles with legs of 1500-2000 pixels; at 24x16 three frames of 48 small objects with every edge's distance exactly on a threshold at one pixel (t_full, -t_none, -t_none + 1)",
         recs.iter().map(|r| r.1).sum::<u64>()
     );
     let replay: Replay = Box::new(move |v, d| {

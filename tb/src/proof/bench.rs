@@ -247,6 +247,51 @@ pub fn axis_aligned_objects(rng: &mut crate::common::Rng, screen: Screen, count:
     })
 }
 
+/// Which threshold [`threshold_objects`] puts its edges on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Threshold {
+    /// `d = t_full`: the one value where `d >= t_full` tells full from partial.
+    Full,
+    /// `d = -t_none + offset`: with offset 0 or 1, a value where `d <= -t_none` and a threshold 16
+    /// LSB higher (offset 0) or lower (offset 1) disagree.
+    None(i64),
+}
+
+/// `count` small random objects (vertices within 4 pixels of a centre, a fifth within 10) with every
+/// edge moved (its `d0` only, by at most half a pixel step) so that at one pixel of the box its
+/// distance sits exactly on `threshold` while the other two edges there are past theirs (for `Full`:
+/// at least their `t_full`; else above their `-t_none`). A threshold moved by one LSB (`Full`) or 16
+/// LSB (`None`) then changes that pixel's entry.
+pub fn threshold_objects(rng: &mut crate::common::Rng, screen: Screen, count: usize, max_ops: usize, threshold: Threshold) -> Vec<ObjectParams> {
+    use golden::proof::format::{wrap, EDGE_BITS};
+    let mut objs = random_objects_shaped(rng, screen, count, max_ops, ObjectShape { span: 8, big_span: 20, big_percent: 20, depths: 1 << 24 });
+    for o in objs.iter_mut() {
+        for k in 0..3 {
+            let e = o.edges[k];
+            let target = match threshold {
+                Threshold::Full => e.t_full as i64,
+                Threshold::None(offset) => -(e.t_none as i64) + offset,
+            };
+            // The pixel where edge k is nearest its target and the other edges are past theirs.
+            let best = (o.y0..=o.y1)
+                .flat_map(|y| (o.x0..=o.x1).map(move |x| (x, y)))
+                .filter_map(|(x, y)| {
+                    let (d, _, _) = o.accumulators_at(x, y);
+                    let others_past = (0..3).filter(|&m| m != k).all(|m| match threshold {
+                        Threshold::Full => d[m] >= o.edges[m].t_full as i64,
+                        Threshold::None(_) => d[m] > -(o.edges[m].t_none as i64),
+                    });
+                    others_past.then_some(d[k] - target)
+                })
+                .min_by_key(|off| off.abs());
+            if let Some(off) = best {
+                o.edges[k].d0 = wrap(e.d0 as i64 - off, EDGE_BITS) as i32;
+            }
+        }
+    }
+    objs
+}
+
 /// What [`random_objects_shaped`] draws: vertices within `span` pixels of a centre (`big_span` for
 /// `big_percent` % of the objects), depths in `[0, depths)`.
 #[derive(Clone, Copy, Debug)]
@@ -297,4 +342,43 @@ fn set_up_objects(
         }
     }
     objs
+}
+
+#[cfg(test)]
+mod threshold_tests {
+    use super::*;
+    use golden::proof::format::{classify, Coverage};
+
+    /// Whether moving edge k's threshold (`t_full` by `full_by`, `t_none` by `none_by`) changes the
+    /// coverage of some pixel of the object's box.
+    fn moved_threshold_shows(o: &ObjectParams, k: usize, full_by: i64, none_by: i64) -> bool {
+        let mut m = *o;
+        m.edges[k].t_full = (m.edges[k].t_full as i64 + full_by) as u32;
+        m.edges[k].t_none = (m.edges[k].t_none as i64 + none_by) as u32;
+        (o.y0..=o.y1).any(|y| {
+            (o.x0..=o.x1).any(|x| {
+                let (d, _, _) = o.accumulators_at(x, y);
+                classify(o, d) != classify(&m, d)
+            })
+        })
+    }
+
+    #[test]
+    fn threshold_objects_change_coverage_when_a_threshold_moves_by_one_step() {
+        let screen = Screen::new(24, 16).unwrap();
+        let edges_showing = |threshold: Threshold, full_by: i64, none_by: i64| -> (usize, usize, usize) {
+            let objs = threshold_objects(&mut crate::common::Rng::new(0x7e51d), screen, 48, 8, threshold);
+            let plain = random_objects_shaped(&mut crate::common::Rng::new(0x7e51d), screen, 48, 8, ObjectShape { span: 8, big_span: 20, big_percent: 20, depths: 1 << 24 });
+            let count = |objs: &[ObjectParams]| objs.iter().map(|o| (0..3).filter(|&k| moved_threshold_shows(o, k, full_by, none_by)).count()).sum::<usize>();
+            (count(&objs), count(&plain), 3 * objs.len())
+        };
+        for (threshold, full_by, none_by) in [(Threshold::Full, 1, 0), (Threshold::None(0), 0, 16), (Threshold::None(1), 0, -16)] {
+            let (shown, plain, edges) = edges_showing(threshold, full_by, none_by);
+            eprintln!("{threshold:?}: t_full {full_by:+}, t_none {none_by:+} changes some pixel for {shown} of {edges} edges (random objects: {plain})");
+            // Most edges meet their target (a later edge's move can undo an earlier one's pixel);
+            // the same random objects without the moves almost never sit this exactly on a threshold.
+            assert!(edges >= 120 && shown * 3 >= edges * 2, "{threshold:?}: {shown} of {edges}");
+            assert!(plain * 10 < shown, "{threshold:?}: random objects {plain}, threshold objects {shown}");
+        }
+    }
 }
