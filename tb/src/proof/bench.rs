@@ -347,7 +347,7 @@ fn set_up_objects(
 #[cfg(test)]
 mod threshold_tests {
     use super::*;
-    use golden::proof::format::{classify, Coverage};
+    use golden::proof::format::classify;
 
     /// Whether moving edge k's threshold (`t_full` by `full_by`, `t_none` by `none_by`) changes the
     /// coverage of some pixel of the object's box.

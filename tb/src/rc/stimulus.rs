@@ -277,20 +277,64 @@ pub fn queue_filling_triangles() -> (Screen, Vec<RcCmd>) {
     (screen, queue_filling_triangles_on(screen))
 }
 
-/// Index 1 at depth 900, covering every pixel with x + y < 60 (all of 32x24, most of 40x24): the long
+/// Index 1 at depth `z`, covering every pixel with x + y < 60 (all of 32x24, most of 40x24): the long
 /// walk the queues fill behind.
-fn screen_size_triangle() -> RcCmd {
-    let v = |x: i32, y: i32| WinVertex { x: x * 16, y: y * 16, z: 900 };
+fn screen_size_triangle(z: u32) -> RcCmd {
+    let v = |x: i32, y: i32| WinVertex { x: x * 16, y: y * 16, z };
     RcCmd::triangle(1, [v(-20, -20), v(80, -20), v(-20, 60)], CullMode::None, FrontFace::Ccw).expect("fits")
 }
 
 /// [`queue_filling_triangles_on`] with `n` of [`random_triangles`] behind the screen-size triangle
 /// (indices 2 to n + 1): the queues fill with records of every kind (drawn, culled, zero-area; any
-/// edge steps).
+/// edge steps). The screen-size triangle lies at depth 900, in front of most of them.
 pub fn queue_filling_random_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
-    let mut tris = vec![screen_size_triangle()];
+    let mut tris = vec![screen_size_triangle(900)];
     tris.extend((0..n).map(|i| random_triangle(rng, screen, i as u32 + 2)));
     frame(false, tris)
+}
+
+/// [`queue_filling_random_triangles`] in a cleared frame with the screen-size triangle at the far
+/// end (`DEPTH_MAX - 8`): the queued records' triangles lie in front of it, so their fragments pass
+/// and a record changed while it waits in a queue shows in the depths and indices written.
+pub fn queue_filling_random_triangles_in_front(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
+    let mut tris = vec![screen_size_triangle(DEPTH_MAX - 8)];
+    tris.extend((0..n).map(|i| random_triangle(rng, screen, i as u32 + 2)));
+    frame(true, tris)
+}
+
+/// Whether raw depth `raw` (16 fraction bits) lies within `band` of a rounding edge: an error of up
+/// to `band` one way or the other changes its rounded value.
+fn near_rounding_edge(raw: i64, band: i64) -> bool {
+    // It rounds up from 2^15: band lower ones reach 2^15 - band, and band more reach 2^15 + band - 1.
+    let f = raw.rem_euclid(1 << 16) - (1 << 15);
+    -band <= f && f < band
+}
+
+/// `n` small drawn triangles (no culling, random depths, indices 1 to n), each with a covered pixel
+/// whose raw depth lies within `band` units of 2^-16 of a rounding edge (`raw mod 2^16` near 2^15), so
+/// that an error of `band` or less in the depth plane or its stepping changes that fragment's depth:
+/// random triangles are drawn (at most `5000 n`) and those kept.
+pub fn depth_rounding_edge_triangles(rng: &mut Rng, screen: Screen, n: usize, band: i64) -> Vec<RcCmd> {
+    let mut tris = Vec::new();
+    for _ in 0..5000 * n {
+        if tris.len() == n {
+            break;
+        }
+        let (cx, cy) = (rng.below(screen.width as u64 * 16) as i32, rng.below(screen.height as u64 * 16) as i32);
+        let r = 16 + rng.below(9 * 16) as i32;
+        let v = [0, 1, 2].map(|_| WinVertex {
+            x: cx + rng.below(2 * r as u64 + 1) as i32 - r,
+            y: cy + rng.below(2 * r as u64 + 1) as i32 - r,
+            z: rng.below(DEPTH_MAX as u64 + 1) as u32,
+        });
+        let Ok(st) = golden::raster::setup(&v, CullMode::None, FrontFace::Ccw, screen) else { continue };
+        let b = st.bbox;
+        let near = (b.y0..=b.y1).flat_map(|y| (b.x0..=b.x1).map(move |x| (x, y))).any(|(x, y)| st.covers(x, y) && near_rounding_edge(st.depth.raw(x as u32, y as u32), band));
+        if near {
+            tris.push(RcCmd::triangle(tris.len() as u32 + 1, v, CullMode::None, FrontFace::Ccw).expect("on-screen vertices fit the formats"));
+        }
+    }
+    tris
 }
 
 /// [`queue_filling_triangles`] on any screen of at least 8x6 pixels: the small triangles spread over
@@ -298,7 +342,7 @@ pub fn queue_filling_random_triangles(rng: &mut Rng, screen: Screen, n: usize) -
 pub fn queue_filling_triangles_on(screen: Screen) -> Vec<RcCmd> {
     let (xs, ys) = (screen.width as i32 - 6, screen.height as i32 - 4);
     let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16, y: y * 16, z };
-    let mut tris = vec![screen_size_triangle()];
+    let mut tris = vec![screen_size_triangle(900)];
     for i in 0..40u32 {
         let (x, y) = (2 + (i as i32 * 3) % xs, 2 + (i as i32 * 5) % ys);
         let t = if i % 3 == 2 {
@@ -355,4 +399,104 @@ pub fn reference_of(ty: golden::raster::RcType, screen: Screen, cmds: &[RcCmd]) 
 /// Cleared buffers, as the reference starts.
 pub fn cleared(screen: Screen) -> (Vec<u32>, Vec<u32>) {
     (vec![DEPTH_MAX; screen.pixels()], vec![INDEX_BACKGROUND; screen.pixels()])
+}
+
+/// Whether the walk of `st` makes a long-skip test (no candidate of the window covered, an edge
+/// negative at x) where an edge's value at x + 15 is negative by at most `band`: a value there off by
+/// `band` or less changes whether the walk skips 16 candidates or 4.
+fn has_marginal_long_skip(st: &golden::raster::Setup, band: i64) -> bool {
+    use golden::cycle::rc::{walk_step, WALK_LONG_SKIP};
+    let (mut x, mut y) = (st.bbox.x0, st.bbox.y0);
+    loop {
+        let step = walk_step(st, x, y);
+        let far = x as i64 + WALK_LONG_SKIP as i64 - 1;
+        if step.frag.is_none() && st.edges.iter().any(|e| e.at(x as i64, y as i64) < 0) && st.edges.iter().any(|e| (-band..0).contains(&e.at(far, y as i64))) {
+            return true;
+        }
+        if step.end {
+            return false;
+        }
+        (x, y) = (step.next_x, step.next_y);
+    }
+}
+
+/// `n` drawn triangles (no culling, random depths, indices 1 to n) with wide boxes whose walk makes a
+/// long-skip test with an edge's value at x + 15 negative by at most `band` (its edge crosses the
+/// row just past the 16 candidates): an error of up to `band` in the edge value there, or in the step
+/// multiple that forms it, changes the walk's timing. Random triangles over the whole screen are drawn
+/// (at most `5000 n`) and those kept.
+pub fn long_skip_edge_triangles(rng: &mut Rng, screen: Screen, n: usize, band: i64) -> Vec<RcCmd> {
+    let mut tris = Vec::new();
+    for _ in 0..5000 * n {
+        if tris.len() == n {
+            break;
+        }
+        let v = [0, 1, 2].map(|_| WinVertex {
+            x: rng.below(screen.width as u64 * 16) as i32,
+            y: rng.below(screen.height as u64 * 16) as i32,
+            z: rng.below(DEPTH_MAX as u64 + 1) as u32,
+        });
+        let Ok(st) = golden::raster::setup(&v, CullMode::None, FrontFace::Ccw, screen) else { continue };
+        if st.bbox.x1 - st.bbox.x0 >= 16 && has_marginal_long_skip(&st, band) {
+            tris.push(RcCmd::triangle(tris.len() as u32 + 1, v, CullMode::None, FrontFace::Ccw).expect("on-screen vertices fit the formats"));
+        }
+    }
+    tris
+}
+
+#[cfg(test)]
+mod construction_tests {
+    use super::*;
+
+    #[test]
+    fn a_long_skip_edge_triangle_makes_a_long_skip_test_within_its_band_and_random_ones_rarely_do() {
+        let screen = hand_made_screen();
+        let tris = long_skip_edge_triangles(&mut Rng::new(0x5c1b), screen, 40, 128);
+        assert_eq!(tris.len(), 40);
+        let marginal = |t: &RcCmd| golden::raster::setup(&t.v, t.cull, t.front, screen).is_ok_and(|st| has_marginal_long_skip(&st, 128));
+        assert!(tris.iter().all(marginal));
+        let plain = random_triangles(&mut Rng::new(0x5c1b), screen, 40).iter().filter(|t| marginal(t)).count();
+        assert!(plain < 10, "{plain} of 40 random triangles");
+    }
+
+    #[test]
+    fn random_triangles_queued_behind_a_far_screen_size_one_are_visible_four_times_as_often() {
+        let screen = hand_made_screen();
+        // Visible random triangles (not the screen-size one, index 1) behind each kind of screen-size triangle.
+        let visible = |cmds: &[RcCmd]| reference(screen, cmds).results.iter().filter(|r| !r.eof && r.index != 1 && r.visible).count();
+        let in_front = visible(&queue_filling_random_triangles_in_front(&mut Rng::new(0xfa7), screen, 40));
+        let behind = visible(&queue_filling_random_triangles(&mut Rng::new(0xfa7), screen, 40));
+        assert!(in_front >= 10 && behind * 4 <= in_front, "visible: {in_front} in front of the far one, {behind} with it at depth 900");
+    }
+
+    #[test]
+    fn a_depth_rounding_edge_triangle_changes_a_fragments_depth_with_an_error_within_its_band() {
+        let screen = hand_made_screen();
+        for band in [2, 32] {
+            let tris = depth_rounding_edge_triangles(&mut Rng::new(0xde9_7e), screen, 40, band);
+            assert_eq!(tris.len(), 40, "band {band}");
+            for t in &tris {
+                let st = golden::raster::setup(&t.v, t.cull, t.front, screen).expect("drawn");
+                let b = st.bbox;
+                // The depth plane moved by band units of 2^-16 up or down changes some covered pixel's depth.
+                let changed = [band, -band].iter().any(|&d| {
+                    let mut moved = st.depth;
+                    moved.c += d;
+                    (b.y0..=b.y1).flat_map(|y| (b.x0..=b.x1).map(move |x| (x, y))).any(|(x, y)| st.covers(x, y) && moved.eval(x as u32, y as u32) != st.depth.eval(x as u32, y as u32))
+                });
+                assert!(changed, "band {band}: triangle {} does not sit on a rounding edge", t.index);
+            }
+            // Random triangles meet a rounding edge this closely far less often.
+            let plain = random_triangles(&mut Rng::new(0xde9_7e), screen, 40);
+            let on_edge = plain
+                .iter()
+                .filter_map(|t| golden::raster::setup(&t.v, t.cull, t.front, screen).ok())
+                .filter(|st| {
+                    let b = st.bbox;
+                    (b.y0..=b.y1).flat_map(|y| (b.x0..=b.x1).map(move |x| (x, y))).any(|(x, y)| st.covers(x, y) && near_rounding_edge(st.depth.raw(x as u32, y as u32), band))
+                })
+                .count();
+            assert!(on_edge < 20, "band {band}: {on_edge} of 40 random triangles");
+        }
+    }
 }
