@@ -406,6 +406,10 @@ pub fn cleared(screen: Screen) -> (Vec<u32>, Vec<u32>) {
 /// `band` or less changes whether the walk skips 16 candidates or 4.
 fn has_marginal_long_skip(st: &golden::raster::Setup, band: i64) -> bool {
     use golden::cycle::rc::{walk_step, WALK_LONG_SKIP};
+    // An empty box has no walk (its rows would never reach y1).
+    if st.bbox.is_empty() {
+        return false;
+    }
     let (mut x, mut y) = (st.bbox.x0, st.bbox.y0);
     loop {
         let step = walk_step(st, x, y);
