@@ -64,7 +64,7 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
             recs.extend(crate::cs::stimulus::cs_rounding_edge_recordings(0xED6E)?);
             recs.push(crate::cs::stimulus::cs_phong_rounding_edge_recording(0xF0E)?);
             let stimulus = format!(
-                "{} + {} + {} + {} + {} + {} cycles: the CS replay test's four frames (Phong, Gouraud, clear behind, 2000x1), then three Phong frames of 64x32 with unit-scale normals, then six light sets, each a 48x24 Phong frame and 3x1000 frames in Phong and Gouraud, then Gouraud frames of 48x24, 3x1000 and 1000x3 over planes within 0..=255, then Gouraud frames of 48x24, 2x1000 and 1000x2 with every pixel's planes at a rounding edge, then a 48x24 Phong frame with every pixel's light sum within 16 units of a rounding edge, 35% stalls",
+                "{} + {} + {} + {} + {} + {} cycles: the CS replay test's four frames (Phong, Gouraud, clear behind, 2000x1), then three Phong frames of 64x32 with unit-scale normals, then six light sets, each a 48x24 Phong frame and 3x1000 frames in Phong and Gouraud, then Gouraud frames of 48x24, 3x1000 and 1000x3 over planes within 0..=255, then Gouraud frames of 48x24, 2x1000 and 1000x2 with every pixel's planes at a rounding edge, then a 24x16 Phong frame with every pixel's light sum (both lights lighting it) within 16 units of a rounding edge, 35% stalls",
                 recs[0].cycles(),
                 recs[1].cycles(),
                 recs[2..8].iter().map(|r| r.cycles()).sum::<usize>(),

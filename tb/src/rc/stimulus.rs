@@ -402,8 +402,9 @@ pub fn cleared(screen: Screen) -> (Vec<u32>, Vec<u32>) {
 }
 
 /// Whether the walk of `st` makes a long-skip test (no candidate of the window covered, an edge
-/// negative at x) where an edge's value at x + 15 is negative by at most `band`: a value there off by
-/// `band` or less changes whether the walk skips 16 candidates or 4.
+/// negative at x) where an edge's value at x + 15, that edge's or another's, is negative by at most
+/// `band`: a value there off by `band` or less can change whether the walk skips 16 candidates or 4.
+/// (Requiring the same edge at x and x + 15 gives other triangles, which kill `rc3` #28 no longer.)
 fn has_marginal_long_skip(st: &golden::raster::Setup, band: i64) -> bool {
     use golden::cycle::rc::{walk_step, WALK_LONG_SKIP};
     // An empty box has no walk (its rows would never reach y1).
