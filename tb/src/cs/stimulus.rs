@@ -208,6 +208,14 @@ pub fn cs_gouraud_fraction_recording(seed: u64) -> Result<Recording, String> {
     run.recording.ok_or_else(|| "CS bench: no recording".to_string())
 }
 
+/// Memories for a w x h frame where pixel p shows record p + 1 of `tdbs` (entry 0 is the
+/// background's), with random depths.
+fn record_per_pixel_memories(rng: &mut Rng, w: u32, h: u32, tdbs: Vec<TdbsEntry>) -> CsMemories {
+    let ibuf: Vec<u16> = (1..=w * h).map(|p| p as u16).collect();
+    let zbuf = (0..w * h).map(|_| rng.below(1 << 24) as u32).collect();
+    CsMemories::new(ibuf, zbuf, tdbs)
+}
+
 /// Gouraud frames where every pixel has its own record whose three colour planes sit exactly at a
 /// rounding edge there: `c + a*X + b*Y + 2^15` ends in 16 ones (one more rounds up) or 16 zeros
 /// (one less rounds down), with random gradients. A fault worth one unit of 2^-16 anywhere in a plane
@@ -229,9 +237,7 @@ pub fn cs_rounding_edge_recordings(seed: u64) -> Result<Vec<Recording>, String> 
                 });
                 tdbs.push(TdbsEntry { planes, material: rng.below(65536) as u16 });
             }
-            let ibuf: Vec<u16> = (1..=w * h).map(|p| p as u16).collect();
-            let zbuf = (0..w * h).map(|_| rng.below(1 << 24) as u32).collect();
-            let mut mem = CsMemories::new(ibuf, zbuf, tdbs);
+            let mut mem = record_per_pixel_memories(&mut rng, w, h, tdbs);
             let spec = FrameSpec { width: w, height: h, background: [0, 0, 0], clear_behind: false, phong: false };
             let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed: seed + k as u64 };
             let run = csb::run_rtl_vs_model(&format!("cs_rounding_edges_{k}"), &mut mem, &[spec], &[], drive, true)?;
@@ -279,9 +285,7 @@ pub fn cs_phong_rounding_edge_recording(seed: u64) -> Result<Recording, String> 
         let rec = phong_rounding_edge_record(&mut rng, &lights, p as usize % 3, 16, 10_000_000);
         tdbs.push(rec.ok_or("no Phong record at a rounding edge in 10,000,000 draws")?);
     }
-    let ibuf: Vec<u16> = (1..=w * h).map(|p| p as u16).collect();
-    let zbuf = (0..w * h).map(|_| rng.below(1 << 24) as u32).collect();
-    let mut mem = CsMemories::new(ibuf, zbuf, tdbs);
+    let mut mem = record_per_pixel_memories(&mut rng, w, h, tdbs);
     let spec = FrameSpec { width: w, height: h, background: [1, 2, 3], clear_behind: false, phong: true };
     let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed };
     let run = csb::run_rtl_vs_model("cs_phong_rounding_edges", &mut mem, &[spec], &config, drive, true)?;

@@ -257,14 +257,17 @@ pub enum Threshold {
     None(i64),
 }
 
-/// `count` small random objects (vertices within 4 pixels of a centre, a fifth within 10) with every
+/// The objects [`threshold_objects`] starts from: vertices within 4 pixels of a centre, a fifth within 10.
+const THRESHOLD_OBJECT_SHAPE: ObjectShape = ObjectShape { span: 8, big_span: 20, big_percent: 20, depths: 1 << 24 };
+
+/// `count` small random objects ([`THRESHOLD_OBJECT_SHAPE`]) with every
 /// edge moved (its `d0` only, by at most half a pixel step) so that at one pixel of the box its
 /// distance sits exactly on `threshold` while the other two edges there are past theirs (for `Full`:
 /// at least their `t_full`; else above their `-t_none`). A threshold moved by one LSB (`Full`) or 16
 /// LSB (`None`) then changes that pixel's entry.
 pub fn threshold_objects(rng: &mut crate::common::Rng, screen: Screen, count: usize, max_ops: usize, threshold: Threshold) -> Vec<ObjectParams> {
     use golden::proof::format::{wrap, EDGE_BITS};
-    let mut objs = random_objects_shaped(rng, screen, count, max_ops, ObjectShape { span: 8, big_span: 20, big_percent: 20, depths: 1 << 24 });
+    let mut objs = random_objects_shaped(rng, screen, count, max_ops, THRESHOLD_OBJECT_SHAPE);
     for o in objs.iter_mut() {
         for k in 0..3 {
             let e = o.edges[k];
@@ -368,7 +371,7 @@ mod threshold_tests {
         let screen = Screen::new(24, 16).unwrap();
         let edges_showing = |threshold: Threshold, full_by: i64, none_by: i64| -> (usize, usize, usize) {
             let objs = threshold_objects(&mut crate::common::Rng::new(0x7e51d), screen, 48, 8, threshold);
-            let plain = random_objects_shaped(&mut crate::common::Rng::new(0x7e51d), screen, 48, 8, ObjectShape { span: 8, big_span: 20, big_percent: 20, depths: 1 << 24 });
+            let plain = random_objects_shaped(&mut crate::common::Rng::new(0x7e51d), screen, 48, 8, THRESHOLD_OBJECT_SHAPE);
             let count = |objs: &[ObjectParams]| objs.iter().map(|o| (0..3).filter(|&k| moved_threshold_shows(o, k, full_by, none_by)).count()).sum::<usize>();
             (count(&objs), count(&plain), 3 * objs.len())
         };

@@ -151,8 +151,18 @@ fn fill_rule_every_edge_index(s: i32) -> Vec<RcCmd> {
 /// The last covered pixel of a triangle in raster order (where its walk's last fragment is).
 fn last_covered(v: &[WinVertex; 3], screen: Screen) -> (i32, i32) {
     let st = golden::raster::setup(v, CullMode::None, FrontFace::Ccw, screen).expect("a drawn triangle");
+    covered_pixels(&st).last().expect("covers a pixel")
+}
+
+/// The pixels of `st`'s box whose centres it covers, in raster order.
+fn covered_pixels(st: &golden::raster::Setup) -> impl Iterator<Item = (i32, i32)> + '_ {
     let b = st.bbox;
-    (b.y0..=b.y1).flat_map(|y| (b.x0..=b.x1).map(move |x| (x, y))).filter(|&(x, y)| st.covers(x, y)).last().expect("covers a pixel")
+    (b.y0..=b.y1).flat_map(move |y| (b.x0..=b.x1).map(move |x| (x, y))).filter(|&(x, y)| st.covers(x, y))
+}
+
+/// Whether some covered pixel of `st` has its raw depth within `band` of a rounding edge.
+fn depth_near_rounding_edge(st: &golden::raster::Setup, band: i64) -> bool {
+    covered_pixels(st).any(|(x, y)| near_rounding_edge(st.depth.raw(x as u32, y as u32), band))
 }
 
 /// The screen of the hand-made cases.
@@ -328,9 +338,7 @@ pub fn depth_rounding_edge_triangles(rng: &mut Rng, screen: Screen, n: usize, ba
             z: rng.below(DEPTH_MAX as u64 + 1) as u32,
         });
         let Ok(st) = golden::raster::setup(&v, CullMode::None, FrontFace::Ccw, screen) else { continue };
-        let b = st.bbox;
-        let near = (b.y0..=b.y1).flat_map(|y| (b.x0..=b.x1).map(move |x| (x, y))).any(|(x, y)| st.covers(x, y) && near_rounding_edge(st.depth.raw(x as u32, y as u32), band));
-        if near {
+        if depth_near_rounding_edge(&st, band) {
             tris.push(RcCmd::triangle(tris.len() as u32 + 1, v, CullMode::None, FrontFace::Ccw).expect("on-screen vertices fit the formats"));
         }
     }
@@ -482,12 +490,11 @@ mod construction_tests {
             assert_eq!(tris.len(), 40, "band {band}");
             for t in &tris {
                 let st = golden::raster::setup(&t.v, t.cull, t.front, screen).expect("drawn");
-                let b = st.bbox;
                 // The depth plane moved by band units of 2^-16 up or down changes some covered pixel's depth.
                 let changed = [band, -band].iter().any(|&d| {
                     let mut moved = st.depth;
                     moved.c += d;
-                    (b.y0..=b.y1).flat_map(|y| (b.x0..=b.x1).map(move |x| (x, y))).any(|(x, y)| st.covers(x, y) && moved.eval(x as u32, y as u32) != st.depth.eval(x as u32, y as u32))
+                    covered_pixels(&st).any(|(x, y)| moved.eval(x as u32, y as u32) != st.depth.eval(x as u32, y as u32))
                 });
                 assert!(changed, "band {band}: triangle {} does not sit on a rounding edge", t.index);
             }
@@ -496,10 +503,7 @@ mod construction_tests {
             let on_edge = plain
                 .iter()
                 .filter_map(|t| golden::raster::setup(&t.v, t.cull, t.front, screen).ok())
-                .filter(|st| {
-                    let b = st.bbox;
-                    (b.y0..=b.y1).flat_map(|y| (b.x0..=b.x1).map(move |x| (x, y))).any(|(x, y)| st.covers(x, y) && near_rounding_edge(st.depth.raw(x as u32, y as u32), band))
-                })
+                .filter(|st| depth_near_rounding_edge(st, band))
                 .count();
             assert!(on_edge < 20, "band {band}: {on_edge} of 40 random triangles");
         }
