@@ -345,6 +345,41 @@ pub fn depth_rounding_edge_triangles(rng: &mut Rng, screen: Screen, n: usize, ba
     tris
 }
 
+/// `n` slivers (no culling, indices 1 to n): triangles under 1/8 pixel in area (0 < |det| < 64, in
+/// units of 1/256 square pixel) around a pixel centre, each covering a pixel whose raw depth lies
+/// within `band` units of 2^-16 of a rounding edge. Only a determinant this small lets the low bits
+/// of the depth gradient's product reach the gradient (the reciprocal's shift is then at most 5), and
+/// a sliver covers only pixels within a pixel or two of its vertices, where an error in the gradient
+/// moves the depth by a few units: such a fault shows only at a sliver's pixel near a rounding edge.
+/// Geometries are drawn (at most `20000 n`), and for each sliver that covers a pixel, depths (at
+/// most 4096 times) until one meets the edge.
+pub fn sliver_depth_rounding_edge_triangles(rng: &mut Rng, screen: Screen, n: usize, band: i64) -> Vec<RcCmd> {
+    let mut tris = Vec::new();
+    for _ in 0..20_000 * n {
+        if tris.len() == n {
+            break;
+        }
+        let (cx, cy) = (rng.below(screen.width as u64) as i32 * 16 + 8, rng.below(screen.height as u64) as i32 * 16 + 8);
+        let xy = [0, 1, 2].map(|_| (cx + rng.below(49) as i32 - 24, cy + rng.below(49) as i32 - 24));
+        let det = (xy[1].0 - xy[0].0) as i64 * (xy[2].1 - xy[0].1) as i64 - (xy[2].0 - xy[0].0) as i64 * (xy[1].1 - xy[0].1) as i64;
+        if det == 0 || det.abs() >= 64 {
+            continue;
+        }
+        for _ in 0..4096 {
+            let v = xy.map(|(x, y)| WinVertex { x, y, z: rng.below(DEPTH_MAX as u64 + 1) as u32 });
+            let Ok(st) = golden::raster::setup(&v, CullMode::None, FrontFace::Ccw, screen) else { break };
+            if covered_pixels(&st).next().is_none() {
+                break;
+            }
+            if depth_near_rounding_edge(&st, band) {
+                tris.push(RcCmd::triangle(tris.len() as u32 + 1, v, CullMode::None, FrontFace::Ccw).expect("on-screen vertices fit the formats"));
+                break;
+            }
+        }
+    }
+    tris
+}
+
 /// [`queue_filling_triangles`] on any screen of at least 8x6 pixels: the small triangles spread over
 /// it the same way (at 40x24 the same stream).
 pub fn queue_filling_triangles_on(screen: Screen) -> Vec<RcCmd> {
@@ -480,6 +515,25 @@ mod construction_tests {
         let in_front = visible(&queue_filling_random_triangles_in_front(&mut Rng::new(0xfa7), screen, 40));
         let behind = visible(&queue_filling_random_triangles(&mut Rng::new(0xfa7), screen, 40));
         assert!(in_front >= 10 && behind * 4 <= in_front, "visible: {in_front} in front of the far one, {behind} with it at depth 900");
+    }
+
+    #[test]
+    fn a_sliver_rounding_edge_triangle_is_under_an_eighth_pixel_and_changes_a_fragments_depth_with_an_error_within_its_band() {
+        let screen = hand_made_screen();
+        for band in [2, 8] {
+            let tris = sliver_depth_rounding_edge_triangles(&mut Rng::new(0x511e7), screen, 40, band);
+            assert_eq!(tris.len(), 40, "band {band}");
+            for t in &tris {
+                let st = golden::raster::setup(&t.v, t.cull, t.front, screen).expect("drawn");
+                assert!(st.det.abs() < 64, "triangle {}: det {}", t.index, st.det);
+                let changed = [band, -band].iter().any(|&d| {
+                    let mut moved = st.depth;
+                    moved.c += d;
+                    covered_pixels(&st).any(|(x, y)| moved.eval(x as u32, y as u32) != st.depth.eval(x as u32, y as u32))
+                });
+                assert!(changed, "band {band}: triangle {} does not sit on a rounding edge", t.index);
+            }
+        }
     }
 
     #[test]
