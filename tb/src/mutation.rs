@@ -57,22 +57,33 @@ pub fn target(top: &str, dir: &Path) -> Result<Target, String> {
             // unit-scale normals (added for its survivors), then six light sets, Gouraud frames
             // with fine planes and Gouraud frames at rounding edges (added for the survivors of the
             // 2026-11-29 draw), then a Phong frame with every pixel's light sum at a rounding edge
-            // (added for those that survived them), each from reset.
+            // (added for those that survived them), then one with every pixel's N.L or N.H on its
+            // rounding edge (for the survivors in the light units' dot products), each from reset,
+            // under Icarus; and a mutant that survives them all replays the largest frame, 1024x1024,
+            // under Verilator (for the I-buffer address's high bits; about a million cycles, which
+            // Icarus would take minutes per mutant over).
             let mut recs = vec![crate::cs::stimulus::cs_replay_recording(0xC5)?, crate::cs::stimulus::cs_unit_normal_recording(0xC5)?];
             recs.extend(crate::cs::stimulus::cs_light_set_recordings(0x11647, 6)?);
             recs.push(crate::cs::stimulus::cs_gouraud_fraction_recording(0x60_0AD)?);
             recs.extend(crate::cs::stimulus::cs_rounding_edge_recordings(0xED6E)?);
             recs.push(crate::cs::stimulus::cs_phong_rounding_edge_recording(0xF0E)?);
+            recs.push(crate::cs::stimulus::cs_phong_dot_edge_recording(0xD07)?);
+            let largest = crate::cs::stimulus::cs_largest_frame_recording(0x1A26E)?;
             let stimulus = format!(
-                "{} + {} + {} + {} + {} + {} cycles: the CS replay test's four frames (Phong, Gouraud, clear behind, 2000x1), then three Phong frames of 64x32 with unit-scale normals, then six light sets, each a 48x24 Phong frame and 3x1000 frames in Phong and Gouraud, then Gouraud frames of 48x24, 3x1000 and 1000x3 over planes within 0..=255, then Gouraud frames of 48x24, 2x1000 and 1000x2 with every pixel's planes at a rounding edge, then a 24x16 Phong frame with every pixel's light sum (both lights lighting it) within 16 units of a rounding edge, 35% stalls",
+                "{} + {} + {} + {} + {} + {} + {} cycles under Icarus: the CS replay test's four frames (Phong, Gouraud, clear behind, 2000x1), then three Phong frames of 64x32 with unit-scale normals, then six light sets, each a 48x24 Phong frame and 3x1000 frames in Phong and Gouraud, then Gouraud frames of 48x24, 3x1000 and 1000x3 over planes within 0..=255, then Gouraud frames of 48x24, 2x1000 and 1000x2 with every pixel's planes at a rounding edge, then a 24x16 Phong frame with every pixel's light sum (both lights lighting it) within 16 units of a rounding edge, then a 24x16 Phong frame with every pixel's N.L or N.H of one light on its rounding edge, 35% stalls; then, for a mutant that survives them, {} cycles under Verilator: a 1024x1024 Gouraud frame",
                 recs[0].cycles(),
                 recs[1].cycles(),
                 recs[2..8].iter().map(|r| r.cycles()).sum::<usize>(),
                 recs[8].cycles(),
                 recs[9..12].iter().map(|r| r.cycles()).sum::<usize>(),
-                recs[12].cycles()
+                recs[12].cycles(),
+                recs[13].cycles(),
+                largest.cycles()
             );
-            let replay: Replay = Box::new(move |v, d| recs.iter().try_for_each(|rec| crate::cs::replay::replay_iverilog(v, "cs", rec, d).map(|_| ())));
+            let replay: Replay = Box::new(move |v, d| {
+                recs.iter().try_for_each(|rec| crate::cs::replay::replay_iverilog(v, "cs", rec, d).map(|_| ()))?;
+                crate::cs::replay::replay_verilator(v, "cs", &largest, d).map(|_| ())
+            });
             Ok(Target { top: "cs", verilog: hdl::verilog_top("cs")?, stimulus, replay })
         }
         "cs_tex" => {

@@ -670,6 +670,13 @@ pub fn run_model(mem: &mut CsMemories, frames: &[FrameSpec], config: &[CsConfigW
     model_only(run_inner::<ColorShader>(mem, frames, config, None, drive, false, None, false))
 }
 
+/// The cycle model alone, recording every port of every cycle for a replay of the `cs` Verilog (the
+/// memories answer the model's reads, as they would the RTL's if it is equal): for frames too large
+/// for the RustHDL simulation to record in reasonable time.
+pub fn record_model(mem: &mut CsMemories, frames: &[FrameSpec], config: &[CsConfigWrite], drive: CsDrive) -> Result<CsRun, String> {
+    model_only(run_inner::<ColorShader>(mem, frames, config, None, drive, false, None, true))
+}
+
 /// The cycle model alone on a textured run, recording every port of every cycle for a replay of the
 /// `cs_tex` Verilog (the memories answer the model's reads, as they would the RTL's if it is equal).
 pub fn record_tex_model(mem: &mut CsMemories, frames: &[FrameSpec], config: &[CsConfigWrite], tex: &TexRun, drive: CsDrive) -> Result<CsRun, String> {

@@ -246,6 +246,20 @@ pub fn cs_rounding_edge_recordings(seed: u64) -> Result<Vec<Recording>, String> 
         .collect()
 }
 
+/// The largest frame the CS takes, 1024x1024 in Gouraud over random I-buffer contents, recorded from
+/// the cycle model alone (1,048,576 pixels; the RustHDL simulation would take minutes). Only a frame of
+/// more than 2^18 pixels sets the I-buffer address's bit 18, and one of more than 2^19 its bit 19; the
+/// other recordings' largest frame has 3,000 pixels.
+pub fn cs_largest_frame_recording(seed: u64) -> Result<Recording, String> {
+    let mut rng = Rng::new(seed);
+    let (w, h) = (1024u32, 1024u32);
+    let mut mem = random_memories(&mut rng, w, h, 150);
+    let spec = FrameSpec { width: w, height: h, background: [10, 20, 30], clear_behind: false, phong: false };
+    let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed };
+    let run = csb::record_model(&mut mem, &[spec], &[], drive)?;
+    run.recording.ok_or_else(|| "CS model: no recording".to_string())
+}
+
 /// A record whose Phong colour sits at a rounding edge: a constant normal (planes without gradient)
 /// and a material drawn again (at most `tries` times) until every light lights the normalised normal
 /// (`N.L > 0`, so that every light unit's term is in the sum) and the light sum
@@ -292,6 +306,113 @@ pub fn cs_phong_rounding_edge_recording(seed: u64) -> Result<Recording, String> 
     run.recording.ok_or_else(|| "CS bench: no recording".to_string())
 }
 
+/// Which of a light unit's two rounded dot products a [`phong_dot_edge_record`] puts on its edge.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Dot {
+    /// N.L, the diffuse term's (and the specular term's gate, N.L > 0).
+    L,
+    /// N.H, the specular term's base.
+    H,
+}
+
+/// The raw sum `u.v` (Q2.28) of a unit normal and a light vector, before the light unit rounds it to
+/// Q1.14.
+fn raw_dot(u: [i64; 3], v: [i64; 3]) -> i64 {
+    (0..3).map(|k| u[k] * v[k]).sum()
+}
+
+/// A record whose normal puts light `light`'s N.L or N.H (`dot`) exactly on its Q1.14 rounding edge,
+/// and whose material then makes that rounding visible in the colour. The raw sum `u.v` (`u` the
+/// normalised normal, `v` the light's L or H) ends, after the light unit adds 2^13, in 14 ones (one
+/// unit of 2^-28 more rounds up) or 14 zeros (one less rounds down), with the rounded product in
+/// 1..2^14 (not clamped; for N.H the light also lights the normal, N.L > 0, so that the specular term
+/// is in the sum); and the colour of some channel changes when the rounded product moves by that one
+/// unit of 2^-14 across the edge, a change of `Kd Il` (N.L) or of `Ks Il` times the change of
+/// `(N.H)^gloss` (N.H) in the light sum. A fault of any size below 2^14 units that moves a product or
+/// sum of the unit's dot product across the edge then changes the colour; over random normals a
+/// rounded dot product sits on its edge at one normal in 2^13. The normal is drawn at most `tries`
+/// times, then the 16 material slots tried for each normal on the edge; `None` if no draw does.
+pub fn phong_dot_edge_record(rng: &mut Rng, lights: &PhongLights, light: usize, dot: Dot, tries: usize) -> Option<TdbsEntry> {
+    let one = 1i64 << 14;
+    (0..tries).find_map(|_| {
+        let n = [0, 1, 2].map(|_| rng.below(2 * (1 << 14) + 1) as i64 - (1 << 14));
+        let u = golden::shade::normalize_q14(n);
+        let v = match dot {
+            Dot::L => lights.l[light],
+            Dot::H => lights.h[light],
+        };
+        let s = raw_dot(u, v) + (1 << 13);
+        let step = match s.rem_euclid(one) {
+            r if r == one - 1 => 1,
+            0 => -1,
+            _ => return None,
+        };
+        let d = s.div_euclid(one);
+        // Both sides of the edge unclamped, and above 0 (N.L then stays the specular term's open gate).
+        if !(1..one).contains(&d) || !(1..=one).contains(&(d + step)) {
+            return None;
+        }
+        if dot == Dot::H && golden::shade::dot_q14(u, lights.l[light]) == 0 {
+            return None;
+        }
+        let slot = rng.below(CS_MATERIALS as u64) as usize;
+        (0..CS_MATERIALS).map(|k| (slot + k) % CS_MATERIALS).find_map(|m| {
+            let mat = &lights.materials[m];
+            let acc = lights.intensity(u, m as u16);
+            let delta: [i64; 3] = match dot {
+                Dot::L => mat.diffuse[light].map(|kd| kd * step),
+                Dot::H => {
+                    let dsp = golden::shade::power_q14(d + step, mat.gloss_log2) - golden::shade::power_q14(d, mat.gloss_log2);
+                    mat.specular[light].map(|ks| ks * dsp)
+                }
+            };
+            let rgb = golden::shade::rgb_of_intensity(acc);
+            let rgb_moved = golden::shade::rgb_of_intensity([0, 1, 2].map(|k| acc[k] + delta[k]));
+            (rgb != rgb_moved).then(|| {
+                let material = (m + CS_MATERIALS * rng.below((65536 / CS_MATERIALS) as u64) as usize) as u16;
+                TdbsEntry { planes: n.map(|c| Plane { a: 0, b: 0, c: c << 16 }), material }
+            })
+        })
+    })
+}
+
+/// `lights` with every component of every L and H made odd (at most one unit of 2^-14 moved): then
+/// the low bit of each of a dot product's products follows the normal's component, and the raw sum
+/// takes odd and even values. With an even component the product's low bit is always 0, and with all
+/// three even the sum never ends in 14 ones: a fault in those bits could not be seen (the first light
+/// set drawn for [`cs_phong_dot_edge_recording`] had light 1's L all even).
+pub fn odd_lights(mut lights: PhongLights) -> PhongLights {
+    for v in lights.l.iter_mut().chain(lights.h.iter_mut()) {
+        for c in v.iter_mut() {
+            *c |= 1;
+        }
+    }
+    lights
+}
+
+/// A Phong frame of 24x16 where every pixel has its own [`phong_dot_edge_record`]: light 0's N.L,
+/// light 1's N.L, light 0's N.H and light 1's N.H in turn, under random lights and materials. The light
+/// sum at a rounding edge ([`cs_phong_rounding_edge_recording`]) shows a fault in the sum after the
+/// dot products are rounded; this shows one in the dot products' own products and sums, which the
+/// rounding to Q1.14 hides unless the sum sits on its edge.
+pub fn cs_phong_dot_edge_recording(seed: u64) -> Result<Recording, String> {
+    let mut rng = Rng::new(seed);
+    let lights = odd_lights(random_lights(&mut rng));
+    let config = phong_config(&lights)?;
+    let (w, h) = (24u32, 16u32);
+    let mut tdbs = vec![TdbsEntry { planes: [Plane::constant(0); 3], material: 0 }];
+    for p in 0..w * h {
+        let (light, dot) = (p as usize % CS_LIGHTS, if (p as usize / CS_LIGHTS) % 2 == 0 { Dot::L } else { Dot::H });
+        let rec = phong_dot_edge_record(&mut rng, &lights, light, dot, 10_000_000);
+        tdbs.push(rec.ok_or_else(|| format!("no normal with light {light}'s N.{dot:?} on its rounding edge in 10,000,000 draws"))?);
+    }
+    let mut mem = record_per_pixel_memories(&mut rng, w, h, tdbs);
+    let spec = FrameSpec { width: w, height: h, background: [4, 5, 6], clear_behind: false, phong: true };
+    let drive = CsDrive { stall_percent: 35, start_while_busy_percent: 20, max_idle: 3, seed };
+    let run = csb::run_rtl_vs_model("cs_phong_dot_edges", &mut mem, &[spec], &config, drive, true)?;
+    run.recording.ok_or_else(|| "CS bench: no recording".to_string())
+}
+
 #[cfg(test)]
 mod rounding_edge_tests {
     use super::*;
@@ -312,6 +433,36 @@ mod rounding_edge_tests {
             // Every light unit's term is in the sum.
             let u = golden::shade::normalize_q14(n);
             assert!(lights.l.iter().all(|&l| golden::shade::dot_q14(u, l) > 0));
+        }
+    }
+
+    /// The dot-product construction on golden's shading: moving the light's L (or H) by one unit in a
+    /// component where the normal is not 0, the way that crosses the edge, changes the colour; the
+    /// same move the other way does not change the rounded dot product.
+    #[test]
+    fn a_phong_dot_edge_record_changes_colour_when_its_light_vector_moves_by_one_unit_across_the_edge() {
+        let mut rng = Rng::new(0xd07);
+        let lights = odd_lights(random_lights(&mut rng));
+        for (light, dot) in [(0, Dot::L), (1, Dot::L), (0, Dot::H), (1, Dot::H), (0, Dot::L), (1, Dot::H)] {
+            let rec = phong_dot_edge_record(&mut rng, &lights, light, dot, 10_000_000).expect("a record on the edge");
+            let n = rec.planes.map(|p| p.eval(0, 0));
+            let m = rec.material % CS_MATERIALS as u16;
+            let u = golden::shade::normalize_q14(n);
+            let k = (0..3).filter(|&k| u[k] != 0).min_by_key(|&k| u[k].abs()).unwrap();
+            let vec_of = |l: &PhongLights| if dot == Dot::L { l.l[light] } else { l.h[light] };
+            let dot_of = |l: &PhongLights| golden::shade::dot_q14(u, vec_of(l));
+            let with = |sign: i64| {
+                let mut moved = lights.clone();
+                let v = if dot == Dot::L { &mut moved.l[light] } else { &mut moved.h[light] };
+                v[k] += sign * u[k].signum();
+                moved
+            };
+            let (up, down) = (with(1), with(-1));
+            // Exactly one direction moves the rounded dot product (by one unit), and it changes the colour.
+            let moves = [&up, &down].map(|l| dot_of(l) - dot_of(&lights));
+            assert!(moves == [1, 0] || moves == [0, -1], "light {light} N.{dot:?}: {moves:?}");
+            let crossing = if moves[0] == 1 { &up } else { &down };
+            assert_ne!(crossing.shade(n, m), lights.shade(n, m), "light {light} N.{dot:?}: the colour does not change");
         }
     }
 
