@@ -517,6 +517,15 @@ mod construction_tests {
         assert!(in_front >= 10 && behind * 4 <= in_front, "visible: {in_front} in front of the far one, {behind} with it at depth 900");
     }
 
+    /// Whether the depth plane moved by `band` units of 2^-16, up or down, changes some covered pixel's depth.
+    fn plane_moved_by_band_changes_a_depth(st: &golden::raster::Setup, band: i64) -> bool {
+        [band, -band].iter().any(|&d| {
+            let mut moved = st.depth;
+            moved.c += d;
+            covered_pixels(st).any(|(x, y)| moved.eval(x as u32, y as u32) != st.depth.eval(x as u32, y as u32))
+        })
+    }
+
     #[test]
     fn a_sliver_rounding_edge_triangle_is_under_an_eighth_pixel_and_changes_a_fragments_depth_with_an_error_within_its_band() {
         let screen = hand_made_screen();
@@ -526,12 +535,7 @@ mod construction_tests {
             for t in &tris {
                 let st = golden::raster::setup(&t.v, t.cull, t.front, screen).expect("drawn");
                 assert!(st.det.abs() < 64, "triangle {}: det {}", t.index, st.det);
-                let changed = [band, -band].iter().any(|&d| {
-                    let mut moved = st.depth;
-                    moved.c += d;
-                    covered_pixels(&st).any(|(x, y)| moved.eval(x as u32, y as u32) != st.depth.eval(x as u32, y as u32))
-                });
-                assert!(changed, "band {band}: triangle {} does not sit on a rounding edge", t.index);
+                assert!(plane_moved_by_band_changes_a_depth(&st, band), "band {band}: triangle {} does not sit on a rounding edge", t.index);
             }
         }
     }
@@ -544,13 +548,7 @@ mod construction_tests {
             assert_eq!(tris.len(), 40, "band {band}");
             for t in &tris {
                 let st = golden::raster::setup(&t.v, t.cull, t.front, screen).expect("drawn");
-                // The depth plane moved by band units of 2^-16 up or down changes some covered pixel's depth.
-                let changed = [band, -band].iter().any(|&d| {
-                    let mut moved = st.depth;
-                    moved.c += d;
-                    covered_pixels(&st).any(|(x, y)| moved.eval(x as u32, y as u32) != st.depth.eval(x as u32, y as u32))
-                });
-                assert!(changed, "band {band}: triangle {} does not sit on a rounding edge", t.index);
+                assert!(plane_moved_by_band_changes_a_depth(&st, band), "band {band}: triangle {} does not sit on a rounding edge", t.index);
             }
             // Random triangles meet a rounding edge this closely far less often.
             let plain = random_triangles(&mut Rng::new(0xde9_7e), screen, 40);
