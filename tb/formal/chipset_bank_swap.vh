@@ -1,6 +1,7 @@
 // The host protocol, bank-swap assertions and reach points shared by chipset.sv and chipset3.sv
 // (`include`d inside each harness module, after the top's instance; REACH is the module's parameter).
-// See chipset.sv's header for what is assumed and asserted. Reach point 4: a frame's last beat taken.
+// See chipset.sv's header for what is assumed and asserted. Reach point 7, a frame's last beat taken,
+// is numbered above the harnesses' own points (chipset_tex has 0-6).
     reg past_valid = 1'b0;
     always @(posedge clock) past_valid <= 1'b1;
 
@@ -81,5 +82,5 @@
         cover (is_re && swapped && !is_rd_addr[20]);
         if (REACH == 3 || REACH_SET[3]) reach_3: assert (!(is_re && swapped && !is_rd_addr[20]));
         cover (vbeat && vx == 2'd3 && vy == 2'd2);
-        if (REACH == 4 || REACH_SET[4]) reach_4: assert (!(vbeat && vx == 2'd3 && vy == 2'd2));
+        if (REACH == 7 || REACH_SET[7]) reach_7: assert (!(vbeat && vx == 2'd3 && vy == 2'd2));
     end
