@@ -1,7 +1,6 @@
 // The host protocol, bank-swap assertions and reach points shared by chipset.sv and chipset3.sv
 // (`include`d inside each harness module, after the top's instance; REACH is the module's parameter).
-// See chipset.sv's header for what is assumed and asserted. Reach point 7, a frame's last beat taken,
-// is numbered above the harnesses' own points (chipset_tex has 0-6).
+// See chipset.sv's header for what is assumed and asserted.
     reg past_valid = 1'b0;
     always @(posedge clock) past_valid <= 1'b1;
 
@@ -48,28 +47,6 @@
             && video_tuser == $past(video_tuser) && video_tlast == $past(video_tlast));
     end
 
-    // ---- The video frames: every scan start taken gives one frame of the build's 4x3 pixels, in
-    // order: no beat before a scan start (or of more frames than were started), tuser on a frame's
-    // first beat only, tlast on each row's last beat only.
-    wire vbeat = video_tvalid && video_tready;
-    reg [7:0] frames_started = 8'd0;
-    reg [7:0] frames_shown = 8'd0;
-    reg [1:0] vx = 2'd0;
-    reg [1:0] vy = 2'd0;
-    always @(posedge clock) begin
-        if (swap) frames_started <= frames_started + 8'd1;
-        if (vbeat) begin
-            vx <= (vx == 2'd3) ? 2'd0 : vx + 2'd1;
-            if (vx == 2'd3) vy <= (vy == 2'd2) ? 2'd0 : vy + 2'd1;
-            if (vx == 2'd3 && vy == 2'd2) frames_shown <= frames_shown + 8'd1;
-        end
-    end
-    always @(*) if (video_tvalid) begin
-        if (REACH < 0) assert (frames_shown < frames_started);
-        if (REACH < 0) assert (video_tuser == (vx == 2'd0 && vy == 2'd0));
-        if (REACH < 0) assert (video_tlast == (vx == 2'd3));
-    end
-
     reg swapped = 1'b0;
     always @(posedge clock) if (swap) swapped <= 1'b1;
     always @(posedge clock) if (past_valid) begin
@@ -81,6 +58,4 @@
         if (REACH == 2 || REACH_SET[2]) reach_2: assert (!(t_we && draw_bank));
         cover (is_re && swapped && !is_rd_addr[20]);
         if (REACH == 3 || REACH_SET[3]) reach_3: assert (!(is_re && swapped && !is_rd_addr[20]));
-        cover (vbeat && vx == 2'd3 && vy == 2'd2);
-        if (REACH == 7 || REACH_SET[7]) reach_7: assert (!(vbeat && vx == 2'd3 && vy == 2'd2));
     end
