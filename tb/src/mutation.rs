@@ -1,6 +1,6 @@
 //! Mutation cover of the generated netlists, by the method of YosysHQ's mcy: Yosys draws mutations of a
 //! top's netlist (`mutate -list N`), each mutant is written out as Verilog and replayed under Icarus
-//! (Verilator for `cs_tex`) on the vectors that the top's Verilog replay test uses (every cycle's inputs and the cycle model's
+//! (Verilator for `cs_tex`, and for `cs`'s 1024x1024 frame, reached only by a mutant that survives the rest) on the vectors that the top's Verilog replay test uses (every cycle's inputs and the cycle model's
 //! outputs). A mutant is **killed** when any port differs in any cycle (or the simulation never ends).
 //! A mutant that survives is checked for equivalence with the original: its cell dead in the flattened
 //! top, or Yosys's `equiv_make`, `equiv_simple` and `equiv_induct` (an induction proof over the mutated

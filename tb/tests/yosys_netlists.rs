@@ -1,7 +1,7 @@
 //! Yosys reads the generated Verilog as the simulators do: the netlist that `yosys prep` makes of each
 //! top (the netlist the FPGA flow and the mutation cover start from: every top of `tb::mutation::TOPS`)
 //! replays the same recorded vectors as the generated Verilog, every port in every cycle, under Icarus
-//! (Verilator for `cs_tex`).
+//! (Verilator for `cs_tex`, and for `cs`'s 1024x1024 frame).
 //!
 //! Before `hdl::common::sized_localparams`, Yosys 0.23 read rust-hdl's `localparam signed k = 17'b111;`
 //! as unsigned, and the netlist of `rc` clipped the boxes of triangles left of or above the screen
