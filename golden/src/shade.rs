@@ -115,11 +115,16 @@ pub fn normalize_q14(n: [i64; 3]) -> [i64; 3] {
     n.map(|c| normal_component(round_shift((c as i128 * y) << k, 17) as i64))
 }
 
+/// The raw sum of products of a normal with a vector, Q2.28 for Q1.14 operands: what [`dot_q14`]
+/// rounds.
+pub fn dot_raw(n: [i64; 3], b: [i64; 3]) -> i64 {
+    (0..3).map(|k| n[k] * b[k]).sum()
+}
+
 /// The clamped dot product of a normal with a unit vector, Q1.14 in [0, 1] (seed 002's light-source
 /// processors and the CS's light units).
 pub fn dot_q14(n: [i64; 3], b: [i64; 3]) -> i64 {
-    let s: i64 = (0..3).map(|k| n[k] * b[k]).sum();
-    round_shift(s as i128, NORMAL_FRAC).clamp(0, ONE_Q14 as i128) as i64
+    round_shift(dot_raw(n, b) as i128, NORMAL_FRAC).clamp(0, ONE_Q14 as i128) as i64
 }
 
 /// x^(2^k) in Q1.14 by k roundings of a square (x in [0, 1] stays in [0, 1]).

@@ -315,12 +315,6 @@ pub enum Dot {
     H,
 }
 
-/// The raw sum `u.v` (Q2.28) of a unit normal and a light vector, before the light unit rounds it to
-/// Q1.14.
-fn raw_dot(u: [i64; 3], v: [i64; 3]) -> i64 {
-    (0..3).map(|k| u[k] * v[k]).sum()
-}
-
 /// A record whose normal puts light `light`'s N.L or N.H (`dot`) exactly on its Q1.14 rounding edge,
 /// and whose material then makes that rounding visible in the colour. The raw sum `u.v` (`u` the
 /// normalised normal, `v` the light's L or H) ends, after the light unit adds 2^13, in 14 ones (one
@@ -341,7 +335,7 @@ pub fn phong_dot_edge_record(rng: &mut Rng, lights: &PhongLights, light: usize, 
             Dot::L => lights.l[light],
             Dot::H => lights.h[light],
         };
-        let s = raw_dot(u, v) + (1 << 13);
+        let s = golden::shade::dot_raw(u, v) + (1 << 13);
         let step = match s.rem_euclid(one) {
             r if r == one - 1 => 1,
             0 => -1,

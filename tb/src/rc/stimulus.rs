@@ -361,9 +361,11 @@ pub fn sliver_depth_rounding_edge_triangles(rng: &mut Rng, screen: Screen, n: us
         }
         let (cx, cy) = (rng.below(screen.width as u64) as i32 * 16 + 8, rng.below(screen.height as u64) as i32 * 16 + 8);
         let xy = [0, 1, 2].map(|_| (cx + rng.below(49) as i32 - 24, cy + rng.below(49) as i32 - 24));
-        let det = (xy[1].0 - xy[0].0) as i64 * (xy[2].1 - xy[0].1) as i64 - (xy[2].0 - xy[0].0) as i64 * (xy[1].1 - xy[0].1) as i64;
-        if det == 0 || det.abs() >= 64 {
-            continue;
+        // The determinant, from the geometry alone (it does not depend on the depths; zero area is an error).
+        let flat = xy.map(|(x, y)| WinVertex { x, y, z: 0 });
+        match golden::raster::setup(&flat, CullMode::None, FrontFace::Ccw, screen) {
+            Ok(st) if st.det.abs() < 64 => {}
+            _ => continue,
         }
         for _ in 0..4096 {
             let v = xy.map(|(x, y)| WinVertex { x, y, z: rng.below(DEPTH_MAX as u64 + 1) as u32 });
