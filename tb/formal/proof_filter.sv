@@ -15,7 +15,8 @@
 
 module proof_filter_formal #(
     parameter integer REACH = -1,  // -1: every assertion; n >= 0: only "reach point n is unreachable"
-    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
+    parameter integer REACH_SET = 0,  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
+    parameter integer INDUCT = 0  // 1: assert the strengthening invariants too (the `prove` task)
 ) (
     input wire clock,
     input wire cfg_write,
@@ -44,6 +45,8 @@ module proof_filter_formal #(
     `STREAM_IN(up_valid, up_ready, up_data)
     `STREAM_OUT(down_valid, down_ready, down_data, REACH < 0)
 
+    // List and pixel counters modulo 256: the checks below hold for streams of any length (at most 8
+    // lists are in flight), which is what lets the `prove` task's induction close.
     reg [7:0] lists_in = 8'd0;
     reg [7:0] pixels_out = 8'd0;
     reg [1:0] entries = 2'd0;      // entries of the list coming in, saturating at 2
@@ -61,12 +64,48 @@ module proof_filter_formal #(
         end
         if (down_fire) pixels_out <= pixels_out + 8'd1;
     end
+    wire [7:0] in_flight = lists_in - pixels_out;
     wire delivered = down_fire && pixels_out == tracked;
     always @(*) begin
-        if (REACH < 0) assert (pixels_out <= lists_in);
+        if (REACH < 0) assert (in_flight <= 8'd8);
         if (down_valid) if (REACH < 0) assert (down_data[50:44] <= 7'd64);
-        if (delivered) if (REACH < 0) assert (tracked < lists_in && down_data[19:0] == tracked_pos);
+        if (delivered) if (REACH < 0) assert (in_flight != 8'd0 && down_data[19:0] == tracked_pos);
     end
+
+    // Strengthening invariants (the `prove` task's k-induction): the registers F0..F6 and OUT, probed
+    // by their names in the generated Verilog (the .sby's `connect` lines, after `flatten`), hold the
+    // lists in flight, oldest at the output: a register holding a list's last slot holds list number
+    // pixels_out + (such registers after it), and the tracked list's position where that number is
+    // `tracked`; the covered counts behind OUT are at most 64. FilterTag: valid 0, x 10:1, y 20:11,
+    // last 21; ShadedSlot (F0, valid apart): x 9:0, y 19:10, last 20.
+    wire [110:0] p_f0;
+    wire p_f0_valid;
+    wire [40:0] p_f1, p_f2, p_f3, p_f4, p_f5, p_f6;
+    wire [6:0] p_f5_covered, p_f6_covered;
+    wire p_out_valid;
+    wire [50:0] p_out_data;
+    // {last, y, x, valid} of register j at st[22 j +: 22], input end first (F0 .. F6, OUT).
+    wire [175:0] st = {{1'b1, p_out_data[19:0], p_out_valid}, p_f6[21:0], p_f5[21:0], p_f4[21:0],
+                       p_f3[21:0], p_f2[21:0], p_f1[21:0], {p_f0[20:0], p_f0_valid}};
+    wire [63:0] after;  // at 8 j +: 8, the registers after register j holding a list's last slot
+    assign after[63:56] = 8'd0;
+    genvar j;
+    generate
+        for (j = 0; j < 7; j = j + 1) begin : count
+            assign after[8 * j +: 8] = after[8 * (j + 1) +: 8] + {7'd0, st[22 * (j + 1)] && st[22 * (j + 1) + 21]};
+        end
+        if (INDUCT) begin : invariants
+            always @(*) if (REACH < 0) begin
+                assert (p_out_valid == down_valid && p_out_data == down_data);
+                assert (in_flight == after[7:0] + {7'd0, st[0] && st[21]});
+                assert (p_f5_covered <= 7'd64 && p_f6_covered <= 7'd64 && p_out_data[50:44] <= 7'd64);
+            end
+            for (j = 0; j < 8; j = j + 1) begin : stage
+                always @(*) if (REACH < 0 && st[22 * j] && st[22 * j + 21] && pixels_out + after[8 * j +: 8] == tracked)
+                    assert (st[22 * j + 1 +: 20] == tracked_pos);
+            end
+        end
+    endgenerate
 
     `STALL_REACH(down_valid, down_ready, 0)
     `STALL_REACH(up_valid, up_ready, 1)

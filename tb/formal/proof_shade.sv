@@ -15,7 +15,8 @@
 
 module proof_shade_formal #(
     parameter integer REACH = -1,  // -1: every assertion; n >= 0: only "reach point n is unreachable"
-    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
+    parameter integer REACH_SET = 0,  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
+    parameter integer INDUCT = 0  // 1: assert the strengthening invariants too (the `prove` task)
 ) (
     input wire clock,
     input wire cfg_write,
@@ -44,6 +45,8 @@ module proof_shade_formal #(
     `STREAM_OUT(down_valid, down_ready, down_data, REACH < 0)
 
     wire [86:0] up_kept = {up_data[158:111], up_data[62], up_data[37:0]};
+    // Slot counters modulo 256: the checks below hold for streams of any length (at most 10 slots are
+    // in flight), which is what lets the `prove` task's induction close.
     reg [7:0] slots_in = 8'd0;
     reg [7:0] slots_out = 8'd0;
     (* anyconst *) reg [7:0] tracked;
@@ -53,11 +56,42 @@ module proof_shade_formal #(
         if (down_fire) slots_out <= slots_out + 8'd1;
         if (up_fire && slots_in == tracked) tracked_slot <= up_kept;
     end
+    wire [7:0] in_flight = slots_in - slots_out;
     wire delivered = down_fire && slots_out == tracked;
     always @(*) begin
-        if (REACH < 0) assert (slots_out <= slots_in);
-        if (delivered) if (REACH < 0) assert (tracked < slots_in && down_data[86:0] == tracked_slot);
+        if (REACH < 0) assert (in_flight <= 8'd10);
+        if (delivered) if (REACH < 0) assert (in_flight != 8'd0 && down_data[86:0] == tracked_slot);
     end
+
+    // Strengthening invariants (the `prove` task's k-induction): the pipeline's ten registers, probed
+    // by their names in the generated Verilog (the .sby's `connect -set` lines, after `flatten`), hold
+    // exactly the slots in flight, oldest at the output: register j holds slot number
+    // slots_out + (valid registers after j), and the tracked slot's kept fields where that number is
+    // `tracked`. ShadeWork: valid 0, the kept fields 87:1 (x, y, last, has_entry, id, full, d0..d2).
+    wire [296:0] p_r0, p_r1, p_r2, p_a, p_p1, p_p2, p_p3, p_p4, p_m;
+    wire p_out_valid;
+    wire [110:0] p_out_data;
+    // {kept, valid} of register j at st[88 j +: 88], input end first.
+    wire [879:0] st = {{p_out_data[86:0], p_out_valid}, p_m[87:0], p_p4[87:0], p_p3[87:0], p_p2[87:0],
+                       p_p1[87:0], p_a[87:0], p_r2[87:0], p_r1[87:0], p_r0[87:0]};
+    wire [79:0] after;  // at 8 j +: 8, the valid registers after register j (nearer the output)
+    assign after[79:72] = 8'd0;
+    genvar j;
+    generate
+        for (j = 0; j < 9; j = j + 1) begin : count
+            assign after[8 * j +: 8] = after[8 * (j + 1) +: 8] + {7'd0, st[88 * (j + 1)]};
+        end
+        if (INDUCT) begin : invariants
+            always @(*) if (REACH < 0) begin
+                assert (p_out_valid == down_valid && p_out_data == down_data);
+                assert (in_flight == after[7:0] + {7'd0, st[0]});
+            end
+            for (j = 0; j <= 9; j = j + 1) begin : stage
+                always @(*) if (REACH < 0 && st[88 * j] && slots_out + after[8 * j +: 8] == tracked)
+                    assert (st[88 * j + 1 +: 87] == tracked_slot);
+            end
+        end
+    endgenerate
 
     `STALL_REACH(down_valid, down_ready, 0)
     `STALL_REACH(up_valid, up_ready, 1)

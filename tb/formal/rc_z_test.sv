@@ -31,7 +31,8 @@ module rc_z_test_formal #(
     // -1: check every assertion; n >= 0: check only that reach point n is unreachable, a run that
     // sby expects to fail (its counterexample is the witness that the point is reachable).
     parameter integer REACH = -1,
-    parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
+    parameter integer REACH_SET = 0,  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
+    parameter integer INDUCT = 0  // 1: assert the strengthening invariants too (the `prove` task)
 ) (
     input wire clock,
     input wire [86:0] tok,
@@ -124,6 +125,34 @@ module rc_z_test_formal #(
     always @(posedge clock) prev_last <= f1_frag && f1_last;
     reg prev_write_a = 1'b0;
     always @(posedge clock) prev_write_a <= z_we && z_wr_addr == A;
+
+    // ---- Strengthening invariants (the `prove` task's k-induction), on the stage's registers probed by
+    // their names in the generated Verilog (the .sby's `connect` lines, after `flatten`): F1 is the
+    // harness's token; the forwarding register holds the write of the previous edge, and where that
+    // was at A, A's depth; a read for the token in F1 at A returned A's words unless A was written at
+    // the previous edge; A's words mean the far plane wherever its index is the background; the
+    // result queue holds pushed - popped results, the k-th from the head being result popped + k,
+    // and its `visible` is the harness's OR of the passes.
+    wire [86:0] p_f1;
+    wire p_fwd_valid;
+    wire [19:0] p_fwd_addr;
+    wire [23:0] p_fwd_z;
+    wire p_visible;
+    wire [19:0] p_q0, p_q1, p_q2;
+    wire [2:0] p_len;
+    generate if (INDUCT) begin : invariants
+        always @(*) if (REACH < 0) begin
+            assert (p_f1 == f1 && p_visible == rq_vis);
+            if (p_fwd_valid && p_fwd_addr == A) assert (written && p_fwd_z == z_a);
+            if (prev_write_a) assert (p_fwd_valid && p_fwd_addr == A);
+            if (past_valid && f1_addr == A && !prev_write_a) assert (z_rd_data == z_now && i_rd_data == i_now);
+            if (written && i_a == 16'd0) assert (z_a == FAR);
+            assert ({5'd0, p_len} == pushed - popped);
+            if (p_len > 3'd0 && popped == tracked) assert (p_q0 == tracked_result);
+            if (p_len > 3'd1 && popped + 8'd1 == tracked) assert (p_q1 == tracked_result);
+            if (p_len > 3'd2 && popped + 8'd2 == tracked) assert (p_q2 == tracked_result);
+        end
+    end endgenerate
     wire forwarded = prev_write_a && f1_frag && f1_covered && f1_addr == A;
     `STALL_REACH(result_valid, result_ready, 4)
     always @(posedge clock) if (past_valid) begin
