@@ -45,7 +45,8 @@ module rc3_tdbv_test_formal #(
     parameter integer REACH = -1,
     parameter integer REACH_SET = 0,  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
     // The pixel A is at most (PIXEL_MAX, PIXEL_MAX).
-    parameter integer PIXEL_MAX = 3
+    parameter integer PIXEL_MAX = 3,
+    parameter integer INDUCT = 0  // 1: assert the strengthening invariants too (the `prove` task)
 ) (
     input wire clock,
     input wire [86:0] tok,
@@ -88,14 +89,30 @@ module rc3_tdbv_test_formal #(
     function [3:0] plane_a(input [15:0] k); plane_a = pa ^ k[3:0] ^ k[11:8]; endfunction
     function [3:0] plane_b(input [15:0] k); plane_b = pb ^ k[7:4] ^ k[15:12]; endfunction
     function [41:0] plane_c(input [15:0] k); plane_c = pc ^ {k, 26'd0}; endfunction
-    // The plane of index k at the pixel (x, y): the depth the traversal steps to.
+    // The plane of index k at the pixel (x, y): the depth the traversal steps to,
+    // clamp(floor((C + A*x + B*y + 2^15) / 2^16), 0, 2^24-1). The products and sums have the operand
+    // widths and the order of the DUT's (40x11 products, 56-bit sums, (A*x + B*y) + (C + 2^15)): no
+    // term wraps, so the value is the same, and the prove task's solver sees the same terms.
     function [23:0] plane_z(input [15:0] k, input [9:0] x, input [9:0] y);
+        reg [3:0] a4, b4;
+        reg [41:0] c42;
+        reg signed [39:0] a40, b40;
+        reg signed [10:0] x11, y11;
+        reg signed [50:0] ax, by;
         reg signed [55:0] raw;
         begin
-            raw = $signed(plane_c(k)) + $signed(plane_a(k)) * $signed({1'b0, x})
-                + $signed(plane_b(k)) * $signed({1'b0, y}) + 56'sd32768;
-            if (raw < 0) plane_z = 24'd0;
-            else if (raw[55:40] != 16'd0) plane_z = FAR;
+            a4 = plane_a(k);
+            b4 = plane_b(k);
+            c42 = plane_c(k);
+            a40 = {{36{a4[3]}}, a4};
+            b40 = {{36{b4[3]}}, b4};
+            x11 = {1'b0, x};
+            y11 = {1'b0, y};
+            ax = a40 * x11;
+            by = b40 * y11;
+            raw = ({{5{ax[50]}}, ax} + {{5{by[50]}}, by}) + ({{14{c42[41]}}, c42} + 56'd32768);
+            if (raw[55]) plane_z = 24'd0;
+            else if (raw[54:40] != 15'd0) plane_z = FAR;
             else plane_z = raw[39:16];
         end
     endfunction
@@ -192,6 +209,87 @@ module rc3_tdbv_test_formal #(
     wire fwd3 = at_a && !w1 && !w2 && w3;
     wire fwd4 = at_a && !w1 && !w2 && !w3 && w4;
     wire changed = at_a && (w1 || w2 || w3 || w4) && ((f4_z < stale4) != (f4_z < z_now));
+
+    // ---- Strengthening invariants (the `prove` task's k-induction), on the stage's registers probed by
+    // their names in the generated Verilog (the .sby's `connect` lines, after `flatten`): F1..F4 are
+    // the harness's tokens; each holds the I-buffer word read for its token (`word2..4`), fresh where
+    // no write to A came after the read; F2's and F3's ownership, the TdbV read and F3's products and
+    // C follow from that word; F4's base is the word's plane at A; the write history h1..h4 is the
+    // writes of the last four edges, the newest write to A holding A's depth; A's depth is its
+    // index's plane; the result queue holds pushed - popped results (with the results still in
+    // F1..F4, at most six), the k-th from the head being result popped + k, and its `visible` is the
+    // harness's OR.
+    reg [15:0] word2 = 16'd0, word3 = 16'd0, word4 = 16'd0;
+    always @(posedge clock) begin
+        word2 <= i_rd_data; word3 <= word2; word4 <= word3;
+    end
+    wire [86:0] p_f1, p_f2, p_f3, p_f4;
+    wire [23:0] p_f4_base;
+    wire p_f2_owned, p_f3_owned;
+    wire [50:0] p_f3_ax, p_f3_by;
+    wire [55:0] p_f3_c;
+    wire p_h1_v, p_h2_v, p_h3_v, p_h4_v;
+    wire [19:0] p_h1_addr, p_h2_addr, p_h3_addr, p_h4_addr;
+    wire [23:0] p_h1_z, p_h2_z, p_h3_z, p_h4_z;
+    wire p_visible;
+    wire [19:0] p_q0, p_q1, p_q2, p_q3, p_q4, p_q5;
+    wire [2:0] p_len;
+    function frag_cov(input [86:0] t); frag_cov = t[1:0] == FRAG && t[2]; endfunction
+    function pushes(input [86:0] t); pushes = t[1:0] == RESULT || (t[1:0] == FRAG && t[3]); endfunction
+    wire [3:0] a3 = plane_a(word3);
+    wire [3:0] b3 = plane_b(word3);
+    wire [41:0] c3 = plane_c(word3);
+    wire signed [39:0] a3_40 = {{36{a3[3]}}, a3};
+    wire signed [39:0] b3_40 = {{36{b3[3]}}, b3};
+    wire signed [10:0] xa11 = {1'b0, XA};
+    wire signed [10:0] ya11 = {1'b0, YA};
+    wire signed [50:0] ax3 = a3_40 * xa11;  // the DUT's operand widths (see plane_z)
+    wire signed [50:0] by3 = b3_40 * ya11;
+    wire [7:0] in_queue = pushed - popped;
+    generate if (INDUCT) begin : invariants
+        always @(*) if (REACH < 0) begin
+            assert (p_f1 == f1 && p_f2 == f2 && p_f3 == f3 && p_f4 == f4 && p_visible == rq_vis);
+            // The contract on the tokens still holds in F1..F4.
+            if (f1[1:0] != 2'd0 && f1[23:4] == A) assert (f1[33:24] == XA && f1[43:34] == YA);
+            if (f2[1:0] != 2'd0 && f2[23:4] == A) assert (f2[33:24] == XA && f2[43:34] == YA);
+            if (f3[1:0] != 2'd0 && f3[23:4] == A) assert (f3[33:24] == XA && f3[43:34] == YA);
+            if (f4[1:0] != 2'd0 && f4[23:4] == A) assert (f4[33:24] == XA && f4[43:34] == YA);
+            if (f1[1:0] == FRAG && f1[23:4] == A) assert (f1[83:68] != 16'd0 && f1[67:44] == plane_z(f1[83:68], XA, YA));
+            if (f2[1:0] == FRAG && f2[23:4] == A) assert (f2[83:68] != 16'd0 && f2[67:44] == plane_z(f2[83:68], XA, YA));
+            if (f3[1:0] == FRAG && f3[23:4] == A) assert (f3[83:68] != 16'd0 && f3[67:44] == plane_z(f3[83:68], XA, YA));
+            if (f4[1:0] == FRAG && f4[23:4] == A) assert (f4[83:68] != 16'd0 && f4[67:44] == plane_z(f4[83:68], XA, YA));
+            // The I-buffer words and what each stage made of its word.
+            if (past_valid && frag_cov(f1) && f1[23:4] == A && !w1) assert (i_rd_data == i_now);
+            if (frag_cov(f2) && f2[23:4] == A && !w1 && !w2) assert (word2 == i_now);
+            if (frag_cov(f3) && f3[23:4] == A && !w1 && !w2 && !w3) assert (word3 == i_now);
+            if (frag_cov(f4) && f4[23:4] == A && !w1 && !w2 && !w3 && !w4) assert (word4 == i_now);
+            assert (p_f2_owned == (frag_cov(f2) && word2 != 16'd0) && read_q == p_f2_owned);
+            assert (read_k == (read_q ? word2 : 16'd0));
+            assert (p_f3_owned == (frag_cov(f3) && word3 != 16'd0));
+            if (p_f3_owned && f3[23:4] == A)
+                assert (p_f3_ax == ax3 && p_f3_by == by3 && p_f3_c == {{14{c3[41]}}, c3});
+            if (frag_cov(f4) && f4[23:4] == A)
+                assert (p_f4_base == (word4 == 16'd0 ? FAR : plane_z(word4, XA, YA)));
+            // The write history and A's words.
+            assert ((p_h1_v && p_h1_addr == A) == w1 && (p_h2_v && p_h2_addr == A) == w2);
+            assert ((p_h3_v && p_h3_addr == A) == w3 && (p_h4_v && p_h4_addr == A) == w4);
+            if (w1) assert (p_h1_z == z_a);
+            if (!w1 && w2) assert (p_h2_z == z_a);
+            if (!w1 && !w2 && w3) assert (p_h3_z == z_a);
+            if (!w1 && !w2 && !w3 && w4) assert (p_h4_z == z_a);
+            if (w1 || w2 || w3 || w4) assert (written);
+            if (written) assert (z_a == (i_a == 16'd0 ? FAR : plane_z(i_a, XA, YA)));
+            // The result queue.
+            assert ({5'd0, p_len} == in_queue);
+            assert (in_queue + {7'd0, pushes(f1)} + {7'd0, pushes(f2)} + {7'd0, pushes(f3)} + {7'd0, pushes(f4)} <= 8'd6);
+            if (p_len > 3'd0 && popped == tracked) assert (p_q0 == tracked_result);
+            if (p_len > 3'd1 && popped + 8'd1 == tracked) assert (p_q1 == tracked_result);
+            if (p_len > 3'd2 && popped + 8'd2 == tracked) assert (p_q2 == tracked_result);
+            if (p_len > 3'd3 && popped + 8'd3 == tracked) assert (p_q3 == tracked_result);
+            if (p_len > 3'd4 && popped + 8'd4 == tracked) assert (p_q4 == tracked_result);
+            if (p_len > 3'd5 && popped + 8'd5 == tracked) assert (p_q5 == tracked_result);
+        end
+    end endgenerate
     `STALL_REACH(result_valid, result_ready, 7)
     always @(posedge clock) if (past_valid) begin
         cover (fwd1 && !last1);
