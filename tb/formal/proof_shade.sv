@@ -64,7 +64,7 @@ module proof_shade_formal #(
     end
 
     // Strengthening invariants (the `prove` task's k-induction): the pipeline's ten registers, probed
-    // by their names in the generated Verilog (the .sby's `connect -set` lines, after `flatten`), hold
+    // by their names in the generated Verilog (the .sby's `connect` lines, after `flatten`), hold
     // exactly the slots in flight, oldest at the output: register j holds slot number
     // slots_out + (valid registers after j), and the tracked slot's kept fields where that number is
     // `tracked`. ShadeWork: valid 0, the kept fields 87:1 (x, y, last, has_entry, id, full, d0..d2).
