@@ -49,7 +49,7 @@
 //! port input: |det| < 2^41 (44-bit divisor), |numerator| < 2^37 (38 bits), |n*mant| < 2^61,
 //! |A*(128-x0)| < 2^59: the 64-bit products and sums never wrap. All payload outputs are 0 while their enable is low.
 
-use crate::common::{signed_bit_cast_safe, DivStep45, LeadingOne44, MulS, StreamIn};
+use crate::common::{signed_bit_cast_safe, DivStep45, LeadingOne44, MulSplitS, StreamIn};
 use crate::cs::plane_round::PlaneRound;
 use crate::cs::{SetupCommand, TdbsRecord};
 use rust_hdl::prelude::*;
@@ -151,9 +151,9 @@ pub struct ColourSetup {
     opc_o: [DFF<Signed<21>>; 2],
     pc: [DFF<Signed<64>>; 2],
     lead: LeadingOne44,
-    mn: [MulS<21, 21, 42>; 4],
-    mab: [MulS<40, 26, 64>; 2],
-    mc: [MulS<40, 21, 64>; 2],
+    mn: [MulSplitS<21, 21, 42, 3, 3>; 4],
+    mab: [MulSplitS<40, 26, 64, 4, 0>; 2],
+    mc: [MulSplitS<40, 21, 64, 0, 3>; 2],
     round: [PlaneRound; 2],
     /// One division step per station 2..=8 (`step[k]` steps station k + 2).
     step: [DivStep45; 7],

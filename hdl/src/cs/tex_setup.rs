@@ -26,7 +26,7 @@
 //! numerators 17 cycles longer, more flip-flops than the pipelined divider costs. The command's
 //! stations (4 x 433 bits) are most of the block's flip-flops.
 
-use crate::common::{signed_bit_cast_safe, MulS, StreamIn};
+use crate::common::{signed_bit_cast_safe, MulSplitS, StreamIn};
 use crate::cs::plane_round::PlaneRoundWide;
 use crate::cs::{TdbtRecord, TexSetupCommand, TexValues};
 use crate::rc::reciprocal::Reciprocal;
@@ -92,12 +92,12 @@ pub struct TexSetup {
     rt_c: DFF<Bits<56>>,
     idx5: DFF<Bits<16>>,
     idx6: DFF<Bits<16>>,
-    md: [MulS<21, 21, 42>; 2],
+    md: [MulSplitS<21, 21, 42, 3, 3>; 2],
     recip: Reciprocal,
-    mn: [MulS<34, 21, 55>; 4],
-    mab: [MulS<55, 26, 80>; 2],
+    mn: [MulSplitS<34, 21, 55, 0, 3>; 4],
+    mab: [MulSplitS<55, 26, 80, 3, 0>; 2],
     round: [PlaneRoundWide; 2],
-    mc: [MulS<40, 21, 61>; 2],
+    mc: [MulSplitS<40, 21, 61, 0, 3>; 2],
     ready: Signal<Local, Bit>,
     accept: Signal<Local, Bit>,
     ax0: Signal<Local, Signed<20>>,

@@ -50,7 +50,7 @@
 
 use super::reciprocal::Reciprocal;
 use super::RcCommand;
-use crate::common::{signed_bit_cast_safe, MulS, StreamIn};
+use crate::common::{signed_bit_cast_safe, MulS, MulSplitS, StreamIn};
 use rust_hdl::prelude::*;
 
 /// Record kinds handed to the traversal.
@@ -151,18 +151,18 @@ pub struct Setup {
     // Children
     recip: Reciprocal,
     /// S0: det's two products.
-    mul_d0: MulS<21, 21, 42>,
-    mul_d1: MulS<21, 21, 42>,
+    mul_d0: MulSplitS<21, 21, 42, 3, 3>,
+    mul_d1: MulSplitS<21, 21, 42, 3, 3>,
     /// S2: two dot units, a0*b0 - a1*b1 and c0*d0 - c1*d1.
-    mul_a0: MulS<25, 21, 46>,
-    mul_a1: MulS<25, 21, 46>,
-    mul_b0: MulS<25, 21, 46>,
-    mul_b1: MulS<25, 21, 46>,
+    mul_a0: MulSplitS<25, 21, 46, 0, 3>,
+    mul_a1: MulSplitS<25, 21, 46, 0, 3>,
+    mul_b0: MulSplitS<25, 21, 46, 0, 3>,
+    mul_b1: MulSplitS<25, 21, 46, 0, 3>,
     /// S5: the gradients.
     mul_g: MulS<47, 26, 73>,
     /// S6: the plane's two products per cycle.
-    mul_p: MulS<40, 21, 61>,
-    mul_q: MulS<40, 21, 61>,
+    mul_p: MulSplitS<40, 21, 61, 0, 3>,
+    mul_q: MulSplitS<40, 21, 61, 0, 3>,
 
     // S0 `Det`: the command.
     s0_v: DFF<Bit>,

@@ -257,8 +257,17 @@ mod tests {
     fn the_texture_setup_bench_fails_when_the_model_gets_another_command() {
         let (mut rng, seed) = seeded("tex_setup_broken", 0x7E5E);
         let cmds = random_commands(40, &mut rng);
+        // Command 17 or the first after it whose record a changed 1/w at vertex 1 changes (a saturated
+        // or zero-area record may not change).
+        let k = (17..cmds.len())
+            .find(|&k| {
+                let mut w = cmds[k];
+                w.values[1][2] += 1;
+                w.record() != cmds[k].record()
+            })
+            .expect("a command whose record depends on vertex 1's 1/w");
         let mut wrong = cmds.clone();
-        wrong[17].values[1][2] += 1;
+        wrong[k].values[1][2] += 1;
         let e = run("tex_setup_broken", &cmds, &wrong, 30, seed, false).unwrap_err();
         assert!(e.contains("port tdbt_write_data"), "{e}");
     }
@@ -274,10 +283,10 @@ mod tests {
         let v = hdl::cs::tex_setup::verilog().unwrap();
         let r = replay_iverilog(&v, "tex_setup", &rec, &scratch_dir("cs/tex_setup_replay")).unwrap();
         println!("tex_setup Verilog (iverilog): {} cycles replayed in {:.2} s, 0 mismatches", r.cycles, r.seconds);
-        // C's rounding (+8 before >> 4) made 0: the replay must fail.
-        let half = "localparam signed [63:0] k8_64 = 64'h8;";
+        // C's rounding (+128 before >> 8) made 0: the replay must fail.
+        let half = "localparam signed [63:0] k128_64 = 64'h80;";
         assert!(v.contains(half), "the rounding constant `{half}` is not in the Verilog");
-        let e = replay_iverilog(&v.replacen(half, "localparam signed [63:0] k8_64 = 64'h0;", 1), "tex_setup", &rec, &scratch_dir("cs/tex_setup_replay_broken")).unwrap_err();
+        let e = replay_iverilog(&v.replacen(half, "localparam signed [63:0] k128_64 = 64'h0;", 1), "tex_setup", &rec, &scratch_dir("cs/tex_setup_replay_broken")).unwrap_err();
         assert!(e.contains("port tdbt_write_data"), "{e}");
     }
 

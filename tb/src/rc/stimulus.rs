@@ -505,9 +505,11 @@ mod construction_tests {
     #[test]
     fn a_long_skip_edge_triangle_makes_a_long_skip_test_within_its_band_and_random_ones_rarely_do() {
         let screen = hand_made_screen();
-        let tris = long_skip_edge_triangles(&mut Rng::new(0x5c1b), screen, 40, 128);
+        // 128 square sixteenths of a pixel, in the edge values' unit (subpixel^2): 128 U^2.
+        let band = 128 * (U * U) as i64;
+        let tris = long_skip_edge_triangles(&mut Rng::new(0x5c1b), screen, 40, band);
         assert_eq!(tris.len(), 40);
-        let marginal = |t: &RcCmd| golden::raster::setup(&t.v, t.cull, t.front, screen).is_ok_and(|st| has_marginal_long_skip(&st, 128));
+        let marginal = |t: &RcCmd| golden::raster::setup(&t.v, t.cull, t.front, screen).is_ok_and(|st| has_marginal_long_skip(&st, band));
         assert!(tris.iter().all(marginal));
         let plain = random_triangles(&mut Rng::new(0x5c1b), screen, 40).iter().filter(|t| marginal(t)).count();
         assert!(plain < 10, "{plain} of 40 random triangles");
@@ -540,7 +542,7 @@ mod construction_tests {
             assert_eq!(tris.len(), 40, "band {band}");
             for t in &tris {
                 let st = golden::raster::setup(&t.v, t.cull, t.front, screen).expect("drawn");
-                assert!(st.det.abs() < 64, "triangle {}: det {}", t.index, st.det);
+                assert!(st.det.abs() < 64 * (U * U) as i64, "triangle {}: det {}", t.index, st.det);
                 assert!(plane_moved_by_band_changes_a_depth(&st, band), "band {band}: triangle {} does not sit on a rounding edge", t.index);
             }
         }
