@@ -559,7 +559,7 @@ enum Stim {
 fn stimulus(kind: Stim, n: usize) -> (Vec<golden::render::RcCommand>, golden::raster::CullMode, golden::raster::FrontFace) {
     use golden::format::WinVertex;
     use golden::raster::{CullMode, FrontFace};
-    let v = |x: i32, y: i32| WinVertex { x: x * 16, y: y * 16, z: 100 };
+    let v = |x: i32, y: i32| WinVertex { x: x * golden::format::SUBPIXEL_ONE, y: y * golden::format::SUBPIXEL_ONE, z: 100 };
     let (tri, cull, front) = match kind {
         Stim::Drawn => ([v(2, 2), v(3, 2), v(2, 3)], CullMode::None, FrontFace::Ccw),
         Stim::Culled => ([v(2, 2), v(2, 12), v(12, 2)], CullMode::Back, FrontFace::Cw),

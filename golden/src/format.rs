@@ -6,10 +6,10 @@
 //!
 //! | quantity | format | bits | why |
 //! |---|---|---|---|
-//! | window x, y | signed fixed point S11.4 | 16 | 4 subpixel bits (the issue's minimum). Screen up to 1024x1024 with a guard band of one screen on each side: x in [-W, 2W) px = [-16384, 32768) subpixels, which is exactly an `i16`: one 16x16 multiplier operand. |
-//! | edge delta dx, dy | signed, subpixels | 17 | difference of two S11.4 values in the guard band: up to 3W*16 = 49152 |
-//! | edge function E | signed, subpixel^2 | 36 | `dx*dy` products of 17-bit operands plus one add: < 2^34 in magnitude; 36 bits leave headroom for the incremental stepping inside the clamped bounding box |
-//! | twice the area `det` | signed, subpixel^2 | 36 | same arithmetic as E |
+//! | window x, y | signed fixed point S11.8 | 20 | 8 subpixel bits (as Direct3D 10 and later require, and llvmpipe uses). Screen up to 1024x1024 with a guard band of one screen on each side: x in [-W, 2W) px = [-262144, 524288) subpixels, which fits an `i20` (its top is the `i20`'s). |
+//! | edge delta dx, dy | signed, subpixels | 21 | difference of two S11.8 values in the guard band: up to 3W*256 = 786432 |
+//! | edge function E | signed, subpixel^2 | 44 | `dx*dy` products of 21-bit operands plus one add: < 2^42 in magnitude; 44 bits leave headroom for the incremental stepping inside the clamped bounding box |
+//! | twice the area `det` | signed, subpixel^2 | 44 | same arithmetic as E |
 //! | depth | unsigned | 24 | the issue prefers 24 bits; 0 = near plane, 2^24-1 = far plane and the clear value |
 //! | colour | RGB888 | 3x8 | |
 //! | normal component (Phong) | signed Q1.14 | 16 | a unit vector's component in [-1, 1] with 14 fraction bits: a 16x16 multiplier operand |
@@ -21,12 +21,17 @@
 //! Coordinates use the top-left rule and pixel centres at (X + 0.5, Y + 0.5); image row 0 is at the top
 //! (window y grows downwards).
 
-/// Subpixel bits of window coordinates (S11.4).
-pub const SUBPIXEL_BITS: u32 = 4;
+/// Subpixel bits of window coordinates (S11.8).
+pub const SUBPIXEL_BITS: u32 = 8;
 /// One pixel in subpixel units.
 pub const SUBPIXEL_ONE: i32 = 1 << SUBPIXEL_BITS;
 /// Half a pixel in subpixel units: the pixel centre offset.
 pub const SUBPIXEL_HALF: i32 = SUBPIXEL_ONE / 2;
+/// Bits of a window coordinate on the ports (S11.8): [-2^19, 2^19) subpixels, the guard band of
+/// the largest screen.
+pub const WINDOW_BITS: u32 = 12 + SUBPIXEL_BITS;
+pub const WINDOW_MIN: i32 = -(1 << (WINDOW_BITS - 1));
+pub const WINDOW_MAX: i32 = (1 << (WINDOW_BITS - 1)) - 1;
 
 /// Largest supported screen width or height in pixels (the RTL's 10-bit pixel counters).
 pub const MAX_SCREEN: u32 = 1024;
@@ -134,7 +139,7 @@ pub fn max_index(index_bits: u32) -> u32 {
     ((1u64 << index_bits) - 1) as u32
 }
 
-/// A vertex in window coordinates: x, y in S11.4 subpixels (row 0 at the top), depth in 24 bits.
+/// A vertex in window coordinates: x, y in S11.8 subpixels (row 0 at the top), depth in 24 bits.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Default, serde::Serialize)]
 pub struct WinVertex {
     pub x: i32,
@@ -197,9 +202,9 @@ pub fn reciprocal(det: i64) -> Recip {
 /// with X, Y integer pixel coordinates: how TdbS stores colour, depth and normal planes.
 ///
 /// Setup (seed 001 eqs. 6-7, with Ka the reciprocal of twice the area):
-/// `A = 16 * (dv10*dy20 - dv20*dy10) / det`, `B = 16 * (dv20*dx10 - dv10*dx20) / det` (per pixel; the 16
-/// converts from subpixels), both rounded to 16 fraction bits and saturated to 40 bits; then
-/// `C = v0 + A*(8 - x0)/16 + B*(8 - y0)/16` so that the plane passes through vertex 0 (rounded, 56 bits).
+/// `A = 256 * (dv10*dy20 - dv20*dy10) / det`, `B = 256 * (dv20*dx10 - dv10*dx20) / det` (per pixel; the
+/// 256 converts from subpixels), both rounded to 16 fraction bits and saturated to 40 bits; then
+/// `C = v0 + A*(128 - x0)/256 + B*(128 - y0)/256` so that the plane passes through vertex 0 (rounded, 56 bits).
 ///
 /// Accuracy: for a triangle inside 640x480 with gradients below 2^12 LSB/pixel (every triangle at least
 /// 1/16 pixel high), the error of v at any pixel is at most
@@ -228,7 +233,7 @@ impl Plane {
         let na = dv10 * dy20 - dv20 * dy10;
         let nb = dv20 * dx10 - dv10 * dx20;
         let _ = det;
-        // A = na * 16 * 2^16 / det = na * r * 2^(20 - s - 24): shift right by s + 4.
+        // A = na * 256 * 2^16 / det = na * r * 2^(24 - s - 24): shift right by s.
         let sh = r.shift + RECIP_BITS - (PLANE_FRAC + SUBPIXEL_BITS);
         let a = saturate(round_shift(na * r.mant as i128, sh), PLANE_AB_BITS);
         let b = saturate(round_shift(nb * r.mant as i128, sh), PLANE_AB_BITS);
@@ -259,7 +264,7 @@ mod tests {
 
     #[test]
     fn reciprocal_is_floor_of_two_to_the_s_plus_24_over_det() {
-        for det in [1i64, 2, 3, 5, 7, 255, 256, 1000, 65535, 65536, 123456789, (1 << 34) - 1] {
+        for det in [1i64, 2, 3, 5, 7, 255, 256, 1000, 65535, 65536, 123456789, (1 << 34) - 1, (1 << 42) - 1] {
             let r = reciprocal(det);
             let exact = (1u128 << (r.shift + RECIP_BITS)) / det as u128;
             assert_eq!(r.mant as u128, exact, "det {det}");
@@ -270,7 +275,7 @@ mod tests {
     /// The error bound of the RC's reciprocal (pipelined in the RTL, one station per three steps):
     /// `0 <= 1/det - mant * 2^-(s+24) < 2^-(s+24)`, i.e. the quotient is the exact floor, relative error
     /// below 2^-23. Checked for every det below 2^20, at both sides of every power of two up to the
-    /// port's 2^36, and on 200 000 random values over the whole range.
+    /// port's 2^44, and on 200 000 random values over the whole range.
     #[test]
     fn reciprocal_is_the_exact_floor_over_the_whole_input_range() {
         let check = |det: i64| {
@@ -283,10 +288,10 @@ mod tests {
             assert!(p <= 1u128 << (s + RECIP_BITS) && p + det as u128 > 1u128 << (s + RECIP_BITS), "det {det}");
         };
         (1..1i64 << 20).for_each(check);
-        for k in 1..36 {
+        for k in 1..44 {
             for d in -3i64..=3 {
                 let det = (1i64 << k) + d;
-                if det > 0 && det < 1 << 36 {
+                if det > 0 && det < 1 << 44 {
                     check(det);
                 }
             }
@@ -296,7 +301,7 @@ mod tests {
             x ^= x << 13;
             x ^= x >> 7;
             x ^= x << 17;
-            check(1 + (x % ((1 << 36) - 1)) as i64);
+            check(1 + (x % ((1 << 44) - 1)) as i64);
         }
     }
 
@@ -333,9 +338,10 @@ mod tests {
     }
 
     #[test]
-    fn guard_band_fits_sixteen_bit_coordinates() {
+    fn guard_band_fits_the_window_format() {
         let s = Screen::new(MAX_SCREEN, MAX_SCREEN).unwrap();
         let (lo, hi) = s.guard_x();
-        assert!(lo >= i16::MIN as i32 && hi - 1 <= i16::MAX as i32);
+        assert!(lo >= WINDOW_MIN && hi - 1 <= WINDOW_MAX);
+        assert_eq!(hi - 1, WINDOW_MAX, "the guard band of the largest screen reaches the top of the format");
     }
 }

@@ -1,7 +1,7 @@
 //! The host side of seed 001's dual pipeline: what the embedded CPU does before and after the chipset.
 //!
 //! Upper pipeline (every triangle): viewing transform and perspective of the vertices, clipping in
-//! homogeneous space against the near and far planes (and the guard band), viewport to S11.4 window
+//! homogeneous space against the near and far planes (and the guard band), viewport to S11.8 window
 //! coordinates. Lower pipeline (only triangles the RC flagged visible: *enhanced deferred lighting*,
 //! seed 001 §3.2): viewing transform of the normals and Phong lighting per vertex.
 //!

@@ -4,12 +4,12 @@
 //! * Back-face culling by the sign of Pineda's determinant (seed 001 §2.3.1). Window y grows down,
 //!   so a triangle that looks counter-clockwise on the screen has `det < 0`.
 //! * Edge functions (seed 001 eq. 5) `E(p) = dx*(p.y - a.y) - dy*(p.x - a.x)` for each edge a->b of the
-//!   triangle in the order with `det > 0`, at pixel centres `p = (16X+8, 16Y+8)` in subpixels: integers.
+//!   triangle in the order with `det > 0`, at pixel centres `p = (256X+128, 256Y+128)` in subpixels: integers.
 //! * Top-left fill rule: a centre exactly on an edge belongs to the triangle only if the edge is a top
 //!   edge (`dy == 0 && dx > 0`) or a left edge (`dy < 0`). The RTL folds this into the edge constant:
 //!   inside iff `E - bias >= 0` for all three edges, bias 0 on top-left edges and 1 elsewhere.
 //! * Bounding box: the pixels whose centres lie within the vertices' extent,
-//!   `X in [(xmin+7)>>4, (xmax-8)>>4]`, clamped to the screen.
+//!   `X in [(xmin+127)>>8, (xmax-128)>>8]`, clamped to the screen.
 //! * Depth: a [`Plane`] through the three vertex depths (one reciprocal per triangle), clamped to
 //!   0..=2^24-1. Z-test "less": of equal depths the first drawn wins. The Z-buffer is cleared to the far
 //!   value, the I-buffer to 0 (background). On a pass both are written.
@@ -20,7 +20,9 @@
 //!   (`raw = C + A*X + B*Y`), so the regenerated depth is the depth Type IV would have stored and the
 //!   two types draw the same I-buffer, bit for bit, whenever every triangle of a frame has its own index.
 
-use crate::format::{reciprocal, Plane, Recip, Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND, SUBPIXEL_HALF};
+use crate::format::{
+    reciprocal, Plane, Recip, Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND, SUBPIXEL_BITS, SUBPIXEL_HALF, SUBPIXEL_ONE,
+};
 
 /// Seed 000's index-rendering architecture the RC implements: where the old depth of a pixel comes from.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Default, serde::Serialize)]
@@ -84,9 +86,10 @@ impl Edge {
         let dy = (b.y - a.y) as i64;
         let top_left = dy < 0 || (dy == 0 && dx > 0);
         let h = SUBPIXEL_HALF as i64;
-        // E(16X+8, 16Y+8) = dx*(16Y + 8 - a.y) - dy*(16X + 8 - a.x)
+        let one = SUBPIXEL_ONE as i64;
+        // E(256X+128, 256Y+128) = dx*(256Y + 128 - a.y) - dy*(256X + 128 - a.x)
         let c = dx * (h - a.y as i64) - dy * (h - a.x as i64) - if top_left { 0 } else { 1 };
-        Edge { step_x: -16 * dy, step_y: 16 * dx, c, top_left }
+        Edge { step_x: -one * dy, step_y: one * dx, c, top_left }
     }
     pub fn at(&self, x: i64, y: i64) -> i64 {
         self.c + self.step_x * x + self.step_y * y
@@ -177,10 +180,10 @@ pub fn setup(tri: &[WinVertex; 3], cull: CullMode, front: FrontFace, screen: Scr
     let ymin = v.iter().map(|p| p.y).min().unwrap();
     let ymax = v.iter().map(|p| p.y).max().unwrap();
     let bbox = BBox {
-        x0: ((xmin + 7) >> 4).max(0),
-        y0: ((ymin + 7) >> 4).max(0),
-        x1: ((xmax - 8) >> 4).min(screen.width as i32 - 1),
-        y1: ((ymax - 8) >> 4).min(screen.height as i32 - 1),
+        x0: ((xmin + SUBPIXEL_HALF - 1) >> SUBPIXEL_BITS).max(0),
+        y0: ((ymin + SUBPIXEL_HALF - 1) >> SUBPIXEL_BITS).max(0),
+        x1: ((xmax - SUBPIXEL_HALF) >> SUBPIXEL_BITS).min(screen.width as i32 - 1),
+        y1: ((ymax - SUBPIXEL_HALF) >> SUBPIXEL_BITS).min(screen.height as i32 - 1),
     };
     let depth = Plane::setup(&v, [v[0].z as i64, v[1].z as i64, v[2].z as i64], det, recip);
     Ok(Setup { v, det, recip, edges, bbox, depth })
@@ -367,7 +370,7 @@ mod tests {
     use super::*;
 
     fn v(x: i32, y: i32, z: u32) -> WinVertex {
-        WinVertex { x: x * 16, y: y * 16, z }
+        WinVertex { x: x * SUBPIXEL_ONE, y: y * SUBPIXEL_ONE, z }
     }
 
     #[test]

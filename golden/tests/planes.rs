@@ -1,14 +1,14 @@
 //! Colour planes evaluated in fixed point stay within 1 LSB of exact (f64) evaluation of the plane
 //! through the three vertex colours, for triangles inside 640x480 (format.rs states the bound).
 
-use golden::format::WinVertex;
+use golden::format::{WinVertex, SUBPIXEL_ONE as ONE};
 use golden::raster::{setup, CullMode, FrontFace};
 use golden::shade::colour_setup;
 use golden::format::Screen;
 use proptest::prelude::*;
 
 fn exact(v: &[WinVertex; 3], c: [f64; 3], x: f64, y: f64) -> f64 {
-    let p: Vec<(f64, f64)> = v.iter().map(|q| (q.x as f64 / 16.0, q.y as f64 / 16.0)).collect();
+    let p: Vec<(f64, f64)> = v.iter().map(|q| (q.x as f64 / ONE as f64, q.y as f64 / ONE as f64)).collect();
     let d = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
     // Barycentric weights of (x, y).
     let w1 = ((x - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (y - p[0].1)) / d;
@@ -21,7 +21,7 @@ proptest! {
 
     #[test]
     fn colour_planes_are_within_one_lsb_of_exact_evaluation(
-        p in proptest::collection::vec((0i32..640 * 16, 0i32..480 * 16), 3),
+        p in proptest::collection::vec((0i32..640 * ONE, 0i32..480 * ONE), 3),
         col in proptest::collection::vec((0i64..256, 0i64..256, 0i64..256), 3)) {
         let screen = Screen::new(640, 480).unwrap();
         let v = [0, 1, 2].map(|k| WinVertex { x: p[k].0, y: p[k].1, z: 0 });
@@ -53,7 +53,7 @@ proptest! {
 #[test]
 fn a_full_screen_gradient_triangle_is_exact_to_one_lsb_everywhere() {
     let screen = Screen::new(640, 480).unwrap();
-    let v = [WinVertex { x: 0, y: 0, z: 0 }, WinVertex { x: 640 * 16, y: 0, z: 0 }, WinVertex { x: 0, y: 480 * 16, z: 0 }];
+    let v = [WinVertex { x: 0, y: 0, z: 0 }, WinVertex { x: 640 * ONE, y: 0, z: 0 }, WinVertex { x: 0, y: 480 * ONE, z: 0 }];
     let vals = [[0, 255, 17], [255, 0, 200], [128, 3, 255]];
     let e = colour_setup(&v, vals, 0);
     let s = setup(&v, CullMode::None, FrontFace::Ccw, screen).unwrap();

@@ -2,7 +2,7 @@
 //! a point-in-triangle test with the same top-left fill rule, written without edge stepping, biasing or
 //! bounding-box arithmetic. Coverage must be identical.
 
-use golden::format::{Screen, WinVertex};
+use golden::format::{Screen, WinVertex, SUBPIXEL_ONE as ONE};
 use golden::host::Camera;
 use golden::raster::{det, setup, CullMode, FrontFace};
 use golden::render::{render, RenderOptions};
@@ -13,7 +13,7 @@ use proptest::prelude::*;
 /// Inside test in floating point: vertices in pixels, centre (X+0.5, Y+0.5), edges of the clockwise
 /// (on screen, y down) order; a centre on an edge counts only for top or left edges.
 fn oracle_inside(v: &[WinVertex; 3], x: i32, y: i32) -> bool {
-    let p: Vec<(f64, f64)> = v.iter().map(|q| (q.x as f64 / 16.0, q.y as f64 / 16.0)).collect();
+    let p: Vec<(f64, f64)> = v.iter().map(|q| (q.x as f64 / ONE as f64, q.y as f64 / ONE as f64)).collect();
     let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
     if area == 0.0 {
         return false;
@@ -33,10 +33,10 @@ fn oracle_inside(v: &[WinVertex; 3], x: i32, y: i32) -> bool {
 /// Compare coverage of one triangle over its float extent (plus a margin) clipped to the screen.
 fn check_triangle(v: &[WinVertex; 3], screen: Screen) -> Result<(), String> {
     let s = setup(v, CullMode::None, FrontFace::Ccw, screen);
-    let lo_x = (v.iter().map(|q| q.x).min().unwrap() / 16 - 2).max(0);
-    let hi_x = (v.iter().map(|q| q.x).max().unwrap() / 16 + 2).min(screen.width as i32 - 1);
-    let lo_y = (v.iter().map(|q| q.y).min().unwrap() / 16 - 2).max(0);
-    let hi_y = (v.iter().map(|q| q.y).max().unwrap() / 16 + 2).min(screen.height as i32 - 1);
+    let lo_x = (v.iter().map(|q| q.x).min().unwrap() / ONE - 2).max(0);
+    let hi_x = (v.iter().map(|q| q.x).max().unwrap() / ONE + 2).min(screen.width as i32 - 1);
+    let lo_y = (v.iter().map(|q| q.y).min().unwrap() / ONE - 2).max(0);
+    let hi_y = (v.iter().map(|q| q.y).max().unwrap() / ONE + 2).min(screen.height as i32 - 1);
     for y in lo_y..=hi_y {
         for x in lo_x..=hi_x {
             let want = oracle_inside(v, x, y);
@@ -57,7 +57,7 @@ fn vertex(screen: Screen) -> impl Strategy<Value = WinVertex> {
     let (y0, y1) = screen.guard_y();
     // Mostly near the screen (so triangles cover pixels), sometimes anywhere in the guard band.
     prop_oneof![
-        3 => (-32i32..(screen.width as i32 + 32) * 16, -32i32..(screen.height as i32 + 32) * 16, 0u32..1 << 24)
+        3 => (-2 * ONE..(screen.width as i32 + 2) * ONE, -2 * ONE..(screen.height as i32 + 2) * ONE, 0u32..1 << 24)
             .prop_map(|(x, y, z)| WinVertex { x, y, z }),
         1 => (x0..x1, y0..y1, 0u32..1 << 24).prop_map(|(x, y, z)| WinVertex { x, y, z }),
     ]
@@ -76,10 +76,10 @@ proptest! {
 
     #[test]
     fn small_triangles_on_the_pixel_grid_cover_exactly_the_oracle_pixels(
-        p in proptest::collection::vec((0i32..8 * 16, 0i32..8 * 16), 3)) {
-        // Vertices on a fine grid near few pixels: many centres fall exactly on edges and corners.
+        p in proptest::collection::vec((0i32..8 * ONE, 0i32..8 * ONE), 3)) {
+        // Vertices on a quarter-pixel grid near few pixels: many centres fall exactly on edges and corners.
         let screen = Screen::new(8, 8).unwrap();
-        let v = [0, 1, 2].map(|k| WinVertex { x: p[k].0 / 4 * 4, y: p[k].1 / 4 * 4, z: 0 });
+        let v = [0, 1, 2].map(|k| WinVertex { x: p[k].0 / (ONE / 4) * (ONE / 4), y: p[k].1 / (ONE / 4) * (ONE / 4), z: 0 });
         prop_assert!(check_triangle(&v, screen).is_ok(), "{}", check_triangle(&v, screen).unwrap_err());
     }
 }

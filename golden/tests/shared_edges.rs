@@ -1,7 +1,7 @@
 //! On closed and tiled meshes, shared edges are covered exactly once: every pixel centre inside the
 //! covered region belongs to exactly one triangle (no gaps, no double hits).
 
-use golden::format::{Screen, WinVertex};
+use golden::format::{Screen, WinVertex, SUBPIXEL_ONE as ONE};
 use golden::raster::{setup, CullMode, FrontFace};
 use proptest::prelude::*;
 
@@ -55,10 +55,10 @@ proptest! {
 
     #[test]
     fn shared_edge_pixels_of_a_tiled_rectangle_are_drawn_once(
-        jitter in proptest::collection::vec((-20i32..=20, -20i32..=20), 49)) {
+        jitter in proptest::collection::vec((-20 * ONE / 16..=20 * ONE / 16, -20 * ONE / 16..=20 * ONE / 16), 49)) {
         let screen = Screen::new(64, 64).unwrap();
         // 6x6 cells of 8 px from (4,4) px: the rectangle [4, 52) px, whose edges are on pixel boundaries.
-        let tris = jittered_grid(6, &jitter, 4 * 16, 4 * 16, 8 * 16);
+        let tris = jittered_grid(6, &jitter, 4 * ONE, 4 * ONE, 8 * ONE);
         let hits = hit_counts(&tris, screen, CullMode::None, FrontFace::Ccw);
         for y in 0..64 {
             for x in 0..64 {
@@ -76,8 +76,8 @@ fn closed_sphere_front_faces_cover_its_silhouette_once_and_back_faces_once() {
     // by back faces (the mesh is closed: each edge shared by exactly two triangles).
     let screen = Screen::new(96, 96).unwrap();
     let (rings, segs) = (12, 20);
-    let r = 40.0 * 16.0;
-    let (cx, cy) = (48.0 * 16.0 + 3.0, 48.0 * 16.0 - 5.0);
+    let r = 40.0 * ONE as f64;
+    let (cx, cy) = (48.0 * ONE as f64 + 3.0, 48.0 * ONE as f64 - 5.0);
     let mut pts = Vec::new();
     for i in 0..=rings {
         let th = std::f64::consts::PI * i as f64 / rings as f64;

@@ -3,7 +3,7 @@
 //! random triangles that interpenetrate, share planes or repeat each other exactly. Where the two can
 //! differ (one index used by two triangles of a frame) the difference is shown.
 
-use golden::format::{Screen, WinVertex, DEPTH_MAX};
+use golden::format::{Screen, WinVertex, DEPTH_MAX, SUBPIXEL_ONE as ONE};
 use golden::raster::{CullMode, FrontFace, RcType, Rasterizer};
 use golden::render::{render, RenderOptions};
 use golden::scene::builtin;
@@ -55,7 +55,7 @@ fn type_iii_frames_equal_type_iv_frames_on_every_built_in_scene_at_two_sizes() {
 #[test]
 fn interpenetrating_triangles_split_the_same_pixels_in_both_types() {
     let s = Screen::new(64, 48).unwrap();
-    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16 + 3, y: y * 16 + 5, z };
+    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * ONE + 3, y: y * ONE + 5, z };
     // One leans from near (left) to far (right), the other the other way.
     let a = [v(2, 2, 1_000), v(60, 4, 9_000_000), v(4, 44, 1_000)];
     let b = [v(60, 2, 1_000), v(58, 44, 1_000), v(2, 20, 9_000_000)];
@@ -69,7 +69,7 @@ fn interpenetrating_triangles_split_the_same_pixels_in_both_types() {
 
 fn vertex(w: i32, h: i32) -> impl Strategy<Value = WinVertex> {
     // Depths from a small set make equal and coplanar depths common; some vertices off the screen.
-    (-w * 4..w * 20, -h * 4..h * 20, prop::sample::select(vec![0u32, 7, 500_000, 500_001, DEPTH_MAX / 2, DEPTH_MAX]))
+    (-w * ONE / 4..w * ONE * 5 / 4, -h * ONE / 4..h * ONE * 5 / 4, prop::sample::select(vec![0u32, 7, 500_000, 500_001, DEPTH_MAX / 2, DEPTH_MAX]))
         .prop_map(|(x, y, z)| WinVertex { x, y, z })
 }
 
@@ -107,7 +107,7 @@ proptest! {
 #[test]
 fn an_index_reused_within_a_frame_is_where_type_iii_differs() {
     let s = Screen::new(16, 16).unwrap();
-    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16, y: y * 16, z };
+    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * ONE, y: y * ONE, z };
     let near_left = [v(0, 0, 100), v(8, 0, 100), v(0, 16, 100)];
     let far_big = [v(0, 0, 9_000), v(16, 0, 9_000), v(0, 16, 9_000)];
     let mid = [v(0, 0, 5_000), v(16, 0, 5_000), v(0, 16, 5_000)];

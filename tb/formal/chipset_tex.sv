@@ -18,10 +18,10 @@ module chipset_tex_formal #(
     parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
-    input wire [189:0] rc_cmd_data,
+    input wire [213:0] rc_cmd_data,
     input wire rc_cmd_valid,
     input wire rc_result_ready,
-    input wire [296:0] setup_cmd_data,
+    input wire [320:0] setup_cmd_data,
     input wire setup_cmd_valid,
     input wire [296:0] setup_tex,
     input wire scan_start,

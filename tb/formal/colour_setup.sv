@@ -19,7 +19,7 @@ module colour_setup_formal #(
     parameter integer INDUCT = 0  // 1: assert the strengthening invariants too (the `prove` task)
 ) (
     input wire clock,
-    input wire [296:0] cmd_data,
+    input wire [320:0] cmd_data,
     input wire cmd_valid
 );
     wire cmd_ready;
@@ -79,7 +79,7 @@ module colour_setup_formal #(
     // are kept in `num` rather than counted from `tok`'s bits: z3 could not relate the bit counts
     // before and after a shift, and the induction did not finish in 5 minutes.)
     wire [40:0] p_tok;
-    wire [296:0] p_cmd1;
+    wire [320:0] p_cmd1;
     wire [15:0] p_ci0, p_ci1, p_ci2, p_ci3, p_ci4, p_ci5, p_ci6, p_ci7, p_ci8, p_ci9, p_ci10;
     wire [175:0] ci = {p_ci10, p_ci9, p_ci8, p_ci7, p_ci6, p_ci5, p_ci4, p_ci3, p_ci2, p_ci1, p_ci0};
     reg [327:0] num = 328'd0;    // at 8 p +: 8, the number of the command at tok's bit p

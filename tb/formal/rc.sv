@@ -19,7 +19,7 @@ module rc_formal #(
     parameter integer REACH_SET = 0  // bit n set: check reach point n too (the `reach` task: REACH 99, many points, one model)
 ) (
     input wire clock,
-    input wire [189:0] cmd_data,
+    input wire [213:0] cmd_data,
     input wire cmd_valid,
     input wire result_ready,
     input wire [23:0] z_rd_data,

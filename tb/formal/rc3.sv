@@ -23,7 +23,7 @@ module rc3_formal #(
                                       // and TdbV (a smaller cone: bmc reaches the first TdbV write)
 ) (
     input wire clock,
-    input wire [189:0] cmd_data,
+    input wire [213:0] cmd_data,
     input wire cmd_valid,
     input wire result_ready,
     input wire [15:0] i_rd_data,

@@ -233,3 +233,9 @@ mod tool_tests {
         assert_eq!(text, format!("skipped_test: missing {NO_SUCH_TOOL}\n"));
     }
 }
+
+/// A window coordinate (S11.8 subpixels, `golden::format::WINDOW_BITS` = 20 bits) as the port's raw
+/// two's-complement bits.
+pub fn window_bits(v: i32) -> Bits<20> {
+    (v as u32 as u64 & 0xf_ffff).into()
+}

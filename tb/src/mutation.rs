@@ -135,7 +135,7 @@ fn rc_target(dir: &Path) -> Result<Target, String> {
 }
 
 /// What [`rc_stream`] holds, after its cycle count.
-const RC_STREAM: &str = "cycles at 32x24: the hand-made cases, 6 random lists of 40 triangles, 8 lists of 80 triangles on one pixel each (fragments back to back; random, near or stepping depths; 16-bit indices), 2 lists of 40 right triangles with power-of-two determinants and 2 queue-filling lists (40 small, then 40 random triangles behind a screen-size one), 2 lists of 40 triangles with a fragment's depth within 2 and 32 units of 2^-16 of a rounding edge, 40 random triangles queued behind a far screen-size one, 2 lists of 40 wide triangles with a long-skip test within 128 and 512 of an edge, 2 lists of 40 slivers under 1/8 pixel with a fragment's depth within 2 and 8 units of a rounding edge, random gaps and stalls";
+const RC_STREAM: &str = "cycles at 32x24: the hand-made cases, 6 random lists of 40 triangles, 8 lists of 80 triangles on one pixel each (fragments back to back; random, near or stepping depths; 16-bit indices), 2 lists of 40 right triangles with power-of-two determinants and 2 queue-filling lists (40 small, then 40 random triangles behind a screen-size one), 2 lists of 40 triangles with a fragment's depth within 2 and 32 units of 2^-16 of a rounding edge, 40 random triangles queued behind a far screen-size one, 2 lists of 40 wide triangles with a long-skip test within 128 and 512 square sixteenths of a pixel of an edge, 2 lists of 40 slivers under 1/8 pixel with a fragment's depth within 2 and 8 units of a rounding edge, random gaps and stalls";
 
 /// The RCs' stream at 32x24: the hand-made cases, then six random lists of 40 triangles, then eight
 /// lists of 80 triangles on one pixel each (four with random depths, four with a staircase) ([`hazard_triangles`](crate::rc::stimulus::hazard_triangles),
@@ -151,7 +151,8 @@ const RC_STREAM: &str = "cycles at 32x24: the hand-made cases, 6 random lists of
 /// and for those in the record queue, 40 random triangles queued behind a screen-size one at the far
 /// end, so that they are visible ([`queue_filling_random_triangles_in_front`](crate::rc::stimulus::queue_filling_random_triangles_in_front)),
 /// and for those in the long skip's step multiples, two cleared frames of 40 wide triangles each
-/// with a long-skip test where an edge's value at x + 15 is negative by at most 128 and 512
+/// with a long-skip test where an edge's value at x + 15 is negative by at most 128 and 512 square
+/// sixteenths of a pixel (times 256 in S11.8's subpixel^2)
 /// ([`long_skip_edge_triangles`](crate::rc::stimulus::long_skip_edge_triangles)), and for the
 /// survivor in the gradient product's low bits, two cleared frames of 40 slivers under 1/8 pixel
 /// with a fragment's raw depth within 2 and 8 units of a rounding edge
@@ -176,7 +177,8 @@ fn rc_stream() -> (Screen, Vec<golden::cycle::rc::RcCmd>) {
         cmds.extend(frame(true, depth_rounding_edge_triangles(&mut rng, screen, 40, band)));
     }
     cmds.extend(queue_filling_random_triangles_in_front(&mut rng, screen, 40));
-    for band in [128, 512] {
+    let sixteenth_sq = (golden::format::SUBPIXEL_ONE as i64 / 16).pow(2);
+    for band in [128 * sixteenth_sq, 512 * sixteenth_sq] {
         cmds.extend(frame(true, long_skip_edge_triangles(&mut rng, screen, 40, band)));
     }
     for band in [2, 8] {

@@ -105,9 +105,10 @@ fn fragments_one_to_four_cycles_behind_a_write_to_their_pixel_see_its_depth() {
         tries += 1;
         assert!(tries < 20_000, "no stimulus found for every distance: {found:?}");
         let mut p = |lo: i64, span: i64, z: u32| WinVertex { x: (lo + rng.below(span as u64) as i64) as i32, y: (lo + rng.below(span as u64) as i64) as i32, z };
-        let big = [p(0, 16 * 12, 100), p(0, 16 * 12, 100), p(0, 16 * 12, 100)];
-        let c = p(16, 16 * 9, 200);
-        let small = [c, WinVertex { x: c.x + 40, ..c }, WinVertex { y: c.y + 20, ..c }];
+        let (one, u) = (golden::format::SUBPIXEL_ONE as i64, golden::format::SUBPIXEL_ONE / 16);
+        let big = [p(0, one * 12, 100), p(0, one * 12, 100), p(0, one * 12, 100)];
+        let c = p(one, one * 9, 200);
+        let small = [c, WinVertex { x: c.x + 40 * u, ..c }, WinVertex { y: c.y + 20 * u, ..c }];
         let Ok(a) = RcCmd::triangle(1, big, CullMode::None, FrontFace::Ccw) else { continue };
         let Ok(b) = RcCmd::triangle(2, small, CullMode::None, FrontFace::Ccw) else { continue };
         let cmds = frame(true, vec![a, b]);

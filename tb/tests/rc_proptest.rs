@@ -4,21 +4,21 @@
 //! `PROPTEST_CASES` sets the number of lists (default 64: each is a short simulation).
 
 use golden::cycle::rc::RcCmd;
-use golden::format::{Screen, WinVertex, DEPTH_MAX};
+use golden::format::{Screen, WinVertex, DEPTH_MAX, SUBPIXEL_HALF as H, SUBPIXEL_ONE as ONE};
 use golden::raster::{CullMode, FrontFace};
 use proptest::prelude::*;
 use tb::rc::bench::{run_rtl, Drive};
 use tb::rc::stimulus::{frame, reference};
 
-/// A vertex in the guard band of a 24x16 screen ([-W, 2W) x [-H, 2H) pixels, in S11.4), clustered
+/// A vertex in the guard band of a 24x16 screen ([-W, 2W) x [-H, 2H) pixels, in S11.8), clustered
 /// around the screen so that most triangles touch it; depths anywhere, the far end often.
 /// Half of the vertices sit on the half-pixel grid, so that edges run through pixel centres and the
 /// fill rule decides.
 fn vertex() -> impl Strategy<Value = WinVertex> {
     let z = || prop_oneof![0..=DEPTH_MAX, (DEPTH_MAX - 3)..=DEPTH_MAX, 1000u32..1004];
     prop_oneof![
-        (-24 * 16..48 * 16i32, -16 * 16..32 * 16i32, z()).prop_map(|(x, y, z)| WinVertex { x, y, z }),
-        (-48..96i32, -32..64i32, z()).prop_map(|(x, y, z)| WinVertex { x: 8 * x, y: 8 * y, z }),
+        (-24 * ONE..48 * ONE, -16 * ONE..32 * ONE, z()).prop_map(|(x, y, z)| WinVertex { x, y, z }),
+        (-48..96i32, -32..64i32, z()).prop_map(|(x, y, z)| WinVertex { x: H * x, y: H * y, z }),
     ]
 }
 
@@ -28,9 +28,9 @@ fn vertex() -> impl Strategy<Value = WinVertex> {
 fn triangle() -> impl Strategy<Value = ([WinVertex; 3], u8, bool)> {
     let off = || prop_oneof![Just(0i32), -6..7i32];
     let small = (0..48i32, 0..32i32, 0..=DEPTH_MAX, off(), off(), off(), off()).prop_map(|(x, y, z, dx1, dy1, dx2, dy2)| {
-        let a = WinVertex { x: 8 * x, y: 8 * y, z };
-        let b = WinVertex { x: a.x + 8 * dx1, y: a.y + 8 * dy1, z: a.z };
-        let c = WinVertex { x: a.x + 8 * dx2, y: a.y + 8 * dy2, z: a.z / 2 };
+        let a = WinVertex { x: H * x, y: H * y, z };
+        let b = WinVertex { x: a.x + H * dx1, y: a.y + H * dy1, z: a.z };
+        let c = WinVertex { x: a.x + H * dx2, y: a.y + H * dy2, z: a.z / 2 };
         [a, b, c]
     });
     let large = (vertex(), vertex(), vertex()).prop_map(|(a, b, c)| [a, b, c]);

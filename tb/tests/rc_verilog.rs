@@ -98,8 +98,8 @@ fn generated_verilog_replays_a_polyhedron_frame_under_verilator() {
 }
 
 /// Triangles with the longest edges the formats allow, on a 1024x1024 screen: vertices at both ends of
-/// the 16-bit S11.4 range (a guard band of one screen on each side), so edge deltas reach 2^16
-/// subpixels and the steps 2^20; each triangle overlaps the screen in a small box, to keep the replay
+/// the 20-bit S11.8 range (a guard band of one screen on each side), so edge deltas reach 2^20
+/// subpixels and the steps 2^28; each triangle overlaps the screen in a small box, to keep the replay
 /// short. With them, the polyhedron triangle at 640x480 that exposed a width bug in the generated
 /// Verilog (the RustHDL simulation drew its 51 812 pixels, the Verilog 2: the edge steps were shifted
 /// in 17 bits; found by `render --backend verilator --size 640x480 --scene polyhedron`). Every 320x200
@@ -113,17 +113,17 @@ fn generated_verilog_draws_triangles_with_the_longest_edges_the_formats_allow_un
     use golden::format::{WinVertex, DEPTH_MAX};
     use golden::raster::{CullMode, FrontFace};
     let screen = Screen::new(1024, 1024).unwrap();
-    let s = 16; // one pixel in subpixels
-    let (lo, hi) = (i16::MIN as i32, i16::MAX as i32);
+    let s = golden::format::SUBPIXEL_ONE; // one pixel in subpixels
+    let (lo, hi) = (golden::format::WINDOW_MIN, golden::format::WINDOW_MAX);
     let v = |x, y, z| WinVertex { x, y, z };
     let tris = [
         // The 640x480 polyhedron triangle, as it reached the RC.
-        [v(2741, 5511, 14991021), v(7906, 5538, 12643651), v(4200, 384, 11227834)],
+        [v(2741 * s / 16, 5511 * s / 16, 14991021), v(7906 * s / 16, 5538 * s / 16, 12643651), v(4200 * s / 16, 384 * s / 16, 11227834)],
         // The bottom-right corner, with two vertices at the format's positive end.
-        [v(1020 * s, 1020 * s, 0), v(hi, 1023 * s + 8, DEPTH_MAX - 1), v(1023 * s + 8, hi, 1 << 23)],
+        [v(1020 * s, 1020 * s, 0), v(hi, 1023 * s + s / 2, DEPTH_MAX - 1), v(1023 * s + s / 2, hi, 1 << 23)],
         // The top-left corner, with two vertices at the negative end.
         [v(lo, 4 * s, 77), v(4 * s, lo, DEPTH_MAX - 1), v(4 * s, 4 * s, 5)],
-        // A band across the whole x range (dx = 2^16 - 1) and one across the whole y range.
+        // A band across the whole x range (dx = 2^20 - 1) and one across the whole y range.
         [v(lo, 1000 * s, 1000), v(hi, 1010 * s, 2_000_000), v(1000 * s, 1030 * s, 9_000_000)],
         [v(1000 * s, lo, 1000), v(1010 * s, hi, 2_000_000), v(1030 * s, 1000 * s, 9_000_000)],
     ];

@@ -27,7 +27,7 @@
 //! taken, so commands are at least [`SETUP_INTERVAL`] = 4 cycles apart and up to 11 are in flight.
 //! `busy` is high while any command is between the cycle after it was taken and its write cycle.
 
-use crate::format::{Plane, WinVertex};
+use crate::format::{Plane, WinVertex, WINDOW_BITS, WINDOW_MAX, WINDOW_MIN};
 use crate::render::SetupCommand;
 use crate::shade::{colour_setup, flat_setup, TdbsEntry};
 
@@ -39,12 +39,13 @@ pub const SETUP_INTERVAL: u64 = 4;
 pub const SETUP_INDEX_BITS: u32 = 16;
 
 /// One colour-setup command as it travels on the block's input stream: the fields are the port
-/// widths (16-bit S11.4 coordinates, 16-bit signed vertex values, 16-bit index and material).
+/// widths (20-bit S11.8 coordinates, 16-bit signed vertex values, 16-bit index and material).
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
 pub struct SetupCmd {
     pub index: u16,
-    pub x: [i16; 3],
-    pub y: [i16; 3],
+    /// S11.8 subpixels, [`WINDOW_MIN`]..=[`WINDOW_MAX`] (20 bits on the port).
+    pub x: [i32; 3],
+    pub y: [i32; 3],
     /// `values[k][c]`: vertex k, channel c (RGB888 or Q1.14 normal components).
     pub values: [[i16; 3]; 3],
     pub material: u16,
@@ -63,11 +64,15 @@ impl SetupCmd {
                 (1u32 << SETUP_INDEX_BITS) - 1
             ));
         }
-        let coord = |v: i32, what: &str, k: usize| -> Result<i16, String> {
-            i16::try_from(v).map_err(|_| format!("colour setup of triangle {}: vertex {k} {what} = {v} subpixels is outside the 16-bit S11.4 range", c.index))
+        let coord = |v: i32, what: &str, k: usize| -> Result<i32, String> {
+            if (WINDOW_MIN..=WINDOW_MAX).contains(&v) {
+                Ok(v)
+            } else {
+                Err(format!("colour setup of triangle {}: vertex {k} {what} = {v} subpixels is outside the {WINDOW_BITS}-bit S11.8 range", c.index))
+            }
         };
-        let mut x = [0i16; 3];
-        let mut y = [0i16; 3];
+        let mut x = [0i32; 3];
+        let mut y = [0i32; 3];
         for k in 0..3 {
             x[k] = coord(c.v[k].x, "x", k)?;
             y[k] = coord(c.v[k].y, "y", k)?;
@@ -319,7 +324,7 @@ mod tests {
         let e = SetupCmd::from_command(&SetupCommand { index: 70000, ..good }).unwrap_err();
         assert!(e.contains("index 70000"), "{e}");
         let mut v = good.v;
-        v[2].y = 40000;
+        v[2].y = 600_000;
         let e = SetupCmd::from_command(&SetupCommand { v, ..good }).unwrap_err();
         assert!(e.contains("vertex 2 y"), "{e}");
         let mut values = good.values;

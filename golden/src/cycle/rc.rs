@@ -64,7 +64,7 @@
 //! passes; its result enters the result queue at the end of the cycle of its last candidate's
 //! z-test. The end-of-frame result is pushed after every earlier write has been performed.
 
-use crate::format::{Plane, Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND};
+use crate::format::{Plane, Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND, WINDOW_BITS, WINDOW_MAX, WINDOW_MIN};
 use crate::raster::{setup, Culled, CullMode, FrontFace, RcType, Setup};
 
 /// The setup pipeline's stages (docs/rc.md, "Setup"): `Det` determinant and bounding box; `Order`
@@ -145,15 +145,15 @@ impl RcCmd {
             v: [WinVertex::default(); 3],
         }
     }
-    /// Whether the command fits the port: x, y in S11.4 16 bits, z in 24 bits, index in 16 bits.
+    /// Whether the command fits the port: x, y in S11.8 20 bits, z in 24 bits, index in 16 bits.
     pub fn check(&self) -> Result<(), String> {
         if self.index >= 1 << INDEX_BITS {
             return Err(format!("triangle index {} does not fit the RC's {INDEX_BITS}-bit index", self.index));
         }
         for (k, p) in self.v.iter().enumerate() {
-            if p.x < i16::MIN as i32 || p.x > i16::MAX as i32 || p.y < i16::MIN as i32 || p.y > i16::MAX as i32 {
+            if p.x < WINDOW_MIN || p.x > WINDOW_MAX || p.y < WINDOW_MIN || p.y > WINDOW_MAX {
                 return Err(format!(
-                    "triangle {}: vertex {k} ({}, {}) subpixels is outside the 16-bit S11.4 window format",
+                    "triangle {}: vertex {k} ({}, {}) subpixels is outside the {WINDOW_BITS}-bit S11.8 window format",
                     self.index, p.x, p.y
                 ));
             }
@@ -721,6 +721,8 @@ impl RcModel {
 mod tests {
     use super::*;
 
+    const ONE: i32 = crate::format::SUBPIXEL_ONE;
+
     fn v(x: i32, y: i32, z: u32) -> WinVertex {
         WinVertex { x, y, z }
     }
@@ -763,7 +765,7 @@ mod tests {
         let mut m = RcModel::new(screen);
         // A 4x4-pixel box, clockwise (det > 0), drawn with CullMode::None. Pixels whose centres are
         // inside: X + Y < 4 with the diagonal excluded (not top-left) -> rows of 3, 2, 1 and 0.
-        let t = RcCmd::triangle(7, [v(0, 0, 10), v(64, 0, 10), v(0, 64, 10)], CullMode::None, FrontFace::Ccw).unwrap();
+        let t = RcCmd::triangle(7, [v(0, 0, 10), v(4 * ONE, 0, 10), v(0, 4 * ONE, 10)], CullMode::None, FrontFace::Ccw).unwrap();
         let (mut z, mut i) = (vec![DEPTH_MAX; 256], vec![0; 256]);
         let (res, _) = run(&mut m, &[t], &mut z, &mut i);
         // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN and taken there. The walk:
@@ -789,8 +791,8 @@ mod tests {
         };
         let mut walked = 0;
         for t in 0..3000 {
-            let span = [8, 40, 200, 1100][t % 4];
-            let (cx, cy) = (rnd(64 * 16), rnd(48 * 16));
+            let span = [8, 40, 200, 1100][t % 4] * (ONE as i64 / 16);
+            let (cx, cy) = (rnd(64 * ONE as i64), rnd(48 * ONE as i64));
             let p = |r: &mut dyn FnMut(i64) -> i64| v((cx + r(2 * span) - span) as i32, (cy + r(2 * span) - span) as i32, 5);
             let tri = [p(&mut rnd), p(&mut rnd), p(&mut rnd)];
             let Ok(s) = setup(&tri, CullMode::None, FrontFace::Ccw, screen) else { continue };
@@ -819,7 +821,7 @@ mod tests {
     #[test]
     fn a_stale_depth_under_a_background_index_counts_as_far_so_z_needs_no_clear() {
         let screen = Screen::new(16, 16).unwrap();
-        let t = RcCmd::triangle(7, [v(0, 0, 10), v(64, 0, 10), v(0, 64, 10)], CullMode::None, FrontFace::Ccw).unwrap();
+        let t = RcCmd::triangle(7, [v(0, 0, 10), v(4 * ONE, 0, 10), v(0, 4 * ONE, 10)], CullMode::None, FrontFace::Ccw).unwrap();
         // Z words nearer than the triangle everywhere (left by an earlier frame), I-buffer cleared.
         let (mut z, mut i) = (vec![0; 256], vec![INDEX_BACKGROUND; 256]);
         let (res, _) = run(&mut RcModel::new(screen), &[RcCmd::frame(false), t, RcCmd::end_of_frame()], &mut z, &mut i);
@@ -847,8 +849,8 @@ mod tests {
 
     #[test]
     fn commands_outside_the_port_formats_are_rejected_with_the_reason() {
-        let e = RcCmd::triangle(1, [v(40000, 0, 0), v(0, 0, 0), v(0, 1, 0)], CullMode::None, FrontFace::Ccw).unwrap_err();
-        assert!(e.contains("S11.4"), "{e}");
+        let e = RcCmd::triangle(1, [v(600_000, 0, 0), v(0, 0, 0), v(0, 1, 0)], CullMode::None, FrontFace::Ccw).unwrap_err();
+        assert!(e.contains("S11.8"), "{e}");
         let e = RcCmd::triangle(1, [v(0, 0, 1 << 24), v(0, 0, 0), v(0, 1, 0)], CullMode::None, FrontFace::Ccw).unwrap_err();
         assert!(e.contains("24 bits"), "{e}");
         let e = RcCmd::triangle(70000, [v(0, 0, 0); 3], CullMode::None, FrontFace::Ccw).unwrap_err();

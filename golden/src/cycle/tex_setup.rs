@@ -32,8 +32,8 @@ pub const TEX_VALUE_BITS: u32 = 33;
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
 pub struct TexSetupCmd {
     pub index: u16,
-    pub x: [i16; 3],
-    pub y: [i16; 3],
+    pub x: [i32; 3],
+    pub y: [i32; 3],
     /// `values[k]`: vertex k's s/w, t/w and 1/w ([`crate::texcoord::vertex_values`]).
     pub values: [[i64; 3]; 3],
 }
@@ -143,7 +143,7 @@ mod tests {
     use super::*;
 
     fn cmd() -> SetupCommand {
-        let v = [(0, 0), (160, 0), (0, 160)].map(|(x, y)| WinVertex { x, y, z: 0 });
+        let v = [(0, 0), (10 * crate::format::SUBPIXEL_ONE, 0), (0, 10 * crate::format::SUBPIXEL_ONE)].map(|(x, y)| WinVertex { x, y, z: 0 });
         SetupCommand { index: 9, v, values: [[0; 3]; 3], material: 0, flat: None, tex: Some([[0, 0, 1 << 24], [1 << 20, 0, 1 << 24], [0, 1 << 20, 1 << 23]]) }
     }
 

@@ -461,12 +461,12 @@ pub fn drive_frame(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::format::WinVertex;
+    use crate::format::{WinVertex, SUBPIXEL_ONE};
     use crate::proof::render::{object_lists, ops_needed};
     use crate::proof::setup::object_setup;
 
     fn tri(c: [(f64, f64, u32); 3], id: u16, s: Screen) -> ObjectParams {
-        let v = c.map(|(x, y, z)| WinVertex { x: (x * 16.0).round() as i32, y: (y * 16.0).round() as i32, z });
+        let v = c.map(|(x, y, z)| WinVertex { x: (x * SUBPIXEL_ONE as f64).round() as i32, y: (y * SUBPIXEL_ONE as f64).round() as i32, z });
         object_setup(&v, [[0, 0, 16384]; 3], id, s).unwrap()
     }
 

@@ -5,7 +5,7 @@
 
 use super::format::Coverage;
 use super::setup::object_setup;
-use crate::format::{Screen, WinVertex};
+use crate::format::{Screen, WinVertex, SUBPIXEL_ONE};
 
 /// Area of the triangle (pixel units) inside the square [x, x+1] x [y, y+1]: Sutherland-Hodgman.
 pub fn exact_area(t: &[(f64, f64); 3], x: f64, y: f64) -> f64 {
@@ -74,31 +74,34 @@ pub fn check_random(seed: u64, n: usize) -> NatureCounts {
     for t in 0..n {
         let kind = t % 5;
         let mut v = [WinVertex::default(); 3];
-        let (lo, hi) = if kind == 3 { (-1024, 2048) } else { (-64, 64 * 16 + 64) };
+        // Subpixels per 1/16 pixel: the ranges below are in sixteenths of a pixel, every value at full
+        // subpixel precision.
+        let u = SUBPIXEL_ONE / 16;
+        let (lo, hi) = if kind == 3 { (-1024 * u, 2048 * u) } else { (-64 * u, (64 * 16 + 64) * u) };
         v[0] = WinVertex { x: r.range(lo, hi), y: r.range(lo, hi), z: 100 };
         for k in 1..3 {
             v[k] = match kind {
                 // Small triangles near vertex 0.
-                0 => WinVertex { x: v[0].x + r.range(-40, 40), y: v[0].y + r.range(-40, 40), z: 100 },
+                0 => WinVertex { x: v[0].x + r.range(-40 * u, 40 * u), y: v[0].y + r.range(-40 * u, 40 * u), z: 100 },
                 // Slivers: vertex 2 close to the line through 0 and 1.
                 1 if k == 2 => {
                     let f = r.range(0, 17);
-                    WinVertex { x: v[0].x + (v[1].x - v[0].x) * f / 16 + r.range(-3, 4), y: v[0].y + (v[1].y - v[0].y) * f / 16 + r.range(-3, 4), z: 100 }
+                    WinVertex { x: v[0].x + (v[1].x - v[0].x) * f / 16 + r.range(-3 * u, 4 * u), y: v[0].y + (v[1].y - v[0].y) * f / 16 + r.range(-3 * u, 4 * u), z: 100 }
                 }
                 // Vertices on pixel corners (edges along pixel boundaries).
-                2 => WinVertex { x: r.range(-4, 68) * 16, y: r.range(-4, 68) * 16, z: 100 },
+                2 => WinVertex { x: r.range(-4, 68) * SUBPIXEL_ONE, y: r.range(-4, 68) * SUBPIXEL_ONE, z: 100 },
                 _ => WinVertex { x: r.range(lo, hi), y: r.range(lo, hi), z: 100 },
             };
         }
         if kind == 2 {
-            v[0] = WinVertex { x: r.range(-4, 68) * 16, y: r.range(-4, 68) * 16, z: 100 };
+            v[0] = WinVertex { x: r.range(-4, 68) * SUBPIXEL_ONE, y: r.range(-4, 68) * SUBPIXEL_ONE, z: 100 };
         }
         let p = match object_setup(&v, [[0, 0, 16384]; 3], 0, screen) {
             Some(p) => p,
             None => continue,
         };
         c.triangles += 1;
-        let tf = v.map(|w| (w.x as f64 / 16.0, w.y as f64 / 16.0));
+        let tf = v.map(|w| (w.x as f64 / SUBPIXEL_ONE as f64, w.y as f64 / SUBPIXEL_ONE as f64));
         let (x0, x1) = ((p.x0 as i32 - 2).max(0), (p.x1 as i32 + 2).min(63));
         let (y0, y1) = ((p.y0 as i32 - 2).max(0), (p.y1 as i32 + 2).min(63));
         for y in y0..=y1 {

@@ -15,7 +15,7 @@
 //!   rescaled to the accumulators' fraction bits and evaluated at the box's first pixel.
 
 use super::format::{alpha_q, sat, wrap, EdgeParams, ALPHA_ONE, Interp, ObjectParams, ACC_BITS, DEPTH_FRAC, EDGE_BITS, ID_BITS, NORMAL_ACC_FRAC};
-use crate::format::{reciprocal, round_shift, Plane, Screen, WinVertex, PLANE_FRAC, SUBPIXEL_BITS};
+use crate::format::{reciprocal, round_shift, Plane, Screen, WinVertex, PLANE_FRAC, SUBPIXEL_BITS, SUBPIXEL_ONE};
 use crate::host::{eye_normals, normalize, upper_pipeline, Vec3};
 use crate::raster::{canonical_order, det, is_culled, Culled};
 use crate::render::RenderOptions;
@@ -65,13 +65,13 @@ pub fn edge_setup(v: &[WinVertex; 3], bbox: (i32, i32, i32, i32)) -> [EdgeParams
         let (cf, sf) = (-dy / len, dx / len);
         let q = |f: f64| (f * 16384.0).round() as i64;
         let (c, s) = (q(cf), q(sf));
-        // p' = floor(min v . n') in 15 fraction bits: v (4 fraction bits) * n' (14) has 18.
+        // p' = floor(min v . n') in 15 fraction bits: v (8 fraction bits) * n' (14) has 22.
         let pmin = v.iter().map(|w| w.x as i64 * c + w.y as i64 * s).min().unwrap();
         let p = pmin >> (SUBPIXEL_BITS + 14 - 15);
         let d0 = (2 * x0 as i64 + 1) * c + (2 * y0 as i64 + 1) * s - p;
         let r = c.abs() + s.abs();
         // delta: |f' - f| over the box [x0, x1+1] x [y0, y1+1] (pixels); linear, so at the corners.
-        let (ax, ay) = (a.x as f64 / 16.0, a.y as f64 / 16.0);
+        let (ax, ay) = (a.x as f64 / SUBPIXEL_ONE as f64, a.y as f64 / SUBPIXEL_ONE as f64);
         let mut delta: f64 = 0.0;
         for (px, py) in [(x0, y0), (x1 + 1, y0), (x0, y1 + 1), (x1 + 1, y1 + 1)] {
             let (px, py) = (px as f64, py as f64);
@@ -212,7 +212,7 @@ mod tests {
     use crate::proof::format::{Coverage, EDGE_FRAC};
 
     fn v(x: f64, y: f64, z: u32) -> WinVertex {
-        WinVertex { x: (x * 16.0) as i32, y: (y * 16.0) as i32, z }
+        WinVertex { x: (x * SUBPIXEL_ONE as f64) as i32, y: (y * SUBPIXEL_ONE as f64) as i32, z }
     }
 
     #[test]

@@ -1,35 +1,40 @@
-//! `LeadingOne36`: the most significant set bit of a 36-bit word, as a one-hot word and as its index
+//! `LeadingOne<N>` (`LeadingOne36`, `LeadingOne44`): the most significant set bit of an N-bit word (N <= 64), as a one-hot word and as its index
 //! (combinational). A reciprocal normalises its divisor with it: `2^shift` is where the restoring
 //! division's partial remainder starts (`golden::format::reciprocal`). For 0 both outputs are 0.
 //!
 //! ```text
-//!  x (36 b) --> smear the top set bit down (x | x>>1 | x>>2 ...) --> isolate it --> onehot (36 b)
+//!  x (N b) --> smear the top set bit down (x | x>>1 | x>>2 ...) --> isolate it --> onehot (N b)
 //!                                                                  --> OR-planes --> index (6 b)
 //! ```
 //!
 //! A leaf written as Verilog (like [`super::MulS`] and [`super::DivStep`]): the smear and the OR-planes
 //! are the Verilog in `hdl()`; the Rust model computes the same function with `leading_zeros` and
-//! skips re-evaluation while `x` is unchanged (rust-hdl keeps a 36-bit `Bits` as an array of bools, and
+//! skips re-evaluation while `x` is unchanged (rust-hdl keeps a wide `Bits` as an array of bools, and
 //! this block sat on every simulation pass of the RC). The test below checks the Rust model; the RC's and
 //! colour setup's Verilog replays run the Verilog.
 
 use rust_hdl::prelude::*;
 
 #[derive(LogicBlock, Default)]
-pub struct LeadingOne36 {
-    pub x: Signal<In, Bits<36>>,
+pub struct LeadingOne<const N: usize> {
+    pub x: Signal<In, Bits<N>>,
     /// The top set bit of `x` alone.
-    pub onehot: Signal<Out, Bits<36>>,
+    pub onehot: Signal<Out, Bits<N>>,
     /// Its index: floor(log2 x).
     pub index: Signal<Out, Bits<6>>,
 }
 
 /// Bit j of the mask is set where bit `bit` of j is set: the encoder's OR-planes.
-fn encoder_mask(bit: u32) -> u64 {
-    (0..36u64).filter(|j| j >> bit & 1 == 1).map(|j| 1u64 << j).sum()
+fn encoder_mask(n: usize, bit: u32) -> u64 {
+    (0..n as u64).filter(|j| j >> bit & 1 == 1).map(|j| 1u64 << j).sum()
 }
 
-impl Logic for LeadingOne36 {
+/// Colour setup's and the texture coordinates' 36-bit normaliser.
+pub type LeadingOne36 = LeadingOne<36>;
+/// The RC reciprocal's normaliser: det of S11.8 coordinates is below 2^42.
+pub type LeadingOne44 = LeadingOne<44>;
+
+impl<const N: usize> Logic for LeadingOne<N> {
     fn update(&mut self) {
         if !self.x.changed {
             return;
@@ -44,15 +49,17 @@ impl Logic for LeadingOne36 {
         self.index.connect();
     }
     fn hdl(&self) -> Verilog {
-        let planes: Vec<String> = (0..6).rev().map(|b| format!("|(hot & 36'h{:09x})", encoder_mask(b))).collect();
+        assert!(N <= 64, "LeadingOne<{N}>: at most 64 bits");
+        let planes: Vec<String> = (0..6).rev().map(|b| format!("|(hot & {N}'h{:x})", encoder_mask(N, b))).collect();
+        let top = N - 1;
         Verilog::Custom(format!(
-            "wire [35:0] smear1 = x | (x >> 1);
-wire [35:0] smear2 = smear1 | (smear1 >> 2);
-wire [35:0] smear4 = smear2 | (smear2 >> 4);
-wire [35:0] smear8 = smear4 | (smear4 >> 8);
-wire [35:0] smear16 = smear8 | (smear8 >> 16);
-wire [35:0] smear32 = smear16 | (smear16 >> 32);
-wire [35:0] hot = smear32 ^ (smear32 >> 1);
+            "wire [{top}:0] smear1 = x | (x >> 1);
+wire [{top}:0] smear2 = smear1 | (smear1 >> 2);
+wire [{top}:0] smear4 = smear2 | (smear2 >> 4);
+wire [{top}:0] smear8 = smear4 | (smear4 >> 8);
+wire [{top}:0] smear16 = smear8 | (smear8 >> 16);
+wire [{top}:0] smear32 = smear16 | (smear16 >> 32);
+wire [{top}:0] hot = smear32 ^ (smear32 >> 1);
 always @(*) begin
     onehot = hot;
     index = {{{}}};
@@ -68,6 +75,13 @@ mod tests {
 
     #[test]
     fn leading_one_finds_the_top_set_bit_of_every_width() {
+        let mut w = LeadingOne44::default();
+        w.connect_all();
+        for x in [1u64, 1 << 36, (1 << 44) - 1, 1 << 43, 0x9_8765_4321] {
+            w.x.next = x.into();
+            assert!(simulate(&mut w, 100));
+            assert_eq!(w.index.val().to_u64(), 63 - x.leading_zeros() as u64, "x = {x:#x}");
+        }
         let mut u = LeadingOne36::default();
         u.connect_all();
         for x in [0u64, 1, 2, 3, 5, 255, 256, (1 << 35) - 1, 1 << 35, 0x123456789] {

@@ -15,11 +15,11 @@ pub mod normalize;
 pub mod stream;
 
 pub use add::AddU;
-pub use div_step::DivStep;
+pub use div_step::{DivStep, DivStep45, DivStepN};
 pub use fast_ram::FastRAM;
-pub use leading_one::LeadingOne36;
+pub use leading_one::{LeadingOne, LeadingOne36, LeadingOne44};
 pub use merge_modules::merge_identical_modules;
-pub use mul::{LerpDeltaLogic, MulLogicU, MulS, MulU};
+pub use mul::{split_product_verilog, LerpDeltaLogic, MulLogicU, MulS, MulSplitS, MulU};
 pub use normalize::{LeftAlign, Normalize18};
 pub use stream::{StreamIn, StreamOut};
 

@@ -32,6 +32,62 @@ impl<const A: usize, const B: usize, const P: usize> Logic for MulS<A, B, P> {
     }
 }
 
+/// Signed A x B -> P bits with the low `KA` bits of `a` and the low `KB` bits of `b` multiplied in
+/// logic, and only `(A - KA) x (B - KB)` on multiplier blocks: `a = ah 2^KA + al`, `b = bh 2^KB + bl`
+/// (`ah`, `bh` the arithmetic high parts, `al`, `bl` unsigned), so
+/// `a b = (ah bh) 2^(KA+KB) + (ah bl) 2^KA + al b`, with `ah bl` and `al b` as shifted sums
+/// ([`logic_product_verilog`]'s form, signed). S11.8 coordinates (issue 15 item 3) made setup's edge
+/// deltas 21 bits: a 21x21 product on MULT18X18D blocks takes four, split 3 + 3 bits it takes one and
+/// two small adder trees. The Rust simulation multiplies exactly, as [`MulS`]; the Verilog is checked
+/// against `*` under Icarus and on Yosys's ECP5 netlist (`tb/tests/logic_products.rs`).
+#[derive(LogicBlock, Default)]
+pub struct MulSplitS<const A: usize, const B: usize, const P: usize, const KA: usize, const KB: usize> {
+    pub a: Signal<In, Signed<A>>,
+    pub b: Signal<In, Signed<B>>,
+    pub p: Signal<Out, Signed<P>>,
+}
+
+impl<const A: usize, const B: usize, const P: usize, const KA: usize, const KB: usize> Logic for MulSplitS<A, B, P, KA, KB> {
+    fn update(&mut self) {
+        if !self.a.changed && !self.b.changed {
+            return;
+        }
+        let prod = to_i128(self.a.val()).wrapping_mul(to_i128(self.b.val()));
+        self.p.next = from_i128::<P>(prod);
+    }
+    fn connect(&mut self) {
+        self.p.connect();
+    }
+    fn hdl(&self) -> Verilog {
+        Verilog::Custom(split_product_verilog(A, B, P, KA, KB))
+    }
+}
+
+/// The Verilog of [`MulSplitS`]: `hh` on multiplier blocks, `hl` and `lb` as sums of shifted copies.
+pub fn split_product_verilog(a: usize, b: usize, p: usize, ka: usize, kb: usize) -> String {
+    assert!(ka < a && kb < b && p >= a.max(b), "split product {a}x{b} into {p} bits, {ka} + {kb} low bits in logic");
+    // Each part as wide as its own product (the sums of shifted copies no wider than they need be).
+    let (wh, whl, wlb) = (a - ka + b - kb, a - ka + kb, ka + b);
+    let mut v = format!("wire signed [{}:0] ah = a[{}:{ka}];\nwire signed [{}:0] bh = b[{}:{kb}];\n", a - ka - 1, a - 1, b - kb - 1, b - 1);
+    v += &format!("wire signed [{}:0] hh = ah * bh;\n", wh - 1);
+    let sum = |x: &str, sel: &str, bits: usize, w: usize| -> String {
+        if bits == 0 {
+            return format!("{w}'sd0");
+        }
+        (0..bits).map(|i| format!("({sel}[{i}] ? ({x} <<< {i}) : {w}'sd0)")).collect::<Vec<_>>().join(" + ")
+    };
+    if kb > 0 {
+        v += &format!("wire [{}:0] bl = b[{}:0];\nwire signed [{}:0] ahx = ah;\n", kb - 1, kb - 1, whl - 1);
+    }
+    if ka > 0 {
+        v += &format!("wire [{}:0] al = a[{}:0];\nwire signed [{}:0] bx = b;\n", ka - 1, ka - 1, wlb - 1);
+    }
+    v += &format!("wire signed [{}:0] hl = {};\n", whl - 1, sum("ahx", "bl", kb, whl));
+    v += &format!("wire signed [{}:0] lb = {};\n", wlb - 1, sum("bx", "al", ka, wlb));
+    v += &format!("always @(*) p = (hh <<< {}) + (hl <<< {ka}) + lb;", ka + kb);
+    v
+}
+
 /// The Verilog of an unsigned product in logic: one sum of B partial products (`a` shifted by i where
 /// bit i of `b` is set, each extended to P bits by the context), so that Yosys builds an adder tree of
 /// LUTs (its `$macc` mapping) instead of a `$mul` that `synth_ecp5` would put on a MULT18X18D. The
@@ -122,6 +178,18 @@ impl<const A: usize, const B: usize, const P: usize> Logic for LerpDeltaLogic<A,
 mod tests {
     use super::*;
     use crate::common::{from_i64, to_i128};
+
+    #[test]
+    fn the_split_product_is_exact_in_the_rust_model() {
+        let mut m = MulSplitS::<21, 21, 42, 3, 3>::default();
+        m.connect_all();
+        for (a, b) in [(-(1i64 << 20), -(1i64 << 20)), ((1 << 20) - 1, -(1 << 20)), (-12345, 678), (7, -1)] {
+            m.a.next = from_i64::<21>(a);
+            m.b.next = from_i64::<21>(b);
+            assert!(simulate(&mut m, 10));
+            assert_eq!(to_i128(m.p.val()), a as i128 * b as i128);
+        }
+    }
 
     #[test]
     fn signed_wide_product_is_exact() {

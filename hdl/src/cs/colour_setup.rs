@@ -10,9 +10,9 @@
 //!   |   window 1        window 2          windows 3..8         window 9       window 10      11
 //!   v   cycles 1-4      5-8               9-32                 33-36          37-40          41
 //!  [S1]-> det, 12 numerator products -> [S2] |det| -> 2^s, 3 division steps -> [S3..S8] 4 steps
-//!         (4 x 18x18, 14 products)            (leading one)                   each (22 steps)
-//!   -> [S9] A, B = sat40(round(n * mant >> s+4)) (2 x 36x26) -> [S10] C = sat56(v0*2^16 +
-//!      round((A*(8-x0) + B*(8-y0)) / 16)) (2 x 40x18) -> [S11] -> tdbs_write (cycle 41)
+//!         (4 x 21x21, 14 products)            (leading one)                   each (22 steps)
+//!   -> [S9] A, B = sat40(round(n * mant >> s)) (2 x 40x26) -> [S10] C = sat56(v0*2^16 +
+//!      round((A*(128-x0) + B*(128-y0)) / 256)) (2 x 40x21) -> [S11] -> tdbs_write (cycle 41)
 //! ```
 //!
 //! Schedule. A command taken in cycle 0 is in window j during cycles 4j-3 ..= 4j, and its data in
@@ -27,7 +27,7 @@
 //! everything.
 //!
 //! * Cycles 1-4: the 14 products of det and the six numerators (na = dv10*dy20 - dv20*dy10,
-//!   nb = dv20*dx10 - dv10*dx20, in the vertex order as sent) on four 18x18 multipliers, operands and
+//!   nb = dv20*dx10 - dv10*dx20, in the vertex order as sent) on four 21x21 multipliers, operands and
 //!   products registered; each difference two cycles later: det and na_r in 3, nb_r and na_g in 4, nb_g
 //!   and na_b in 5, nb_b in 6.
 //! * Cycle 5: |det| and its leading one start the division (rem = 2^s, the sign and det == 0 kept).
@@ -35,21 +35,21 @@
 //!   and keeps vertex 0, so the planes use the numerators negated when det < 0 and |det|.
 //! * Cycles 6-30: the 25 restoring steps (`golden::format::reciprocal`), one per cycle, three in
 //!   station 2, four in each of stations 3-7, two in station 8: mant = quotient, valid from cycle 31.
-//! * Cycles 33-35: A and B of R, G, B on two 36x26 multipliers; rounded, shifted and saturated
+//! * Cycles 33-35: A and B of R, G, B on two 40x26 multipliers; rounded, shifted and saturated
 //!   (`plane_round`) two cycles later (35-37). det == 0 (never sent by the host: the RC does not flag
 //!   a zero-area triangle visible) gives A = B = 0, so C is the constant vertex-0 value.
-//! * Cycles 36-38: A*(8-x0) and B*(8-y0) of R, G, B on two 40x18 multipliers; C two cycles later
+//! * Cycles 36-38: A*(128-x0) and B*(128-y0) of R, G, B on two 40x21 multipliers; C two cycles later
 //!   (38-40).
 //! * Cycle 41: the TdbS write (enable, index, record).
 //!
 //! A flat command enters with all three vertex values set to its colour and material 0: every
 //! numerator is 0, so A = B = 0 and C = colour * 2^16, `flat_setup`'s record.
 //!
-//! Widths: coordinates and values are 16-bit, so every intermediate is bounded for ANY port input:
-//! |det| < 2^33, |numerator| < 2^34, |n*mant| < 2^58, |A*(8-x0)| < 2^56: the 64-bit products and sums
-//! never wrap. All payload outputs are 0 while their enable is low.
+//! Widths: coordinates are 20-bit (S11.8) and values 16-bit, so every intermediate is bounded for ANY
+//! port input: |det| < 2^41 (44-bit divisor), |numerator| < 2^37 (38 bits), |n*mant| < 2^61,
+//! |A*(128-x0)| < 2^59: the 64-bit products and sums never wrap. All payload outputs are 0 while their enable is low.
 
-use crate::common::{signed_bit_cast_safe, DivStep, LeadingOne36, MulS, StreamIn};
+use crate::common::{signed_bit_cast_safe, DivStep45, LeadingOne44, MulSplitS, StreamIn};
 use crate::cs::plane_round::PlaneRound;
 use crate::cs::{SetupCommand, TdbsRecord};
 use rust_hdl::prelude::*;
@@ -77,8 +77,8 @@ pub struct ColourSetup {
     pub busy: Signal<Out, Bit>,
     tok: DFF<Bits<41>>,
     cmd1: DFF<SetupCommand>,
-    det1: DFF<Signed<36>>,
-    det2: DFF<Signed<36>>,
+    det1: DFF<Signed<44>>,
+    det2: DFF<Signed<44>>,
     sh_ab1: DFF<Bits<7>>,
     sh_ab2: DFF<Bits<7>>,
     z_ab1: DFF<Bit>,
@@ -91,9 +91,9 @@ pub struct ColourSetup {
     /// Stations 1..=11 (`c_material[j - 1]`: station j).
     c_material: [DFF<Bits<16>>; 11],
     /// Stations 1..=10 (`c_x0[j - 1]`: station j).
-    c_x0: [DFF<Bits<16>>; 10],
+    c_x0: [DFF<Bits<20>>; 10],
     /// Stations 1..=10 (`c_y0[j - 1]`: station j).
-    c_y0: [DFF<Bits<16>>; 10],
+    c_y0: [DFF<Bits<20>>; 10],
     /// Stations 1..=10 (`c_v0r[j - 1]`: station j).
     c_v0r: [DFF<Bits<16>>; 10],
     /// Stations 1..=10 (`c_v0g[j - 1]`: station j).
@@ -101,21 +101,21 @@ pub struct ColourSetup {
     /// Stations 1..=10 (`c_v0b[j - 1]`: station j).
     c_v0b: [DFF<Bits<16>>; 10],
     /// Stations 1..=9 (`na_r[j - 1]`: station j).
-    na_r: [DFF<Bits<35>>; 9],
+    na_r: [DFF<Bits<38>>; 9],
     /// Stations 2..=9 (`nb_r[j - 2]`: station j).
-    nb_r: [DFF<Bits<35>>; 8],
+    nb_r: [DFF<Bits<38>>; 8],
     /// Stations 2..=9 (`na_g[j - 2]`: station j).
-    na_g: [DFF<Bits<35>>; 8],
+    na_g: [DFF<Bits<38>>; 8],
     /// Stations 2..=9 (`nb_g[j - 2]`: station j).
-    nb_g: [DFF<Bits<35>>; 8],
+    nb_g: [DFF<Bits<38>>; 8],
     /// Stations 2..=9 (`na_b[j - 2]`: station j).
-    na_b: [DFF<Bits<35>>; 8],
+    na_b: [DFF<Bits<38>>; 8],
     /// Stations 2..=9 (`nb_b[j - 2]`: station j).
-    nb_b: [DFF<Bits<35>>; 8],
+    nb_b: [DFF<Bits<38>>; 8],
     /// Stations 2..=8 (`rem[j - 2]`: station j).
-    rem: [DFF<Bits<37>>; 7],
+    rem: [DFF<Bits<45>>; 7],
     /// Stations 2..=8 (`den[j - 2]`: station j).
-    den: [DFF<Bits<37>>; 7],
+    den: [DFF<Bits<45>>; 7],
     /// Stations 2..=9 (`quo[j - 2]`: station j).
     quo: [DFF<Bits<25>>; 8],
     /// Stations 2..=9 (`shift[j - 2]`: station j).
@@ -142,32 +142,32 @@ pub struct ColourSetup {
     b_b: [DFF<Bits<40>>; 2],
     /// Stations 11..=11 (`b_c[j - 11]`: station j).
     b_c: [DFF<Bits<56>>; 1],
-    opn_a: [DFF<Signed<18>>; 4],
-    opn_b: [DFF<Signed<18>>; 4],
-    pn: [DFF<Signed<36>>; 4],
-    opab_n: [DFF<Signed<36>>; 2],
+    opn_a: [DFF<Signed<21>>; 4],
+    opn_b: [DFF<Signed<21>>; 4],
+    pn: [DFF<Signed<42>>; 4],
+    opab_n: [DFF<Signed<40>>; 2],
     pab: [DFF<Signed<64>>; 2],
     opc_a: [DFF<Signed<40>>; 2],
-    opc_o: [DFF<Signed<18>>; 2],
+    opc_o: [DFF<Signed<21>>; 2],
     pc: [DFF<Signed<64>>; 2],
-    lead: LeadingOne36,
-    mn: [MulS<18, 18, 36>; 4],
-    mab: [MulS<36, 26, 64>; 2],
-    mc: [MulS<40, 18, 64>; 2],
+    lead: LeadingOne44,
+    mn: [MulSplitS<21, 21, 42, 3, 3>; 4],
+    mab: [MulSplitS<40, 26, 64, 4, 0>; 2],
+    mc: [MulSplitS<40, 21, 64, 0, 3>; 2],
     round: [PlaneRound; 2],
     /// One division step per station 2..=8 (`step[k]` steps station k + 2).
-    step: [DivStep; 7],
+    step: [DivStep45; 7],
     ready: Signal<Local, Bit>,
     accept: Signal<Local, Bit>,
     fr16: Signal<Local, Bits<16>>,
     fg16: Signal<Local, Bits<16>>,
     fb16: Signal<Local, Bits<16>>,
-    sx0: Signal<Local, Signed<16>>,
-    sy0: Signal<Local, Signed<16>>,
-    sx1: Signal<Local, Signed<16>>,
-    sy1: Signal<Local, Signed<16>>,
-    sx2: Signal<Local, Signed<16>>,
-    sy2: Signal<Local, Signed<16>>,
+    sx0: Signal<Local, Signed<20>>,
+    sy0: Signal<Local, Signed<20>>,
+    sx1: Signal<Local, Signed<20>>,
+    sy1: Signal<Local, Signed<20>>,
+    sx2: Signal<Local, Signed<20>>,
+    sy2: Signal<Local, Signed<20>>,
     s0r: Signal<Local, Signed<16>>,
     s0g: Signal<Local, Signed<16>>,
     s0b: Signal<Local, Signed<16>>,
@@ -177,47 +177,47 @@ pub struct ColourSetup {
     s2r: Signal<Local, Signed<16>>,
     s2g: Signal<Local, Signed<16>>,
     s2b: Signal<Local, Signed<16>>,
-    dx10: Signal<Local, Signed<18>>,
-    dy10: Signal<Local, Signed<18>>,
-    dx20: Signal<Local, Signed<18>>,
-    dy20: Signal<Local, Signed<18>>,
-    dv10r: Signal<Local, Signed<18>>,
-    dv20r: Signal<Local, Signed<18>>,
-    dv10g: Signal<Local, Signed<18>>,
-    dv20g: Signal<Local, Signed<18>>,
-    dv10b: Signal<Local, Signed<18>>,
-    dv20b: Signal<Local, Signed<18>>,
-    d01: Signal<Local, Signed<36>>,
-    d23: Signal<Local, Signed<36>>,
-    d01u: Signal<Local, Bits<36>>,
-    d23u: Signal<Local, Bits<36>>,
-    n01: Signal<Local, Bits<35>>,
-    n23: Signal<Local, Bits<35>>,
-    det_abs: Signal<Local, Signed<36>>,
-    det_absu: Signal<Local, Bits<36>>,
-    n_a: Signal<Local, Bits<35>>,
-    n_b: Signal<Local, Bits<35>>,
-    sn_a: Signal<Local, Signed<35>>,
-    sn_b: Signal<Local, Signed<35>>,
-    wn_a: Signal<Local, Signed<36>>,
-    wn_b: Signal<Local, Signed<36>>,
+    dx10: Signal<Local, Signed<21>>,
+    dy10: Signal<Local, Signed<21>>,
+    dx20: Signal<Local, Signed<21>>,
+    dy20: Signal<Local, Signed<21>>,
+    dv10r: Signal<Local, Signed<21>>,
+    dv20r: Signal<Local, Signed<21>>,
+    dv10g: Signal<Local, Signed<21>>,
+    dv20g: Signal<Local, Signed<21>>,
+    dv10b: Signal<Local, Signed<21>>,
+    dv20b: Signal<Local, Signed<21>>,
+    d01: Signal<Local, Signed<42>>,
+    d23: Signal<Local, Signed<42>>,
+    d01u: Signal<Local, Bits<42>>,
+    d23u: Signal<Local, Bits<42>>,
+    n01: Signal<Local, Bits<38>>,
+    n23: Signal<Local, Bits<38>>,
+    det_abs: Signal<Local, Signed<44>>,
+    det_absu: Signal<Local, Bits<44>>,
+    n_a: Signal<Local, Bits<38>>,
+    n_b: Signal<Local, Bits<38>>,
+    sn_a: Signal<Local, Signed<38>>,
+    sn_b: Signal<Local, Signed<38>>,
+    wn_a: Signal<Local, Signed<40>>,
+    wn_b: Signal<Local, Signed<40>>,
     ab_a: Signal<Local, Bits<40>>,
     ab_b: Signal<Local, Bits<40>>,
     ca: Signal<Local, Bits<40>>,
     cb: Signal<Local, Bits<40>>,
-    cx0: Signal<Local, Bits<16>>,
-    cy0: Signal<Local, Bits<16>>,
+    cx0: Signal<Local, Bits<20>>,
+    cy0: Signal<Local, Bits<20>>,
     cv: Signal<Local, Bits<16>>,
-    scx0: Signal<Local, Signed<16>>,
-    scy0: Signal<Local, Signed<16>>,
-    ox: Signal<Local, Signed<18>>,
-    oy: Signal<Local, Signed<18>>,
+    scx0: Signal<Local, Signed<20>>,
+    scy0: Signal<Local, Signed<20>>,
+    ox: Signal<Local, Signed<21>>,
+    oy: Signal<Local, Signed<21>>,
     cx: Signal<Local, Signed<64>>,
     cx8: Signal<Local, Signed<64>>,
     cxr: Signal<Local, Signed<64>>,
     cx8u: Signal<Local, Bits<64>>,
-    cx60: Signal<Local, Bits<60>>,
-    scx60: Signal<Local, Signed<60>>,
+    cx56: Signal<Local, Bits<56>>,
+    scx56: Signal<Local, Signed<56>>,
     v0w: Signal<Local, Signed<64>>,
     v0s: Signal<Local, Bits<64>>,
     csum: Signal<Local, Signed<64>>,
@@ -227,17 +227,16 @@ pub struct ColourSetup {
     k0_16: Constant<Bits<16>>,
     k1_tok: Constant<Bits<41>>,
     k1_41: Constant<Bits<41>>,
-    k0_35: Constant<Bits<35>>,
+    k0_38: Constant<Bits<38>>,
     k0_25: Constant<Bits<25>>,
-    k0_36: Constant<Signed<36>>,
-    k0_18: Constant<Signed<18>>,
+    k0_44: Constant<Signed<44>>,
+    k0_21: Constant<Signed<21>>,
     k0_40: Constant<Bits<40>>,
     k0_56: Constant<Bits<56>>,
-    k0_36s: Constant<Signed<36>>,
-    k4_7: Constant<Bits<7>>,
+    k0_40s: Constant<Signed<40>>,
     k16_7: Constant<Bits<7>>,
-    k8_64: Constant<Signed<64>>,
-    k8_18: Constant<Signed<18>>,
+    k128_64: Constant<Signed<64>>,
+    k128_21: Constant<Signed<21>>,
     kmin_56: Constant<Bits<56>>,
     kmax_56: Constant<Bits<56>>,
 }
@@ -363,8 +362,8 @@ impl Default for ColourSetup {
             cx8: Default::default(),
             cxr: Default::default(),
             cx8u: Default::default(),
-            cx60: Default::default(),
-            scx60: Default::default(),
+            cx56: Default::default(),
+            scx56: Default::default(),
             v0w: Default::default(),
             v0s: Default::default(),
             csum: Default::default(),
@@ -374,17 +373,16 @@ impl Default for ColourSetup {
             k0_16: Constant::new(0.into()),
             k1_tok: Constant::new(1.into()),
             k1_41: Constant::new(1.into()),
-            k0_35: Constant::new(0.into()),
+            k0_38: Constant::new(0.into()),
             k0_25: Constant::new(0.into()),
-            k0_36: Constant::new(0.into()),
-            k0_18: Constant::new(0.into()),
+            k0_44: Constant::new(0.into()),
+            k0_21: Constant::new(0.into()),
             k0_40: Constant::new(0.into()),
             k0_56: Constant::new(0.into()),
-            k0_36s: Constant::new(0.into()),
-            k4_7: Constant::new(4.into()),
+            k0_40s: Constant::new(0.into()),
             k16_7: Constant::new(16.into()),
-            k8_64: Constant::new(8.into()),
-            k8_18: Constant::new(8.into()),
+            k128_64: Constant::new(128.into()),
+            k128_21: Constant::new(128.into()),
             kmin_56: Constant::new((1u64 << 55).into()),
             kmax_56: Constant::new(((1u64 << 55) - 1).into()),
         }
@@ -584,16 +582,16 @@ impl Logic for ColourSetup {
         self.s2r.next = signed_cast(self.cmd1.q.val().v2r);
         self.s2g.next = signed_cast(self.cmd1.q.val().v2g);
         self.s2b.next = signed_cast(self.cmd1.q.val().v2b);
-        self.dx10.next = signed_bit_cast_safe::<18, 16>(self.sx1.val()) - signed_bit_cast_safe::<18, 16>(self.sx0.val());
-        self.dy10.next = signed_bit_cast_safe::<18, 16>(self.sy1.val()) - signed_bit_cast_safe::<18, 16>(self.sy0.val());
-        self.dx20.next = signed_bit_cast_safe::<18, 16>(self.sx2.val()) - signed_bit_cast_safe::<18, 16>(self.sx0.val());
-        self.dy20.next = signed_bit_cast_safe::<18, 16>(self.sy2.val()) - signed_bit_cast_safe::<18, 16>(self.sy0.val());
-        self.dv10r.next = signed_bit_cast_safe::<18, 16>(self.s1r.val()) - signed_bit_cast_safe::<18, 16>(self.s0r.val());
-        self.dv20r.next = signed_bit_cast_safe::<18, 16>(self.s2r.val()) - signed_bit_cast_safe::<18, 16>(self.s0r.val());
-        self.dv10g.next = signed_bit_cast_safe::<18, 16>(self.s1g.val()) - signed_bit_cast_safe::<18, 16>(self.s0g.val());
-        self.dv20g.next = signed_bit_cast_safe::<18, 16>(self.s2g.val()) - signed_bit_cast_safe::<18, 16>(self.s0g.val());
-        self.dv10b.next = signed_bit_cast_safe::<18, 16>(self.s1b.val()) - signed_bit_cast_safe::<18, 16>(self.s0b.val());
-        self.dv20b.next = signed_bit_cast_safe::<18, 16>(self.s2b.val()) - signed_bit_cast_safe::<18, 16>(self.s0b.val());
+        self.dx10.next = signed_bit_cast_safe::<21, 20>(self.sx1.val()) - signed_bit_cast_safe::<21, 20>(self.sx0.val());
+        self.dy10.next = signed_bit_cast_safe::<21, 20>(self.sy1.val()) - signed_bit_cast_safe::<21, 20>(self.sy0.val());
+        self.dx20.next = signed_bit_cast_safe::<21, 20>(self.sx2.val()) - signed_bit_cast_safe::<21, 20>(self.sx0.val());
+        self.dy20.next = signed_bit_cast_safe::<21, 20>(self.sy2.val()) - signed_bit_cast_safe::<21, 20>(self.sy0.val());
+        self.dv10r.next = signed_bit_cast_safe::<21, 16>(self.s1r.val()) - signed_bit_cast_safe::<21, 16>(self.s0r.val());
+        self.dv20r.next = signed_bit_cast_safe::<21, 16>(self.s2r.val()) - signed_bit_cast_safe::<21, 16>(self.s0r.val());
+        self.dv10g.next = signed_bit_cast_safe::<21, 16>(self.s1g.val()) - signed_bit_cast_safe::<21, 16>(self.s0g.val());
+        self.dv20g.next = signed_bit_cast_safe::<21, 16>(self.s2g.val()) - signed_bit_cast_safe::<21, 16>(self.s0g.val());
+        self.dv10b.next = signed_bit_cast_safe::<21, 16>(self.s1b.val()) - signed_bit_cast_safe::<21, 16>(self.s0b.val());
+        self.dv20b.next = signed_bit_cast_safe::<21, 16>(self.s2b.val()) - signed_bit_cast_safe::<21, 16>(self.s0b.val());
         // The carried fields enter station 1 from the command register in cycle 1.
         if self.tok.q.val().get_bit(0) {
             self.c_index[0].d.next = self.cmd1.q.val().index;
@@ -607,8 +605,8 @@ impl Logic for ColourSetup {
 
         // Cycles 1-4: the 14 products of det and the numerators, operands and products registered.
         for u in 0..4 {
-            self.opn_a[u].d.next = self.k0_18.val();
-            self.opn_b[u].d.next = self.k0_18.val();
+            self.opn_a[u].d.next = self.k0_21.val();
+            self.opn_b[u].d.next = self.k0_21.val();
         }
         if self.tok.q.val().get_bit(0) {
             self.opn_a[0].d.next = self.dx10.val();
@@ -655,8 +653,8 @@ impl Logic for ColourSetup {
         self.d23.next = self.pn[2].q.val() - self.pn[3].q.val();
         self.d01u.next = unsigned_cast(self.d01.val());
         self.d23u.next = unsigned_cast(self.d23.val());
-        self.n01.next = self.d01u.val().get_bits::<35>(0);
-        self.n23.next = self.d23u.val().get_bits::<35>(0);
+        self.n01.next = self.d01u.val().get_bits::<38>(0);
+        self.n23.next = self.d23u.val().get_bits::<38>(0);
 
         // Station loads: station j from station j-1 at the end of cycle 4(j-1).
         if self.tok.q.val().get_bit(3) {
@@ -842,7 +840,7 @@ impl Logic for ColourSetup {
         }
         // The numerators and det into the station of the cycle after (cycles 3-6).
         if self.tok.q.val().get_bit(2) {
-            self.det1.d.next = self.d01.val();
+            self.det1.d.next = signed_bit_cast_safe::<44, 42>(self.d01.val());
             self.na_r[0].d.next = self.n23.val();
         }
         if self.tok.q.val().get_bit(3) {
@@ -859,18 +857,18 @@ impl Logic for ColourSetup {
 
         // Cycle 5: |det| and its leading one start the division.
         self.det_abs.next = self.det2.q.val();
-        if self.det2.q.val().get_bit(35) {
-            self.det_abs.next = self.k0_36.val() - self.det2.q.val();
+        if self.det2.q.val().get_bit(43) {
+            self.det_abs.next = self.k0_44.val() - self.det2.q.val();
         }
         self.det_absu.next = unsigned_cast(self.det_abs.val());
         self.lead.x.next = self.det_absu.val();
         if self.tok.q.val().get_bit(4) {
-            self.rem[0].d.next = bit_cast::<37, 36>(self.lead.onehot.val());
-            self.den[0].d.next = bit_cast::<37, 36>(self.det_absu.val());
+            self.rem[0].d.next = bit_cast::<45, 44>(self.lead.onehot.val());
+            self.den[0].d.next = bit_cast::<45, 44>(self.det_absu.val());
             self.quo[0].d.next = self.k0_25.val();
             self.shift[0].d.next = self.lead.index.val();
-            self.neg[0].d.next = self.det2.q.val().get_bit(35);
-            self.zero[0].d.next = self.det2.q.val() == self.k0_36.val();
+            self.neg[0].d.next = self.det2.q.val().get_bit(43);
+            self.zero[0].d.next = self.det2.q.val() == self.k0_44.val();
         }
         // The division steps of stations 2..=8: in place in the station's window, into the next
         // station at its end.
@@ -921,16 +919,16 @@ impl Logic for ColourSetup {
         }
         self.sn_a.next = signed_cast(self.n_a.val());
         self.sn_b.next = signed_cast(self.n_b.val());
-        self.wn_a.next = signed_bit_cast_safe::<36, 35>(self.sn_a.val());
-        self.wn_b.next = signed_bit_cast_safe::<36, 35>(self.sn_b.val());
+        self.wn_a.next = signed_bit_cast_safe::<40, 38>(self.sn_a.val());
+        self.wn_b.next = signed_bit_cast_safe::<40, 38>(self.sn_b.val());
         if self.neg[7].q.val() {
-            self.wn_a.next = self.k0_36s.val() - signed_bit_cast_safe::<36, 35>(self.sn_a.val());
-            self.wn_b.next = self.k0_36s.val() - signed_bit_cast_safe::<36, 35>(self.sn_b.val());
+            self.wn_a.next = self.k0_40s.val() - signed_bit_cast_safe::<40, 38>(self.sn_a.val());
+            self.wn_b.next = self.k0_40s.val() - signed_bit_cast_safe::<40, 38>(self.sn_b.val());
         }
         self.opab_n[0].d.next = self.wn_a.val();
         self.opab_n[1].d.next = self.wn_b.val();
         self.opab_m.d.next = signed_cast(bit_cast::<26, 25>(self.quo[7].q.val()));
-        self.sh_ab1.d.next = bit_cast::<7, 6>(self.shift[7].q.val()) + self.k4_7.val();
+        self.sh_ab1.d.next = bit_cast::<7, 6>(self.shift[7].q.val());
         self.z_ab1.d.next = self.zero[7].q.val();
         self.sh_ab2.d.next = self.sh_ab1.q.val();
         self.z_ab2.d.next = self.z_ab1.q.val();
@@ -982,8 +980,8 @@ impl Logic for ColourSetup {
         }
         self.scx0.next = signed_cast(self.cx0.val());
         self.scy0.next = signed_cast(self.cy0.val());
-        self.ox.next = self.k8_18.val() - signed_bit_cast_safe::<18, 16>(self.scx0.val());
-        self.oy.next = self.k8_18.val() - signed_bit_cast_safe::<18, 16>(self.scy0.val());
+        self.ox.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(self.scx0.val());
+        self.oy.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(self.scy0.val());
         self.opc_a[0].d.next = signed_cast(self.ca.val());
         self.opc_o[0].d.next = self.ox.val();
         self.opc_a[1].d.next = signed_cast(self.cb.val());
@@ -996,11 +994,11 @@ impl Logic for ColourSetup {
             self.pc[u].d.next = self.mc[u].p.val();
         }
         self.cx.next = self.pc[0].q.val() + self.pc[1].q.val();
-        self.cx8.next = self.cx.val() + self.k8_64.val();
+        self.cx8.next = self.cx.val() + self.k128_64.val();
         self.cx8u.next = unsigned_cast(self.cx8.val());
-        self.cx60.next = self.cx8u.val().get_bits::<60>(4);
-        self.scx60.next = signed_cast(self.cx60.val());
-        self.cxr.next = signed_bit_cast_safe::<64, 60>(self.scx60.val());
+        self.cx56.next = self.cx8u.val().get_bits::<56>(8);
+        self.scx56.next = signed_cast(self.cx56.val());
+        self.cxr.next = signed_bit_cast_safe::<64, 56>(self.scx56.val());
         self.v0w.next = signed_bit_cast_safe::<64, 16>(self.cv2.q.val());
         self.v0s.next = unsigned_cast(self.v0w.val()) << self.k16_7.val();
         self.csum.next = signed_cast(self.v0s.val()) + self.cxr.val();

@@ -117,21 +117,21 @@ pub struct MaterialWord {
 pub const TDBS_RECORD_BITS: usize = 424;
 
 /// One colour-setup command (`golden::render::SetupCommand` at the port widths). Coordinates are
-/// S11.4 window subpixels, values 16-bit two's complement (RGB888 or Q1.14), all stored as raw bits
+/// S11.8 window subpixels (20 bits), values 16-bit two's complement (RGB888 or Q1.14), all stored as raw bits
 /// (a `LogicStruct` cannot hold `Signed`).
 ///
-/// Packed layout (297 bits, LSB first): `index` 15:0, `x0` 31:16, `y0` 47:32, `x1` 63:48, `y1` 79:64,
-/// `x2` 95:80, `y2` 111:96, `v0r v0g v0b v1r v1g v1b v2r v2g v2b` 255:112 (16 bits each, in that
-/// order), `material` 271:256, `flat` 272, `flat_r` 280:273, `flat_g` 288:281, `flat_b` 296:289.
+/// Packed layout (321 bits, LSB first): `index` 15:0, `x0` 35:16, `y0` 55:36, `x1` 75:56, `y1` 95:76,
+/// `x2` 115:96, `y2` 135:116, `v0r v0g v0b v1r v1g v1b v2r v2g v2b` 279:136 (16 bits each, in that
+/// order), `material` 295:280, `flat` 296, `flat_r` 304:297, `flat_g` 312:305, `flat_b` 320:313.
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
 pub struct SetupCommand {
     pub index: Bits<16>,
-    pub x0: Bits<16>,
-    pub y0: Bits<16>,
-    pub x1: Bits<16>,
-    pub y1: Bits<16>,
-    pub x2: Bits<16>,
-    pub y2: Bits<16>,
+    pub x0: Bits<20>,
+    pub y0: Bits<20>,
+    pub x1: Bits<20>,
+    pub y1: Bits<20>,
+    pub x2: Bits<20>,
+    pub y2: Bits<20>,
     pub v0r: Bits<16>,
     pub v0g: Bits<16>,
     pub v0b: Bits<16>,
@@ -149,7 +149,7 @@ pub struct SetupCommand {
 }
 
 /// Width of a packed [`SetupCommand`].
-pub const SETUP_COMMAND_BITS: usize = 297;
+pub const SETUP_COMMAND_BITS: usize = 321;
 
 /// One TdbT record (the texture half of the triangle database, issue 17): the planes s/w, t/w and
 /// 1/w of `golden::texcoord::TexPlanes`, each `a`, `b` (40 bits) and `c` (56 bits) as in
@@ -190,22 +190,22 @@ pub struct TexValues {
 pub const TEX_VALUES_BITS: usize = 297;
 
 /// One texture-setup command (`golden::cycle::tex_setup::TexSetupCmd`): the triangle's index and
-/// window coordinates as in [`SetupCommand`], and its [`TexValues`]. Packed layout (409 bits, LSB
-/// first): `index` 15:0, `x0 y0 x1 y1 x2 y2` 111:16, `values` 408:112.
+/// window coordinates as in [`SetupCommand`], and its [`TexValues`]. Packed layout (433 bits, LSB
+/// first): `index` 15:0, `x0 y0 x1 y1 x2 y2` 135:16, `values` 432:136.
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
 pub struct TexSetupCommand {
     pub index: Bits<16>,
-    pub x0: Bits<16>,
-    pub y0: Bits<16>,
-    pub x1: Bits<16>,
-    pub y1: Bits<16>,
-    pub x2: Bits<16>,
-    pub y2: Bits<16>,
+    pub x0: Bits<20>,
+    pub y0: Bits<20>,
+    pub x1: Bits<20>,
+    pub y1: Bits<20>,
+    pub x2: Bits<20>,
+    pub y2: Bits<20>,
     pub values: TexValues,
 }
 
 /// Width of a packed [`TexSetupCommand`].
-pub const TEX_SETUP_COMMAND_BITS: usize = 409;
+pub const TEX_SETUP_COMMAND_BITS: usize = 433;
 
 #[cfg(test)]
 mod tests {
@@ -223,8 +223,8 @@ mod tests {
         assert_eq!(b.get_bits::<16>(408).to_u64(), 0xabcd);
         let c = SetupCommand { flat: true, flat_b: 0x81.into(), ..Default::default() };
         let b: Bits<SETUP_COMMAND_BITS> = c.into();
-        assert!(b.get_bit(272));
-        assert_eq!(b.get_bits::<8>(289).to_u64(), 0x81);
+        assert!(b.get_bit(296));
+        assert_eq!(b.get_bits::<8>(313).to_u64(), 0x81);
     }
 
     #[test]

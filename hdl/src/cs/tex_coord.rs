@@ -276,7 +276,7 @@ impl Logic for TexCoord {
         self.v3.d.next = self.v2.q.val();
 
         // Stage 4: the reciprocal starts; S and T normalised by 2^(20 - e), saturated to 34 bits.
-        self.recip.request.data.next = self.n3.q.val();
+        self.recip.request.data.next = bit_cast::<44, 36>(self.n3.q.val());
         self.recip.request.valid.next = self.v3.q.val();
         self.recip.result.ready.next = true;
         self.rb[0].next = unsigned_cast(self.raw3[0].q.val());

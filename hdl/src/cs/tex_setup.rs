@@ -6,27 +6,27 @@
 //! is written 23 cycles after the command is taken.
 //!
 //! ```text
-//!  cmd (valid/ready, one per 4 cycles): index, x0..y2 (16 b), per vertex s/w, t/w, 1/w (33 b)
-//!   | station 1 (cycles 1-4): det = dx10 dy20 - dx20 dy10 (2 x 18x18, cycles 1-3)
+//!  cmd (valid/ready, one per 4 cycles): index, x0..y2 (20 b), per vertex s/w, t/w, 1/w (33 b)
+//!   | station 1 (cycles 1-4): det = dx10 dy20 - dx20 dy10 (2 x 21x21, cycles 1-3)
 //!   | cycle 4: |det| -> reciprocal unit (the RC's, pipelined, 10 cycles) -> mant, shift in cycle 14
 //!   | stations 2, 3: the command waits for the reciprocal
 //!   | station 4 (cycles 13-15): one plane per cycle, s/w then t/w then 1/w:
-//!   |   cycle 13+c: dv10, dv20 (34 b); 14+c: 4 products 34x18; 15+c: na, nb (52 b)
-//!   |   16+c: n negated if det < 0, 0 if det == 0; 17+c: n mant (2 x 52x26); 18+c: A, B = sat40(round)
-//!   |   19+c: A (8 - x0), B (8 - y0) (2 x 40x18); 20+c: C = sat56(v0 2^16 + round(sum / 16))
+//!   |   cycle 13+c: dv10, dv20 (34 b); 14+c: 4 products 34x21; 15+c: na, nb (55 b)
+//!   |   16+c: n negated if det < 0, 0 if det == 0; 17+c: n mant (2 x 55x26); 18+c: A, B = sat40(round)
+//!   |   19+c: A (128 - x0), B (128 - y0) (2 x 40x21); 20+c: C = sat56(v0 2^16 + round(sum / 256))
 //!   v cycle 23: tdbt_write {s/w plane (held from 21), t/w (from 22), 1/w}
 //! ```
 //!
 //! Widths: values are 33-bit two's complement (|s/w| <= 2^31 from `golden::texcoord::vertex_values`),
-//! so |dv| < 2^34, |n| < 2^50, |n mant| < 2^75 (78-bit products, `PlaneRoundWide`), |A (8 - x0)|
-//! < 2^56: nothing wraps for any port input.
+//! and coordinates 20-bit (S11.8), so |dv| < 2^34, |n| < 2^54, |n mant| < 2^78 (80-bit products,
+//! `PlaneRoundWide`), |A (128 - x0)| < 2^59: nothing wraps for any port input.
 //!
 //! The reciprocal of det is computed here again, not taken from `colour_setup`, which has the same
 //! quotient only in cycle 31 (its iterative divider): taking it there would hold every plane's
 //! numerators 17 cycles longer, more flip-flops than the pipelined divider costs. The command's
-//! stations (4 x 409 bits) are most of the block's flip-flops.
+//! stations (4 x 433 bits) are most of the block's flip-flops.
 
-use crate::common::{signed_bit_cast_safe, MulS, StreamIn};
+use crate::common::{signed_bit_cast_safe, MulSplitS, StreamIn};
 use crate::cs::plane_round::PlaneRoundWide;
 use crate::cs::{TdbtRecord, TexSetupCommand, TexValues};
 use crate::rc::reciprocal::Reciprocal;
@@ -53,10 +53,10 @@ pub struct TexSetup {
     cmd2: DFF<TexSetupCommand>,
     cmd3: DFF<TexSetupCommand>,
     cmd4: DFF<TexSetupCommand>,
-    opd_a: [DFF<Signed<18>>; 2],
-    opd_b: [DFF<Signed<18>>; 2],
-    pd: [DFF<Signed<36>>; 2],
-    det: DFF<Signed<36>>,
+    opd_a: [DFF<Signed<21>>; 2],
+    opd_b: [DFF<Signed<21>>; 2],
+    pd: [DFF<Signed<42>>; 2],
+    det: DFF<Signed<44>>,
     neg2: DFF<Bit>,
     neg3: DFF<Bit>,
     neg4: DFF<Bit>,
@@ -68,18 +68,18 @@ pub struct TexSetup {
     rneg: DFF<Bit>,
     rzero: DFF<Bit>,
     opn_a: [DFF<Signed<34>>; 4],
-    opn_b: [DFF<Signed<18>>; 4],
-    pn: [DFF<Signed<52>>; 4],
-    na: DFF<Signed<52>>,
-    nb: DFF<Signed<52>>,
-    side: [DFF<Bits<65>>; 7],
-    opab_n: [DFF<Signed<52>>; 2],
+    opn_b: [DFF<Signed<21>>; 4],
+    pn: [DFF<Signed<55>>; 4],
+    na: DFF<Signed<55>>,
+    nb: DFF<Signed<55>>,
+    side: [DFF<Bits<73>>; 7],
+    opab_n: [DFF<Signed<55>>; 2],
     opab_m: DFF<Signed<26>>,
     sh1: DFF<Bits<7>>,
     sh2: DFF<Bits<7>>,
-    pab: [DFF<Signed<78>>; 2],
+    pab: [DFF<Signed<80>>; 2],
     ab: [DFF<Bits<40>>; 2],
-    pc: [DFF<Signed<58>>; 2],
+    pc: [DFF<Signed<61>>; 2],
     ab7: [DFF<Bits<40>>; 2],
     pl_a: DFF<Bits<40>>,
     pl_b: DFF<Bits<40>>,
@@ -92,37 +92,37 @@ pub struct TexSetup {
     rt_c: DFF<Bits<56>>,
     idx5: DFF<Bits<16>>,
     idx6: DFF<Bits<16>>,
-    md: [MulS<18, 18, 36>; 2],
+    md: [MulSplitS<21, 21, 42, 3, 3>; 2],
     recip: Reciprocal,
-    mn: [MulS<34, 18, 52>; 4],
-    mab: [MulS<52, 26, 78>; 2],
+    mn: [MulSplitS<34, 21, 55, 0, 3>; 4],
+    mab: [MulSplitS<55, 26, 80, 3, 0>; 2],
     round: [PlaneRoundWide; 2],
-    mc: [MulS<40, 18, 58>; 2],
+    mc: [MulSplitS<40, 21, 61, 0, 3>; 2],
     ready: Signal<Local, Bit>,
     accept: Signal<Local, Bit>,
-    ax0: Signal<Local, Signed<16>>,
-    ay0: Signal<Local, Signed<16>>,
-    ax1: Signal<Local, Signed<16>>,
-    ay1: Signal<Local, Signed<16>>,
-    ax2: Signal<Local, Signed<16>>,
-    ay2: Signal<Local, Signed<16>>,
-    det_abs: Signal<Local, Signed<36>>,
-    det_absu: Signal<Local, Bits<36>>,
+    ax0: Signal<Local, Signed<20>>,
+    ay0: Signal<Local, Signed<20>>,
+    ax1: Signal<Local, Signed<20>>,
+    ay1: Signal<Local, Signed<20>>,
+    ax2: Signal<Local, Signed<20>>,
+    ay2: Signal<Local, Signed<20>>,
+    det_abs: Signal<Local, Signed<44>>,
+    det_absu: Signal<Local, Bits<44>>,
     det_zero: Signal<Local, Bit>,
-    gx0: Signal<Local, Signed<16>>,
-    gy0: Signal<Local, Signed<16>>,
-    gx1: Signal<Local, Signed<16>>,
-    gy1: Signal<Local, Signed<16>>,
-    gx2: Signal<Local, Signed<16>>,
-    gy2: Signal<Local, Signed<16>>,
-    dx10: Signal<Local, Signed<18>>,
-    dy10: Signal<Local, Signed<18>>,
-    dx20: Signal<Local, Signed<18>>,
-    dy20: Signal<Local, Signed<18>>,
-    ex10: Signal<Local, Signed<18>>,
-    ey10: Signal<Local, Signed<18>>,
-    ex20: Signal<Local, Signed<18>>,
-    ey20: Signal<Local, Signed<18>>,
+    gx0: Signal<Local, Signed<20>>,
+    gy0: Signal<Local, Signed<20>>,
+    gx1: Signal<Local, Signed<20>>,
+    gy1: Signal<Local, Signed<20>>,
+    gx2: Signal<Local, Signed<20>>,
+    gy2: Signal<Local, Signed<20>>,
+    dx10: Signal<Local, Signed<21>>,
+    dy10: Signal<Local, Signed<21>>,
+    dx20: Signal<Local, Signed<21>>,
+    dy20: Signal<Local, Signed<21>>,
+    ex10: Signal<Local, Signed<21>>,
+    ey10: Signal<Local, Signed<21>>,
+    ex20: Signal<Local, Signed<21>>,
+    ey20: Signal<Local, Signed<21>>,
     vals4: Signal<Local, TexValues>,
     vs0: Signal<Local, Bits<33>>,
     vs1: Signal<Local, Bits<33>>,
@@ -132,20 +132,20 @@ pub struct TexSetup {
     sv2: Signal<Local, Signed<33>>,
     dv10: Signal<Local, Signed<34>>,
     dv20: Signal<Local, Signed<34>>,
-    side_in: Signal<Local, Bits<65>>,
-    wn_a: Signal<Local, Signed<52>>,
-    wn_b: Signal<Local, Signed<52>>,
-    cx0: Signal<Local, Bits<16>>,
-    cy0: Signal<Local, Bits<16>>,
-    scx0: Signal<Local, Signed<16>>,
-    scy0: Signal<Local, Signed<16>>,
-    ox: Signal<Local, Signed<18>>,
-    oy: Signal<Local, Signed<18>>,
+    side_in: Signal<Local, Bits<73>>,
+    wn_a: Signal<Local, Signed<55>>,
+    wn_b: Signal<Local, Signed<55>>,
+    cx0: Signal<Local, Bits<20>>,
+    cy0: Signal<Local, Bits<20>>,
+    scx0: Signal<Local, Signed<20>>,
+    scy0: Signal<Local, Signed<20>>,
+    ox: Signal<Local, Signed<21>>,
+    oy: Signal<Local, Signed<21>>,
     cx: Signal<Local, Signed<64>>,
     cx8: Signal<Local, Signed<64>>,
     cx8u: Signal<Local, Bits<64>>,
-    cx60: Signal<Local, Bits<60>>,
-    scx60: Signal<Local, Signed<60>>,
+    cx56: Signal<Local, Bits<56>>,
+    scx56: Signal<Local, Signed<56>>,
     cxr: Signal<Local, Signed<64>>,
     cv: Signal<Local, Bits<33>>,
     scv: Signal<Local, Signed<33>>,
@@ -157,14 +157,13 @@ pub struct TexSetup {
     c56: Signal<Local, Bits<56>>,
     k1_23: Constant<Bits<23>>,
     k0_16: Constant<Bits<16>>,
-    k0_36: Constant<Signed<36>>,
-    k0_52: Constant<Signed<52>>,
-    k4_7: Constant<Bits<7>>,
+    k0_44: Constant<Signed<44>>,
+    k0_55: Constant<Signed<55>>,
     k16_7: Constant<Bits<7>>,
     k33_7: Constant<Bits<7>>,
-    k49_7: Constant<Bits<7>>,
-    k8_64: Constant<Signed<64>>,
-    k8_18: Constant<Signed<18>>,
+    k53_7: Constant<Bits<7>>,
+    k128_64: Constant<Signed<64>>,
+    k128_21: Constant<Signed<21>>,
     k0_40: Constant<Bits<40>>,
     k0_56: Constant<Bits<56>>,
     kmin_56: Constant<Bits<56>>,
@@ -276,8 +275,8 @@ impl Default for TexSetup {
             cx: Default::default(),
             cx8: Default::default(),
             cx8u: Default::default(),
-            cx60: Default::default(),
-            scx60: Default::default(),
+            cx56: Default::default(),
+            scx56: Default::default(),
             cxr: Default::default(),
             cv: Default::default(),
             scv: Default::default(),
@@ -289,14 +288,13 @@ impl Default for TexSetup {
             c56: Default::default(),
             k1_23: Constant::new(1.into()),
             k0_16: Constant::new(0.into()),
-            k0_36: Constant::new(0.into()),
-            k0_52: Constant::new(0.into()),
-            k4_7: Constant::new(4.into()),
+            k0_44: Constant::new(0.into()),
+            k0_55: Constant::new(0.into()),
             k16_7: Constant::new(16.into()),
             k33_7: Constant::new(33.into()),
-            k49_7: Constant::new(49.into()),
-            k8_64: Constant::new(8.into()),
-            k8_18: Constant::new(8.into()),
+            k53_7: Constant::new(53.into()),
+            k128_64: Constant::new(128.into()),
+            k128_21: Constant::new(128.into()),
             k0_40: Constant::new(0.into()),
             k0_56: Constant::new(0.into()),
             kmin_56: Constant::new((1u64 << 55).into()),
@@ -452,10 +450,10 @@ impl Logic for TexSetup {
         self.ay1.next = signed_cast(self.cmd1.q.val().y1);
         self.ax2.next = signed_cast(self.cmd1.q.val().x2);
         self.ay2.next = signed_cast(self.cmd1.q.val().y2);
-        self.ex10.next = signed_bit_cast_safe::<18, 16>(self.ax1.val()) - signed_bit_cast_safe::<18, 16>(self.ax0.val());
-        self.ey10.next = signed_bit_cast_safe::<18, 16>(self.ay1.val()) - signed_bit_cast_safe::<18, 16>(self.ay0.val());
-        self.ex20.next = signed_bit_cast_safe::<18, 16>(self.ax2.val()) - signed_bit_cast_safe::<18, 16>(self.ax0.val());
-        self.ey20.next = signed_bit_cast_safe::<18, 16>(self.ay2.val()) - signed_bit_cast_safe::<18, 16>(self.ay0.val());
+        self.ex10.next = signed_bit_cast_safe::<21, 20>(self.ax1.val()) - signed_bit_cast_safe::<21, 20>(self.ax0.val());
+        self.ey10.next = signed_bit_cast_safe::<21, 20>(self.ay1.val()) - signed_bit_cast_safe::<21, 20>(self.ay0.val());
+        self.ex20.next = signed_bit_cast_safe::<21, 20>(self.ax2.val()) - signed_bit_cast_safe::<21, 20>(self.ax0.val());
+        self.ey20.next = signed_bit_cast_safe::<21, 20>(self.ay2.val()) - signed_bit_cast_safe::<21, 20>(self.ay0.val());
         self.opd_a[0].d.next = self.ex10.val();
         self.opd_b[0].d.next = self.ey20.val();
         self.opd_a[1].d.next = self.ex20.val();
@@ -465,22 +463,22 @@ impl Logic for TexSetup {
             self.md[u].b.next = self.opd_b[u].q.val();
             self.pd[u].d.next = self.md[u].p.val();
         }
-        self.det.d.next = self.pd[0].q.val() - self.pd[1].q.val();
+        self.det.d.next = signed_bit_cast_safe::<44, 42>(self.pd[0].q.val()) - signed_bit_cast_safe::<44, 42>(self.pd[1].q.val());
 
         // Cycle 4: |det| into the reciprocal unit (result in cycle 14); its sign and det == 0 wait
         // beside it in the stations.
         self.det_abs.next = self.det.q.val();
-        if self.det.q.val().get_bit(35) {
-            self.det_abs.next = self.k0_36.val() - self.det.q.val();
+        if self.det.q.val().get_bit(43) {
+            self.det_abs.next = self.k0_44.val() - self.det.q.val();
         }
         self.det_absu.next = unsigned_cast(self.det_abs.val());
-        self.det_zero.next = self.det.q.val() == self.k0_36.val();
+        self.det_zero.next = self.det.q.val() == self.k0_44.val();
         self.recip.clock.next = self.clock.val();
         self.recip.request.data.next = self.det_absu.val();
         self.recip.request.valid.next = self.tok.q.val().get_bit(3);
         self.recip.result.ready.next = true;
         if self.tok.q.val().get_bit(3) {
-            self.neg2.d.next = self.det.q.val().get_bit(35);
+            self.neg2.d.next = self.det.q.val().get_bit(43);
             self.zero2.d.next = self.det_zero.val();
         }
         if self.tok.q.val().get_bit(7) {
@@ -509,10 +507,10 @@ impl Logic for TexSetup {
         self.gy1.next = signed_cast(self.cmd4.q.val().y1);
         self.gx2.next = signed_cast(self.cmd4.q.val().x2);
         self.gy2.next = signed_cast(self.cmd4.q.val().y2);
-        self.dx10.next = signed_bit_cast_safe::<18, 16>(self.gx1.val()) - signed_bit_cast_safe::<18, 16>(self.gx0.val());
-        self.dy10.next = signed_bit_cast_safe::<18, 16>(self.gy1.val()) - signed_bit_cast_safe::<18, 16>(self.gy0.val());
-        self.dx20.next = signed_bit_cast_safe::<18, 16>(self.gx2.val()) - signed_bit_cast_safe::<18, 16>(self.gx0.val());
-        self.dy20.next = signed_bit_cast_safe::<18, 16>(self.gy2.val()) - signed_bit_cast_safe::<18, 16>(self.gy0.val());
+        self.dx10.next = signed_bit_cast_safe::<21, 20>(self.gx1.val()) - signed_bit_cast_safe::<21, 20>(self.gx0.val());
+        self.dy10.next = signed_bit_cast_safe::<21, 20>(self.gy1.val()) - signed_bit_cast_safe::<21, 20>(self.gy0.val());
+        self.dx20.next = signed_bit_cast_safe::<21, 20>(self.gx2.val()) - signed_bit_cast_safe::<21, 20>(self.gx0.val());
+        self.dy20.next = signed_bit_cast_safe::<21, 20>(self.gy2.val()) - signed_bit_cast_safe::<21, 20>(self.gy0.val());
         self.vals4.next = self.cmd4.q.val().values;
         self.vs0.next = self.vals4.val().v0s;
         self.vs1.next = self.vals4.val().v1s;
@@ -541,7 +539,7 @@ impl Logic for TexSetup {
         self.opn_a[3].d.next = self.dv10.val();
         self.opn_b[3].d.next = self.dx20.val();
         // What the plane needs later, {y0, x0, v0}, one cycle behind the plane's operands per entry.
-        self.side_in.next = bit_cast::<65, 33>(self.vs0.val()) | (bit_cast::<65, 16>(self.cmd4.q.val().x0) << self.k33_7.val()) | (bit_cast::<65, 16>(self.cmd4.q.val().y0) << self.k49_7.val());
+        self.side_in.next = bit_cast::<73, 33>(self.vs0.val()) | (bit_cast::<73, 20>(self.cmd4.q.val().x0) << self.k33_7.val()) | (bit_cast::<73, 20>(self.cmd4.q.val().y0) << self.k53_7.val());
         self.side[0].d.next = self.side_in.val();
         for u in 1..7 {
             self.side[u].d.next = self.side[u - 1].q.val();
@@ -559,17 +557,17 @@ impl Logic for TexSetup {
         self.wn_a.next = self.na.q.val();
         self.wn_b.next = self.nb.q.val();
         if self.rneg.q.val() {
-            self.wn_a.next = self.k0_52.val() - self.na.q.val();
-            self.wn_b.next = self.k0_52.val() - self.nb.q.val();
+            self.wn_a.next = self.k0_55.val() - self.na.q.val();
+            self.wn_b.next = self.k0_55.val() - self.nb.q.val();
         }
         if self.rzero.q.val() {
-            self.wn_a.next = self.k0_52.val();
-            self.wn_b.next = self.k0_52.val();
+            self.wn_a.next = self.k0_55.val();
+            self.wn_b.next = self.k0_55.val();
         }
         self.opab_n[0].d.next = self.wn_a.val();
         self.opab_n[1].d.next = self.wn_b.val();
         self.opab_m.d.next = signed_cast(bit_cast::<26, 25>(self.rm.q.val()));
-        self.sh1.d.next = bit_cast::<7, 6>(self.rsh.q.val()) + self.k4_7.val();
+        self.sh1.d.next = bit_cast::<7, 6>(self.rsh.q.val());
         self.sh2.d.next = self.sh1.q.val();
         for u in 0..2 {
             self.mab[u].a.next = self.opab_n[u].q.val();
@@ -581,12 +579,12 @@ impl Logic for TexSetup {
         }
 
         // Cycles 19-21: A (8 - x0) and B (8 - y0); C = sat56(v0 2^16 + round((..) / 16)) a cycle later.
-        self.cx0.next = self.side[5].q.val().get_bits::<16>(33);
-        self.cy0.next = self.side[5].q.val().get_bits::<16>(49);
+        self.cx0.next = self.side[5].q.val().get_bits::<20>(33);
+        self.cy0.next = self.side[5].q.val().get_bits::<20>(53);
         self.scx0.next = signed_cast(self.cx0.val());
         self.scy0.next = signed_cast(self.cy0.val());
-        self.ox.next = self.k8_18.val() - signed_bit_cast_safe::<18, 16>(self.scx0.val());
-        self.oy.next = self.k8_18.val() - signed_bit_cast_safe::<18, 16>(self.scy0.val());
+        self.ox.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(self.scx0.val());
+        self.oy.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(self.scy0.val());
         self.mc[0].a.next = signed_cast(self.ab[0].q.val());
         self.mc[0].b.next = self.ox.val();
         self.mc[1].a.next = signed_cast(self.ab[1].q.val());
@@ -595,12 +593,12 @@ impl Logic for TexSetup {
             self.pc[u].d.next = self.mc[u].p.val();
             self.ab7[u].d.next = self.ab[u].q.val();
         }
-        self.cx.next = signed_bit_cast_safe::<64, 58>(self.pc[0].q.val()) + signed_bit_cast_safe::<64, 58>(self.pc[1].q.val());
-        self.cx8.next = self.cx.val() + self.k8_64.val();
+        self.cx.next = signed_bit_cast_safe::<64, 61>(self.pc[0].q.val()) + signed_bit_cast_safe::<64, 61>(self.pc[1].q.val());
+        self.cx8.next = self.cx.val() + self.k128_64.val();
         self.cx8u.next = unsigned_cast(self.cx8.val());
-        self.cx60.next = self.cx8u.val().get_bits::<60>(4);
-        self.scx60.next = signed_cast(self.cx60.val());
-        self.cxr.next = signed_bit_cast_safe::<64, 60>(self.scx60.val());
+        self.cx56.next = self.cx8u.val().get_bits::<56>(8);
+        self.scx56.next = signed_cast(self.cx56.val());
+        self.cxr.next = signed_bit_cast_safe::<64, 56>(self.scx56.val());
         self.cv.next = self.side[6].q.val().get_bits::<33>(0);
         self.scv.next = signed_cast(self.cv.val());
         self.v0w.next = signed_bit_cast_safe::<64, 33>(self.scv.val());

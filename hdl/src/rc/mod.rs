@@ -49,7 +49,7 @@ pub const CULL_BACK: u64 = 0;
 pub const CULL_FRONT: u64 = 1;
 pub const CULL_NONE: u64 = 2;
 
-/// One command word: 190 bits, `kind` at bit 0.
+/// One command word: 214 bits, `kind` at bit 0.
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
 pub struct RcCommand {
     /// CMD_FRAME, CMD_TRIANGLE or CMD_END_OF_FRAME.
@@ -62,15 +62,15 @@ pub struct RcCommand {
     pub cull: Bits<2>,
     /// The front face is clockwise on the screen (glFrontFace(GL_CW)).
     pub front_cw: Bit,
-    /// Window vertices: x, y signed S11.4, z unsigned 24 bits.
-    pub x0: Bits<16>,
-    pub y0: Bits<16>,
+    /// Window vertices: x, y signed S11.8 (20 bits), z unsigned 24 bits.
+    pub x0: Bits<20>,
+    pub y0: Bits<20>,
     pub z0: Bits<24>,
-    pub x1: Bits<16>,
-    pub y1: Bits<16>,
+    pub x1: Bits<20>,
+    pub y1: Bits<20>,
     pub z1: Bits<24>,
-    pub x2: Bits<16>,
-    pub y2: Bits<16>,
+    pub x2: Bits<20>,
+    pub y2: Bits<20>,
     pub z2: Bits<24>,
 }
 

@@ -23,7 +23,7 @@
 //! `mant = 2^25 - 1`, `shift = 0`.
 
 use crate::common::{StreamIn, StreamOut};
-use crate::common::{DivStep, LeadingOne36};
+use crate::common::{DivStep45 as DivStep, LeadingOne44};
 use rust_hdl::prelude::*;
 
 /// The divider's answer: `1/det = mant * 2^-(shift + 24)`.
@@ -38,8 +38,8 @@ pub struct RecipResult {
 pub struct RecipStation {
     pub valid: Bit,
     /// Partial remainder, always < 2 * den.
-    pub rem: Bits<37>,
-    pub den: Bits<37>,
+    pub rem: Bits<45>,
+    pub den: Bits<45>,
     pub quo: Bits<25>,
     pub shift: Bits<6>,
 }
@@ -55,14 +55,14 @@ pub const RECIP_LATENCY: u64 = RECIP_STATIONS;
 pub struct Reciprocal {
     pub clock: Signal<In, Clock>,
     // From the requester
-    /// The positive determinant, 36 bits unsigned.
-    pub request: StreamIn<Bits<36>>,
+    /// The positive determinant, 44 bits unsigned.
+    pub request: StreamIn<Bits<44>>,
     // To the requester
     /// The reciprocal, held until taken.
     pub result: StreamOut<RecipResult>,
 
     /// Normalisation of the request: the divisor's leading one and its index.
-    lead: LeadingOne36,
+    lead: LeadingOne44,
     st0: DFF<RecipStation>,
     st1: DFF<RecipStation>,
     st2: DFF<RecipStation>,
@@ -160,8 +160,8 @@ impl Logic for Reciprocal {
         // Station 0's input: the request, normalised.
         self.lead.x.next = self.request.data.val();
         self.norm.next.valid = self.request.valid.val();
-        self.norm.next.den = bit_cast::<37, 36>(self.request.data.val());
-        self.norm.next.rem = bit_cast::<37, 36>(self.lead.onehot.val());
+        self.norm.next.den = bit_cast::<45, 44>(self.request.data.val());
+        self.norm.next.rem = bit_cast::<45, 44>(self.lead.onehot.val());
         self.norm.next.quo = self.k0_25.val();
         self.norm.next.shift = self.lead.index.val();
         self.d1_0.rem.next = self.st0.q.val().rem;
@@ -316,7 +316,7 @@ mod tests {
     #[test]
     fn reciprocal_is_floor_of_two_to_the_shift_plus_24_over_det_after_10_cycles() {
         assert_eq!(RECIP_LATENCY, 10, "the figure in the test's name");
-        for det in [1u64, 2, 3, 5, 7, 255, 256, 1000, 65535, 65536, 123456789, (1 << 34) - 1, (1 << 35) + 12345, (1 << 36) - 1] {
+        for det in [1u64, 2, 3, 5, 7, 255, 256, 1000, 65535, 65536, 123456789, (1 << 34) - 1, (1 << 35) + 12345, (1 << 36) - 1, (1 << 43) + 4321, (1 << 44) - 1] {
             let r = run(&[det], |_| true);
             let (mant, shift) = exact(det);
             assert_eq!((r[0].0, r[0].1), (mant, shift), "det {det}");
@@ -326,7 +326,7 @@ mod tests {
 
     #[test]
     fn back_to_back_requests_give_one_result_per_clock_in_request_order() {
-        let dets: Vec<u64> = (0..40u64).map(|k| 1 + k * 0x1234567 % ((1 << 36) - 1)).collect();
+        let dets: Vec<u64> = (0..40u64).map(|k| 1 + k * 0x1234567 % ((1 << 44) - 1)).collect();
         let r = run(&dets, |_| true);
         for (k, (&det, &(mant, shift, cycle))) in dets.iter().zip(&r).enumerate() {
             assert_eq!((mant, shift), exact(det), "request {k}");
@@ -336,7 +336,7 @@ mod tests {
 
     #[test]
     fn a_stalled_result_holds_the_pipeline_and_loses_nothing() {
-        let dets: Vec<u64> = (0..30u64).map(|k| 3 + k * 0x9e3779b9 % ((1 << 36) - 3)).collect();
+        let dets: Vec<u64> = (0..30u64).map(|k| 3 + k * 0x9e3779b9 % ((1 << 44) - 3)).collect();
         // Taken on two clocks of every five only.
         let r = run(&dets, |c| c % 5 == 1 || c % 5 == 3);
         let got: Vec<(u64, u64)> = r.iter().map(|&(m, s, _)| (m, s)).collect();

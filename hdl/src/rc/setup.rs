@@ -7,7 +7,7 @@
 //!  cmd --->| S0   |->| S1    |->| S2      |->| S3   | S4   |->| S5     |->| S6      |->| record  |-> rec_*
 //! (valid/  | Det  |  | Order |  | Edges   |  | Hold | Hold |  | Grad   |  | Plane   |  | queue   |   (valid/
 //!  ready)  | 2x   |  |       |  | 4x      |  |      |      |  | 1x     |  | 2x      |  | 4 deep  |    ready)
-//!          |17x17 |  |       |  | 25x18   |  |      |      |  | 44x26  |  | 40x18   |  +---------+
+//!          |21x21 |  |       |  | 25x21   |  |      |      |  | 47x26  |  | 40x21   |  +---------+
 //!          +------+  +---+---+  +---------+  +------+------+  +---^----+  +---------+
 //!                        | abs(det)  +--------------------------+  | mant, shift
 //!                        +---------->| reciprocal, 10 stations  |--+
@@ -17,22 +17,22 @@
 //! Each stage holds one record (docs/rc.md, "Setup"; `golden::cycle::rc` models the same schedule).
 //! A drawn triangle spends 1, 1, 3, 1, 1, 4 and 4 cycles in S0..S6 when nothing waits; any other
 //! command (frame start, end of frame, a culled or empty-box triangle) one cycle in each.
-//! * S0 `Det`: det = dx10*dy20 - dx20*dy10 (two 17x17 products); the clamped bounding box
-//!   `[(min+7)>>4, (max-8)>>4]`.
+//! * S0 `Det`: det = dx10*dy20 - dx20*dy10 (two 21x21 products); the clamped bounding box
+//!   `[(min+127)>>8, (max-128)>>8]`.
 //! * S1 `Order`: zero area / cull decision from det's sign, the cull mode and the front face;
 //!   canonical order (swap vertices 1 and 2 if det < 0); all three edges' multiplier operands, fill-rule
-//!   flags and steps (-16*dy, 16*dx); the start address Y0*W + X0; the reciprocal request of abs(det).
+//!   flags and steps (-256*dy, 256*dx); the start address Y0*W + X0; the reciprocal request of abs(det).
 //! * S2 `Edges` on two dot units (a*b - c*d each): phase 0 E0, E1; phase 1 E2 and
 //!   na = dz10*dy20 - dz20*dy10; phase 2 nb = dz20*dx10 - dz10*dx20.
-//!   `E = dx*(16*Y0+8-a.y) - dy*(16*X0+8-a.x) - bias` (bias 0 on a top or left edge, else 1).
+//!   `E = dx*(256*Y0+128-a.y) - dy*(256*X0+128-a.x) - bias` (bias 0 on a top or left edge, else 1).
 //! * S3, S4 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 10, is longer
 //!   than S2's three cycles).
 //! * S5 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1 shifts
-//!   that product right by shift+3 and forms nb*mant; phase 2 `A = sat40((shifted + 1) >> 1)` (which is
-//!   `round(na*mant >> (shift+4))`) and shifts nb*mant; phase 3 B likewise. The shift and the rounding
+//!   twice that product right by shift (= the product by shift-1) and forms nb*mant; phase 2
+//!   `A = sat40((shifted + 1) >> 1)` (which is `round(na*mant >> shift)`, also for shift 0) and shifts nb*mant; phase 3 B likewise. The shift and the rounding
 //!   are a cycle each since issue 15 item 5 (the one-cycle form was the RC's critical path).
-//! * S6 `Plane` (two 40x18 products per cycle): phase 0 A*(8-x0), B*(8-y0); phase 1 their sum, A*X0, B*Y0;
-//!   phase 2 `C = (z0 << 16) + round(sum >> 4)` and A*X0 + B*Y0; phase 3 raw = C + A*X0 + B*Y0 (the
+//! * S6 `Plane` (two 40x21 products per cycle): phase 0 A*(128-x0), B*(128-y0); phase 1 their sum, A*X0,
+//!   B*Y0; phase 2 `C = (z0 << 16) + round(sum >> 8)` and A*X0 + B*Y0; phase 3 raw = C + A*X0 + B*Y0 (the
 //!   depth plane's raw value at the box's first pixel) goes into the queue with the record.
 //!
 //! Handshake, from the registers at the start of a cycle, last stage first: stage k hands its record on
@@ -42,14 +42,15 @@
 //! station is empty or S5 takes the result. Everything is first in, first out: records leave in command
 //! order.
 //!
-//! Widths: inputs are any 16-bit S11.4 values, so |dx|, |dy| < 2^16; E stays below 2^34 in magnitude
-//! on the screen (36-bit registers). na, nb < 2^42; na*mant < 2^67 (70-bit product). C never
-//! saturates at 56 bits (|A| <= 2^39, |8-x0| <= 2^15: |C| < 2^51), so the golden model's saturation
+//! Widths: inputs are any 20-bit S11.8 values, so |dx|, |dy| < 2^20 and |det| < 2^41 (44 bits, the
+//! reciprocal's 44-bit request); E stays below 2^41 in magnitude on the screen (44-bit registers). na,
+//! nb < 2^45 (47-bit dot products); na*mant < 2^69 (73-bit product, doubled for the shift). C never
+//! saturates at 56 bits (|A| <= 2^39, |128-x0| <= 2^19 + 128: |C| < 2^52), so the golden model's saturation
 //! of C needs no hardware; raw < 2^52 anywhere in the box (56-bit registers).
 
 use super::reciprocal::Reciprocal;
 use super::RcCommand;
-use crate::common::{signed_bit_cast_safe, MulS, StreamIn};
+use crate::common::{signed_bit_cast_safe, MulS, MulSplitS, StreamIn};
 use rust_hdl::prelude::*;
 
 /// Record kinds handed to the traversal.
@@ -75,15 +76,15 @@ pub struct SetupRec {
     pub by0: Bits<10>,
     pub by1: Bits<10>,
     pub addr: Bits<20>,
-    pub e0: Bits<36>,
-    pub e1: Bits<36>,
-    pub e2: Bits<36>,
-    pub sx0: Bits<22>,
-    pub sx1: Bits<22>,
-    pub sx2: Bits<22>,
-    pub sy0: Bits<22>,
-    pub sy1: Bits<22>,
-    pub sy2: Bits<22>,
+    pub e0: Bits<44>,
+    pub e1: Bits<44>,
+    pub e2: Bits<44>,
+    pub sx0: Bits<30>,
+    pub sx1: Bits<30>,
+    pub sx2: Bits<30>,
+    pub sy0: Bits<30>,
+    pub sy1: Bits<30>,
+    pub sy2: Bits<30>,
     pub a: Bits<40>,
     pub b: Bits<40>,
     pub raw: Bits<56>,
@@ -94,10 +95,10 @@ pub struct SetupRec {
 /// What S2..S6 carry beside a [`SetupRec`] to find the depth plane (not queued).
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
 pub struct PlaneIn {
-    pub na: Bits<44>,
-    pub nb: Bits<44>,
-    pub x0: Bits<16>,
-    pub y0: Bits<16>,
+    pub na: Bits<47>,
+    pub nb: Bits<47>,
+    pub x0: Bits<20>,
+    pub y0: Bits<20>,
     pub z0: Bits<24>,
     pub mant: Bits<25>,
     pub shift: Bits<6>,
@@ -131,16 +132,16 @@ pub struct Setup {
     /// Address of (bx0, by0): by0 * width + bx0.
     pub rec_addr: Signal<Out, Bits<20>>,
     /// Biased edge functions at (bx0, by0); inside is all >= 0.
-    pub rec_e0: Signal<Out, Signed<36>>,
-    pub rec_e1: Signal<Out, Signed<36>>,
-    pub rec_e2: Signal<Out, Signed<36>>,
-    /// Edge increments per pixel in x (-16*dy) and per row (16*dx).
-    pub rec_sx0: Signal<Out, Signed<22>>,
-    pub rec_sx1: Signal<Out, Signed<22>>,
-    pub rec_sx2: Signal<Out, Signed<22>>,
-    pub rec_sy0: Signal<Out, Signed<22>>,
-    pub rec_sy1: Signal<Out, Signed<22>>,
-    pub rec_sy2: Signal<Out, Signed<22>>,
+    pub rec_e0: Signal<Out, Signed<44>>,
+    pub rec_e1: Signal<Out, Signed<44>>,
+    pub rec_e2: Signal<Out, Signed<44>>,
+    /// Edge increments per pixel in x (-256*dy) and per row (256*dx).
+    pub rec_sx0: Signal<Out, Signed<30>>,
+    pub rec_sx1: Signal<Out, Signed<30>>,
+    pub rec_sx2: Signal<Out, Signed<30>>,
+    pub rec_sy0: Signal<Out, Signed<30>>,
+    pub rec_sy1: Signal<Out, Signed<30>>,
+    pub rec_sy2: Signal<Out, Signed<30>>,
     /// Depth plane: raw value (16 fraction bits) at (bx0, by0), and its increments A (x), B (y).
     pub rec_raw: Signal<Out, Signed<56>>,
     pub rec_a: Signal<Out, Signed<40>>,
@@ -150,18 +151,18 @@ pub struct Setup {
     // Children
     recip: Reciprocal,
     /// S0: det's two products.
-    mul_d0: MulS<17, 17, 34>,
-    mul_d1: MulS<17, 17, 34>,
+    mul_d0: MulSplitS<21, 21, 42, 3, 3>,
+    mul_d1: MulSplitS<21, 21, 42, 3, 3>,
     /// S2: two dot units, a0*b0 - a1*b1 and c0*d0 - c1*d1.
-    mul_a0: MulS<25, 18, 43>,
-    mul_a1: MulS<25, 18, 43>,
-    mul_b0: MulS<25, 18, 43>,
-    mul_b1: MulS<25, 18, 43>,
+    mul_a0: MulSplitS<25, 21, 46, 0, 3>,
+    mul_a1: MulSplitS<25, 21, 46, 0, 3>,
+    mul_b0: MulSplitS<25, 21, 46, 0, 3>,
+    mul_b1: MulSplitS<25, 21, 46, 0, 3>,
     /// S5: the gradients.
-    mul_g: MulS<44, 26, 70>,
+    mul_g: MulS<47, 26, 73>,
     /// S6: the plane's two products per cycle.
-    mul_p: MulS<40, 18, 58>,
-    mul_q: MulS<40, 18, 58>,
+    mul_p: MulSplitS<40, 21, 61, 0, 3>,
+    mul_q: MulSplitS<40, 21, 61, 0, 3>,
 
     // S0 `Det`: the command.
     s0_v: DFF<Bit>,
@@ -169,7 +170,7 @@ pub struct Setup {
     // S1 `Order`: the command, det and the clamped box.
     s1_v: DFF<Bit>,
     s1: DFF<RcCommand>,
-    s1_det: DFF<Signed<36>>,
+    s1_det: DFF<Signed<44>>,
     s1_bx0: DFF<Bits<10>>,
     s1_bx1: DFF<Bits<10>>,
     s1_by0: DFF<Bits<10>>,
@@ -181,26 +182,26 @@ pub struct Setup {
     s2: DFF<SetupRec>,
     s2p: DFF<PlaneIn>,
     la0: DFF<Signed<25>>,
-    lb0: DFF<Signed<18>>,
+    lb0: DFF<Signed<21>>,
     ra0: DFF<Signed<25>>,
-    rb0: DFF<Signed<18>>,
+    rb0: DFF<Signed<21>>,
     tl0: DFF<Bit>,
     la1: DFF<Signed<25>>,
-    lb1: DFF<Signed<18>>,
+    lb1: DFF<Signed<21>>,
     ra1: DFF<Signed<25>>,
-    rb1: DFF<Signed<18>>,
+    rb1: DFF<Signed<21>>,
     tl1: DFF<Bit>,
     la2: DFF<Signed<25>>,
-    lb2: DFF<Signed<18>>,
+    lb2: DFF<Signed<21>>,
     ra2: DFF<Signed<25>>,
-    rb2: DFF<Signed<18>>,
+    rb2: DFF<Signed<21>>,
     tl2: DFF<Bit>,
     n_dz10: DFF<Signed<25>>,
     n_dz20: DFF<Signed<25>>,
-    n_dx10: DFF<Signed<18>>,
-    n_dx20: DFF<Signed<18>>,
-    n_dy10: DFF<Signed<18>>,
-    n_dy20: DFF<Signed<18>>,
+    n_dx10: DFF<Signed<21>>,
+    n_dx20: DFF<Signed<21>>,
+    n_dy10: DFF<Signed<21>>,
+    n_dy20: DFF<Signed<21>>,
     // S3, S4 `Hold`.
     s3_v: DFF<Bit>,
     s3: DFF<SetupRec>,
@@ -213,18 +214,18 @@ pub struct Setup {
     s5_phase: DFF<Bits<2>>,
     s5: DFF<SetupRec>,
     s5p: DFF<PlaneIn>,
-    g_prod: DFF<Bits<70>>,
+    g_prod: DFF<Bits<73>>,
     /// The product shifted right by shift + 3 (arithmetic): the gradient before its last bit's rounding.
-    g_sh: DFF<Bits<70>>,
+    g_sh: DFF<Bits<73>>,
     // S6 `Plane`: the record, its phase, the two product registers, their sum, C and the sum of the
     // start terms.
     s6_v: DFF<Bit>,
     s6_phase: DFF<Bits<2>>,
     s6: DFF<SetupRec>,
     s6p: DFF<PlaneIn>,
-    p_prod: DFF<Bits<58>>,
-    q_prod: DFF<Bits<58>>,
-    p_acc: DFF<Signed<58>>,
+    p_prod: DFF<Bits<61>>,
+    q_prod: DFF<Bits<61>>,
+    p_acc: DFF<Signed<62>>,
     p_c: DFF<Signed<56>>,
     p_s: DFF<Signed<56>>,
     // The record queue, head first, and its length.
@@ -259,46 +260,46 @@ pub struct Setup {
     q_after: Signal<Local, Bits<3>>,
     pushed: Signal<Local, SetupRec>,
     // S0
-    v0x: Signal<Local, Signed<16>>,
-    v0y: Signal<Local, Signed<16>>,
-    v1x: Signal<Local, Signed<16>>,
-    v1y: Signal<Local, Signed<16>>,
-    v2x: Signal<Local, Signed<16>>,
-    v2y: Signal<Local, Signed<16>>,
-    dx10: Signal<Local, Signed<17>>,
-    dy10: Signal<Local, Signed<17>>,
-    dx20: Signal<Local, Signed<17>>,
-    dy20: Signal<Local, Signed<17>>,
-    det: Signal<Local, Signed<36>>,
-    xmin: Signal<Local, Signed<16>>,
-    xmax: Signal<Local, Signed<16>>,
-    ymin: Signal<Local, Signed<16>>,
-    ymax: Signal<Local, Signed<16>>,
-    lo_x: Signal<Local, Signed<17>>,
-    hi_x: Signal<Local, Signed<17>>,
-    lo_y: Signal<Local, Signed<17>>,
-    hi_y: Signal<Local, Signed<17>>,
+    v0x: Signal<Local, Signed<20>>,
+    v0y: Signal<Local, Signed<20>>,
+    v1x: Signal<Local, Signed<20>>,
+    v1y: Signal<Local, Signed<20>>,
+    v2x: Signal<Local, Signed<20>>,
+    v2y: Signal<Local, Signed<20>>,
+    dx10: Signal<Local, Signed<21>>,
+    dy10: Signal<Local, Signed<21>>,
+    dx20: Signal<Local, Signed<21>>,
+    dy20: Signal<Local, Signed<21>>,
+    det: Signal<Local, Signed<44>>,
+    xmin: Signal<Local, Signed<20>>,
+    xmax: Signal<Local, Signed<20>>,
+    ymin: Signal<Local, Signed<20>>,
+    ymax: Signal<Local, Signed<20>>,
+    lo_x: Signal<Local, Signed<21>>,
+    hi_x: Signal<Local, Signed<21>>,
+    lo_y: Signal<Local, Signed<21>>,
+    hi_y: Signal<Local, Signed<21>>,
     box_x0: Signal<Local, Signed<13>>,
     box_x1: Signal<Local, Signed<13>>,
     box_y0: Signal<Local, Signed<13>>,
     box_y1: Signal<Local, Signed<13>>,
     box_empty: Signal<Local, Bit>,
-    o0x: Signal<Local, Bits<16>>,
-    o0y: Signal<Local, Bits<16>>,
-    o1x: Signal<Local, Bits<16>>,
-    o1y: Signal<Local, Bits<16>>,
-    o2x: Signal<Local, Bits<16>>,
-    o2y: Signal<Local, Bits<16>>,
+    o0x: Signal<Local, Bits<20>>,
+    o0y: Signal<Local, Bits<20>>,
+    o1x: Signal<Local, Bits<20>>,
+    o1y: Signal<Local, Bits<20>>,
+    o2x: Signal<Local, Bits<20>>,
+    o2y: Signal<Local, Bits<20>>,
     bx1r_o: Signal<Local, Bits<13>>,
     by1r_o: Signal<Local, Bits<13>>,
     bx0_o: Signal<Local, Bits<13>>,
     bx1_o: Signal<Local, Bits<13>>,
     by0_o: Signal<Local, Bits<13>>,
     by1_o: Signal<Local, Bits<13>>,
-    lo_x_u: Signal<Local, Bits<17>>,
-    hi_x_u: Signal<Local, Bits<17>>,
-    lo_y_u: Signal<Local, Bits<17>>,
-    hi_y_u: Signal<Local, Bits<17>>,
+    lo_x_u: Signal<Local, Bits<21>>,
+    hi_x_u: Signal<Local, Bits<21>>,
+    lo_y_u: Signal<Local, Bits<21>>,
+    hi_y_u: Signal<Local, Bits<21>>,
     box_x1_raw: Signal<Local, Signed<13>>,
     box_y1_raw: Signal<Local, Signed<13>>,
     box_x0_u: Signal<Local, Bits<13>>,
@@ -312,92 +313,94 @@ pub struct Setup {
     is_front: Signal<Local, Bit>,
     culled_now: Signal<Local, Bit>,
     walk1: Signal<Local, Bit>,
-    det_abs: Signal<Local, Bits<36>>,
+    det_abs: Signal<Local, Bits<44>>,
     rkind: Signal<Local, Bits<2>>,
     // canonical vertices
-    cx0: Signal<Local, Signed<16>>,
-    cy0: Signal<Local, Signed<16>>,
+    cx0: Signal<Local, Signed<20>>,
+    cy0: Signal<Local, Signed<20>>,
     cz0: Signal<Local, Bits<24>>,
-    cx1: Signal<Local, Signed<16>>,
-    cy1: Signal<Local, Signed<16>>,
+    cx1: Signal<Local, Signed<20>>,
+    cy1: Signal<Local, Signed<20>>,
     cz1: Signal<Local, Bits<24>>,
-    cx2: Signal<Local, Signed<16>>,
-    cy2: Signal<Local, Signed<16>>,
+    cx2: Signal<Local, Signed<20>>,
+    cy2: Signal<Local, Signed<20>>,
     cz2: Signal<Local, Bits<24>>,
-    cdx10: Signal<Local, Signed<17>>,
-    cdy10: Signal<Local, Signed<17>>,
-    cdx20: Signal<Local, Signed<17>>,
-    cdy20: Signal<Local, Signed<17>>,
+    cdx10: Signal<Local, Signed<21>>,
+    cdy10: Signal<Local, Signed<21>>,
+    cdx20: Signal<Local, Signed<21>>,
+    cdy20: Signal<Local, Signed<21>>,
     cdz10: Signal<Local, Signed<25>>,
     cdz20: Signal<Local, Signed<25>>,
-    cx16: Signal<Local, Bits<18>>,
-    cy16: Signal<Local, Bits<18>>,
+    cx16: Signal<Local, Bits<21>>,
+    cy16: Signal<Local, Bits<21>>,
     addr_prod: Signal<Local, Bits<32>>,
-    edx_0: Signal<Local, Signed<17>>,
-    edy_0: Signal<Local, Signed<17>>,
-    px_0: Signal<Local, Signed<18>>,
-    py_0: Signal<Local, Signed<18>>,
+    edx_0: Signal<Local, Signed<21>>,
+    edy_0: Signal<Local, Signed<21>>,
+    px_0: Signal<Local, Signed<21>>,
+    py_0: Signal<Local, Signed<21>>,
     tl_0: Signal<Local, Bit>,
-    negdy_0: Signal<Local, Signed<17>>,
-    negdyw_0: Signal<Local, Signed<22>>,
-    edxw_0: Signal<Local, Signed<22>>,
-    stx_0: Signal<Local, Signed<22>>,
-    sty_0: Signal<Local, Signed<22>>,
-    edx_1: Signal<Local, Signed<17>>,
-    edy_1: Signal<Local, Signed<17>>,
-    px_1: Signal<Local, Signed<18>>,
-    py_1: Signal<Local, Signed<18>>,
+    negdy_0: Signal<Local, Signed<21>>,
+    negdyw_0: Signal<Local, Signed<30>>,
+    edxw_0: Signal<Local, Signed<30>>,
+    stx_0: Signal<Local, Signed<30>>,
+    sty_0: Signal<Local, Signed<30>>,
+    edx_1: Signal<Local, Signed<21>>,
+    edy_1: Signal<Local, Signed<21>>,
+    px_1: Signal<Local, Signed<21>>,
+    py_1: Signal<Local, Signed<21>>,
     tl_1: Signal<Local, Bit>,
-    negdy_1: Signal<Local, Signed<17>>,
-    negdyw_1: Signal<Local, Signed<22>>,
-    edxw_1: Signal<Local, Signed<22>>,
-    stx_1: Signal<Local, Signed<22>>,
-    sty_1: Signal<Local, Signed<22>>,
-    edx_2: Signal<Local, Signed<17>>,
-    edy_2: Signal<Local, Signed<17>>,
-    px_2: Signal<Local, Signed<18>>,
-    py_2: Signal<Local, Signed<18>>,
+    negdy_1: Signal<Local, Signed<21>>,
+    negdyw_1: Signal<Local, Signed<30>>,
+    edxw_1: Signal<Local, Signed<30>>,
+    stx_1: Signal<Local, Signed<30>>,
+    sty_1: Signal<Local, Signed<30>>,
+    edx_2: Signal<Local, Signed<21>>,
+    edy_2: Signal<Local, Signed<21>>,
+    px_2: Signal<Local, Signed<21>>,
+    py_2: Signal<Local, Signed<21>>,
     tl_2: Signal<Local, Bit>,
-    negdy_2: Signal<Local, Signed<17>>,
-    negdyw_2: Signal<Local, Signed<22>>,
-    edxw_2: Signal<Local, Signed<22>>,
-    stx_2: Signal<Local, Signed<22>>,
-    sty_2: Signal<Local, Signed<22>>,
+    negdy_2: Signal<Local, Signed<21>>,
+    negdyw_2: Signal<Local, Signed<30>>,
+    edxw_2: Signal<Local, Signed<30>>,
+    stx_2: Signal<Local, Signed<30>>,
+    sty_2: Signal<Local, Signed<30>>,
     // S2
     op_a0: Signal<Local, Signed<25>>,
-    op_a1: Signal<Local, Signed<18>>,
+    op_a1: Signal<Local, Signed<21>>,
     op_a2: Signal<Local, Signed<25>>,
-    op_a3: Signal<Local, Signed<18>>,
+    op_a3: Signal<Local, Signed<21>>,
     op_b0: Signal<Local, Signed<25>>,
-    op_b1: Signal<Local, Signed<18>>,
+    op_b1: Signal<Local, Signed<21>>,
     op_b2: Signal<Local, Signed<25>>,
-    op_b3: Signal<Local, Signed<18>>,
+    op_b3: Signal<Local, Signed<21>>,
     tl_a: Signal<Local, Bit>,
     tl_b: Signal<Local, Bit>,
-    dot_a: Signal<Local, Signed<44>>,
-    dot_b: Signal<Local, Signed<44>>,
-    e_a: Signal<Local, Signed<36>>,
-    e_b: Signal<Local, Signed<36>>,
+    dot_a: Signal<Local, Signed<47>>,
+    dot_b: Signal<Local, Signed<47>>,
+    e_a: Signal<Local, Signed<44>>,
+    e_b: Signal<Local, Signed<44>>,
     // S5
-    op_ga: Signal<Local, Signed<44>>,
+    op_ga: Signal<Local, Signed<47>>,
     op_gb: Signal<Local, Signed<26>>,
-    shifted: Signal<Local, Bits<70>>,
-    rounded: Signal<Local, Bits<70>>,
-    halved: Signal<Local, Bits<70>>,
-    grad_hi: Signal<Local, Bits<31>>,
+    /// The product doubled: the gradient's shift is by `shift - 1`, done as `2*prod >> shift`.
+    g_dbl: Signal<Local, Bits<73>>,
+    shifted: Signal<Local, Bits<73>>,
+    rounded: Signal<Local, Bits<73>>,
+    halved: Signal<Local, Bits<73>>,
+    grad_hi: Signal<Local, Bits<34>>,
     grad: Signal<Local, Signed<40>>,
     // S6
     ga: Signal<Local, Signed<40>>,
     gb: Signal<Local, Signed<40>>,
-    op_pb: Signal<Local, Signed<18>>,
-    op_qb: Signal<Local, Signed<18>>,
-    off_x: Signal<Local, Signed<17>>,
-    off_y: Signal<Local, Signed<17>>,
-    p58: Signal<Local, Signed<58>>,
-    q58: Signal<Local, Signed<58>>,
+    op_pb: Signal<Local, Signed<21>>,
+    op_qb: Signal<Local, Signed<21>>,
+    off_x: Signal<Local, Signed<21>>,
+    off_y: Signal<Local, Signed<21>>,
+    pw: Signal<Local, Signed<62>>,
+    qw: Signal<Local, Signed<62>>,
     p56: Signal<Local, Signed<56>>,
     q56: Signal<Local, Signed<56>>,
-    acc_round: Signal<Local, Bits<58>>,
+    acc_round: Signal<Local, Bits<62>>,
     c_frac: Signal<Local, Signed<56>>,
     z0_plane: Signal<Local, Signed<56>>,
     raw_now: Signal<Local, Signed<56>>,
@@ -406,23 +409,22 @@ pub struct Setup {
     w_minus_1: Constant<Signed<13>>,
     w_minus_1_o: Constant<Bits<13>>,
     h_minus_1_o: Constant<Bits<13>>,
-    k_sign16: Constant<Bits<16>>,
+    k_sign20: Constant<Bits<20>>,
     k_sign13: Constant<Bits<13>>,
     zb13: Constant<Bits<13>>,
     h_minus_1: Constant<Signed<13>>,
     width: Constant<Bits<16>>,
-    k7_17: Constant<Signed<17>>,
-    k8_17: Constant<Signed<17>>,
-    k8_18: Constant<Bits<18>>,
-    k4_6: Constant<Bits<6>>,
-    k1_70: Constant<Bits<70>>,
-    k3_6: Constant<Bits<6>>,
+    k127_21: Constant<Signed<21>>,
+    k128_21: Constant<Signed<21>>,
+    k128_21u: Constant<Bits<21>>,
+    k8_6: Constant<Bits<6>>,
+    k1_73: Constant<Bits<73>>,
     k1_6: Constant<Bits<6>>,
-    k0_70: Constant<Bits<70>>,
+    k0_73: Constant<Bits<73>>,
     k0_13: Constant<Signed<13>>,
-    k0_36: Constant<Signed<36>>,
-    k1_36: Constant<Signed<36>>,
-    k0_17: Constant<Signed<17>>,
+    k0_44: Constant<Signed<44>>,
+    k1_44: Constant<Signed<44>>,
+    k0_21: Constant<Signed<21>>,
     k0_2: Constant<Bits<2>>,
     k1_2: Constant<Bits<2>>,
     k2_2: Constant<Bits<2>>,
@@ -432,10 +434,10 @@ pub struct Setup {
     k2_3: Constant<Bits<3>>,
     k3_3: Constant<Bits<3>>,
     k4_3: Constant<Bits<3>>,
-    k0_31: Constant<Bits<31>>,
+    k0_34: Constant<Bits<34>>,
     k16_6: Constant<Bits<6>>,
-    k1s_31: Constant<Bits<31>>,
-    k8_58: Constant<Bits<58>>,
+    k1s_34: Constant<Bits<34>>,
+    k128_62: Constant<Bits<62>>,
     max40: Constant<Signed<40>>,
     min40: Constant<Signed<40>>,
     kind_frame: Constant<Bits<2>>,
@@ -448,22 +450,21 @@ pub struct Setup {
     cull_back: Constant<Bits<2>>,
     cull_front: Constant<Bits<2>>,
     // zeros: the values of a stage's locals while it is empty
-    zb18: Constant<Bits<18>>,
+    zb21: Constant<Bits<21>>,
     zb2: Constant<Bits<2>>,
     zb24: Constant<Bits<24>>,
     zb32: Constant<Bits<32>>,
-    zb36: Constant<Bits<36>>,
-    zb58: Constant<Bits<58>>,
-    zs16: Constant<Signed<16>>,
-    zs17: Constant<Signed<17>>,
-    zs18: Constant<Signed<18>>,
-    zs22: Constant<Signed<22>>,
+    zb44: Constant<Bits<44>>,
+    zb62: Constant<Bits<62>>,
+    zs20: Constant<Signed<20>>,
+    zs21: Constant<Signed<21>>,
+    zs30: Constant<Signed<30>>,
     zs25: Constant<Signed<25>>,
-    zs36: Constant<Signed<36>>,
-    zs40: Constant<Signed<40>>,
     zs44: Constant<Signed<44>>,
+    zs40: Constant<Signed<40>>,
+    zs47: Constant<Signed<47>>,
     zs56: Constant<Signed<56>>,
-    zs58: Constant<Signed<58>>,
+    zs62: Constant<Signed<62>>,
 }
 
 impl Setup {
@@ -709,6 +710,7 @@ impl Setup {
             e_b: Default::default(),
             op_ga: Default::default(),
             op_gb: Default::default(),
+            g_dbl: Default::default(),
             shifted: Default::default(),
             rounded: Default::default(),
             halved: Default::default(),
@@ -720,8 +722,8 @@ impl Setup {
             op_qb: Default::default(),
             off_x: Default::default(),
             off_y: Default::default(),
-            p58: Default::default(),
-            q58: Default::default(),
+            pw: Default::default(),
+            qw: Default::default(),
             p56: Default::default(),
             q56: Default::default(),
             acc_round: Default::default(),
@@ -731,23 +733,22 @@ impl Setup {
             w_minus_1: Constant::new((width as i64 - 1).into()),
             w_minus_1_o: Constant::new(((width as u64 - 1) ^ 0x1000).into()),
             h_minus_1_o: Constant::new(((height as u64 - 1) ^ 0x1000).into()),
-            k_sign16: Constant::new(0x8000u64.into()),
+            k_sign20: Constant::new(0x80000u64.into()),
             k_sign13: Constant::new(0x1000u64.into()),
             zb13: Constant::new(0.into()),
             h_minus_1: Constant::new((height as i64 - 1).into()),
             width: Constant::new((width as u64).into()),
-            k7_17: Constant::new(7.into()),
-            k8_17: Constant::new(8.into()),
-            k8_18: Constant::new(8.into()),
-            k4_6: Constant::new(4.into()),
-            k1_70: Constant::new(1.into()),
-            k3_6: Constant::new(3.into()),
+            k127_21: Constant::new(127.into()),
+            k128_21: Constant::new(128.into()),
+            k128_21u: Constant::new(128.into()),
+            k8_6: Constant::new(8.into()),
+            k1_73: Constant::new(1.into()),
             k1_6: Constant::new(1.into()),
-            k0_70: Constant::new(0.into()),
+            k0_73: Constant::new(0.into()),
             k0_13: Constant::new(0.into()),
-            k0_36: Constant::new(0.into()),
-            k1_36: Constant::new(1.into()),
-            k0_17: Constant::new(0.into()),
+            k0_44: Constant::new(0.into()),
+            k1_44: Constant::new(1.into()),
+            k0_21: Constant::new(0.into()),
             k0_2: Constant::new(0.into()),
             k1_2: Constant::new(1.into()),
             k2_2: Constant::new(2.into()),
@@ -757,10 +758,10 @@ impl Setup {
             k2_3: Constant::new(2.into()),
             k3_3: Constant::new(3.into()),
             k4_3: Constant::new(4.into()),
-            k0_31: Constant::new(0.into()),
+            k0_34: Constant::new(0.into()),
             k16_6: Constant::new(16.into()),
-            k1s_31: Constant::new(((1u64 << 31) - 1).into()),
-            k8_58: Constant::new(8.into()),
+            k1s_34: Constant::new(((1u64 << 34) - 1).into()),
+            k128_62: Constant::new(128.into()),
             max40: Constant::new(((1i64 << 39) - 1).into()),
             min40: Constant::new((-(1i64 << 39)).into()),
             kind_frame: Constant::new(super::CMD_FRAME.into()),
@@ -772,22 +773,21 @@ impl Setup {
             rec_eof: Constant::new(REC_EOF.into()),
             cull_back: Constant::new(super::CULL_BACK.into()),
             cull_front: Constant::new(super::CULL_FRONT.into()),
-            zb18: Constant::new(0.into()),
+            zb21: Constant::new(0.into()),
             zb2: Constant::new(0.into()),
             zb24: Constant::new(0.into()),
             zb32: Constant::new(0.into()),
-            zb36: Constant::new(0.into()),
-            zb58: Constant::new(0.into()),
-            zs16: Constant::new(0.into()),
-            zs17: Constant::new(0.into()),
-            zs18: Constant::new(0.into()),
-            zs22: Constant::new(0.into()),
+            zb44: Constant::new(0.into()),
+            zb62: Constant::new(0.into()),
+            zs20: Constant::new(0.into()),
+            zs21: Constant::new(0.into()),
+            zs30: Constant::new(0.into()),
             zs25: Constant::new(0.into()),
-            zs36: Constant::new(0.into()),
-            zs40: Constant::new(0.into()),
             zs44: Constant::new(0.into()),
+            zs40: Constant::new(0.into()),
+            zs47: Constant::new(0.into()),
             zs56: Constant::new(0.into()),
-            zs58: Constant::new(0.into()),
+            zs62: Constant::new(0.into()),
         }
     }
 }
@@ -806,58 +806,58 @@ impl Logic for Setup {
         self.culled_now.next = false;
         self.walk1.next = false;
         self.rkind.next = self.zb2.val();
-        self.cx0.next = self.zs16.val();
-        self.cy0.next = self.zs16.val();
+        self.cx0.next = self.zs20.val();
+        self.cy0.next = self.zs20.val();
         self.cz0.next = self.zb24.val();
-        self.cx1.next = self.zs16.val();
-        self.cy1.next = self.zs16.val();
+        self.cx1.next = self.zs20.val();
+        self.cy1.next = self.zs20.val();
         self.cz1.next = self.zb24.val();
-        self.cx2.next = self.zs16.val();
-        self.cy2.next = self.zs16.val();
+        self.cx2.next = self.zs20.val();
+        self.cy2.next = self.zs20.val();
         self.cz2.next = self.zb24.val();
-        self.cdx10.next = self.zs17.val();
-        self.cdy10.next = self.zs17.val();
-        self.cdx20.next = self.zs17.val();
-        self.cdy20.next = self.zs17.val();
+        self.cdx10.next = self.zs21.val();
+        self.cdy10.next = self.zs21.val();
+        self.cdx20.next = self.zs21.val();
+        self.cdy20.next = self.zs21.val();
         self.cdz10.next = self.zs25.val();
         self.cdz20.next = self.zs25.val();
-        self.cx16.next = self.zb18.val();
-        self.cy16.next = self.zb18.val();
+        self.cx16.next = self.zb21.val();
+        self.cy16.next = self.zb21.val();
         self.addr_prod.next = self.zb32.val();
-        self.edx_0.next = self.zs17.val();
-        self.edy_0.next = self.zs17.val();
-        self.px_0.next = self.zs18.val();
-        self.py_0.next = self.zs18.val();
+        self.edx_0.next = self.zs21.val();
+        self.edy_0.next = self.zs21.val();
+        self.px_0.next = self.zs21.val();
+        self.py_0.next = self.zs21.val();
         self.tl_0.next = false;
-        self.negdy_0.next = self.zs17.val();
-        self.negdyw_0.next = self.zs22.val();
-        self.edxw_0.next = self.zs22.val();
-        self.stx_0.next = self.zs22.val();
-        self.sty_0.next = self.zs22.val();
-        self.edx_1.next = self.zs17.val();
-        self.edy_1.next = self.zs17.val();
-        self.px_1.next = self.zs18.val();
-        self.py_1.next = self.zs18.val();
+        self.negdy_0.next = self.zs21.val();
+        self.negdyw_0.next = self.zs30.val();
+        self.edxw_0.next = self.zs30.val();
+        self.stx_0.next = self.zs30.val();
+        self.sty_0.next = self.zs30.val();
+        self.edx_1.next = self.zs21.val();
+        self.edy_1.next = self.zs21.val();
+        self.px_1.next = self.zs21.val();
+        self.py_1.next = self.zs21.val();
         self.tl_1.next = false;
-        self.negdy_1.next = self.zs17.val();
-        self.negdyw_1.next = self.zs22.val();
-        self.edxw_1.next = self.zs22.val();
-        self.stx_1.next = self.zs22.val();
-        self.sty_1.next = self.zs22.val();
-        self.edx_2.next = self.zs17.val();
-        self.edy_2.next = self.zs17.val();
-        self.px_2.next = self.zs18.val();
-        self.py_2.next = self.zs18.val();
+        self.negdy_1.next = self.zs21.val();
+        self.negdyw_1.next = self.zs30.val();
+        self.edxw_1.next = self.zs30.val();
+        self.stx_1.next = self.zs30.val();
+        self.sty_1.next = self.zs30.val();
+        self.edx_2.next = self.zs21.val();
+        self.edy_2.next = self.zs21.val();
+        self.px_2.next = self.zs21.val();
+        self.py_2.next = self.zs21.val();
         self.tl_2.next = false;
-        self.negdy_2.next = self.zs17.val();
-        self.negdyw_2.next = self.zs22.val();
-        self.edxw_2.next = self.zs22.val();
-        self.stx_2.next = self.zs22.val();
-        self.sty_2.next = self.zs22.val();
+        self.negdy_2.next = self.zs21.val();
+        self.negdyw_2.next = self.zs30.val();
+        self.edxw_2.next = self.zs30.val();
+        self.stx_2.next = self.zs30.val();
+        self.sty_2.next = self.zs30.val();
         if self.s1_v.q.val() {
             self.is_tri.next = self.s1.q.val().kind == self.kind_tri.val();
-            self.det_neg.next = self.s1_det.q.val().get_bit(35);
-            self.det_zero.next = self.s1_det.q.val() == self.k0_36.val();
+            self.det_neg.next = self.s1_det.q.val().get_bit(43);
+            self.det_zero.next = self.s1_det.q.val() == self.k0_44.val();
             self.is_front.next = self.det_neg.val();
             if self.s1.q.val().front_cw {
                 self.is_front.next = !self.det_neg.val();
@@ -921,65 +921,65 @@ impl Logic for Setup {
                 self.cy2.next = signed_cast(self.s1.q.val().y1);
                 self.cz2.next = self.s1.q.val().z1;
             }
-            self.cdx10.next = signed_bit_cast_safe::<17, 16>(self.cx1.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
-            self.cdy10.next = signed_bit_cast_safe::<17, 16>(self.cy1.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
-            self.cdx20.next = signed_bit_cast_safe::<17, 16>(self.cx2.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
-            self.cdy20.next = signed_bit_cast_safe::<17, 16>(self.cy2.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
+            self.cdx10.next = signed_bit_cast_safe::<21, 20>(self.cx1.val()) - signed_bit_cast_safe::<21, 20>(self.cx0.val());
+            self.cdy10.next = signed_bit_cast_safe::<21, 20>(self.cy1.val()) - signed_bit_cast_safe::<21, 20>(self.cy0.val());
+            self.cdx20.next = signed_bit_cast_safe::<21, 20>(self.cx2.val()) - signed_bit_cast_safe::<21, 20>(self.cx0.val());
+            self.cdy20.next = signed_bit_cast_safe::<21, 20>(self.cy2.val()) - signed_bit_cast_safe::<21, 20>(self.cy0.val());
             self.cdz10.next = signed_cast(bit_cast::<25, 24>(self.cz1.val())) - signed_cast(bit_cast::<25, 24>(self.cz0.val()));
             self.cdz20.next = signed_cast(bit_cast::<25, 24>(self.cz2.val())) - signed_cast(bit_cast::<25, 24>(self.cz0.val()));
             // Pixel centre of the box's first pixel in subpixels: 16*X0 + 8.
-            self.cx16.next = (bit_cast::<18, 10>(self.s1_bx0.q.val()) << self.k4_6.val()) | self.k8_18.val();
-            self.cy16.next = (bit_cast::<18, 10>(self.s1_by0.q.val()) << self.k4_6.val()) | self.k8_18.val();
+            self.cx16.next = (bit_cast::<21, 10>(self.s1_bx0.q.val()) << self.k8_6.val()) | self.k128_21u.val();
+            self.cy16.next = (bit_cast::<21, 10>(self.s1_by0.q.val()) << self.k8_6.val()) | self.k128_21u.val();
             self.addr_prod.next = bit_cast::<16, 10>(self.s1_by0.q.val()) * self.width.val();
             // Edge 0: from (cx0, cy0) to (cx1, cy1).
-            self.edx_0.next = signed_bit_cast_safe::<17, 16>(self.cx1.val()) - signed_bit_cast_safe::<17, 16>(self.cx0.val());
-            self.edy_0.next = signed_bit_cast_safe::<17, 16>(self.cy1.val()) - signed_bit_cast_safe::<17, 16>(self.cy0.val());
-            self.px_0.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx0.val());
-            self.py_0.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy0.val());
-            self.tl_0.next = self.edy_0.val().get_bit(16)
-                | ((self.edy_0.val() == self.k0_17.val()) & !self.edx_0.val().get_bit(16) & (self.edx_0.val() != self.k0_17.val()));
-            self.negdy_0.next = self.k0_17.val() - self.edy_0.val();
-            self.negdyw_0.next = signed_bit_cast_safe::<22, 17>(self.negdy_0.val());
-            self.edxw_0.next = signed_bit_cast_safe::<22, 17>(self.edx_0.val());
-            self.stx_0.next = signed_cast(unsigned_cast(self.negdyw_0.val()) << self.k4_6.val());
-            self.sty_0.next = signed_cast(unsigned_cast(self.edxw_0.val()) << self.k4_6.val());
+            self.edx_0.next = signed_bit_cast_safe::<21, 20>(self.cx1.val()) - signed_bit_cast_safe::<21, 20>(self.cx0.val());
+            self.edy_0.next = signed_bit_cast_safe::<21, 20>(self.cy1.val()) - signed_bit_cast_safe::<21, 20>(self.cy0.val());
+            self.px_0.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<21, 20>(self.cx0.val());
+            self.py_0.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<21, 20>(self.cy0.val());
+            self.tl_0.next = self.edy_0.val().get_bit(20)
+                | ((self.edy_0.val() == self.k0_21.val()) & !self.edx_0.val().get_bit(20) & (self.edx_0.val() != self.k0_21.val()));
+            self.negdy_0.next = self.k0_21.val() - self.edy_0.val();
+            self.negdyw_0.next = signed_bit_cast_safe::<30, 21>(self.negdy_0.val());
+            self.edxw_0.next = signed_bit_cast_safe::<30, 21>(self.edx_0.val());
+            self.stx_0.next = signed_cast(unsigned_cast(self.negdyw_0.val()) << self.k8_6.val());
+            self.sty_0.next = signed_cast(unsigned_cast(self.edxw_0.val()) << self.k8_6.val());
             // Edge 1: from (cx1, cy1) to (cx2, cy2).
-            self.edx_1.next = signed_bit_cast_safe::<17, 16>(self.cx2.val()) - signed_bit_cast_safe::<17, 16>(self.cx1.val());
-            self.edy_1.next = signed_bit_cast_safe::<17, 16>(self.cy2.val()) - signed_bit_cast_safe::<17, 16>(self.cy1.val());
-            self.px_1.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx1.val());
-            self.py_1.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy1.val());
-            self.tl_1.next = self.edy_1.val().get_bit(16)
-                | ((self.edy_1.val() == self.k0_17.val()) & !self.edx_1.val().get_bit(16) & (self.edx_1.val() != self.k0_17.val()));
-            self.negdy_1.next = self.k0_17.val() - self.edy_1.val();
-            self.negdyw_1.next = signed_bit_cast_safe::<22, 17>(self.negdy_1.val());
-            self.edxw_1.next = signed_bit_cast_safe::<22, 17>(self.edx_1.val());
-            self.stx_1.next = signed_cast(unsigned_cast(self.negdyw_1.val()) << self.k4_6.val());
-            self.sty_1.next = signed_cast(unsigned_cast(self.edxw_1.val()) << self.k4_6.val());
+            self.edx_1.next = signed_bit_cast_safe::<21, 20>(self.cx2.val()) - signed_bit_cast_safe::<21, 20>(self.cx1.val());
+            self.edy_1.next = signed_bit_cast_safe::<21, 20>(self.cy2.val()) - signed_bit_cast_safe::<21, 20>(self.cy1.val());
+            self.px_1.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<21, 20>(self.cx1.val());
+            self.py_1.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<21, 20>(self.cy1.val());
+            self.tl_1.next = self.edy_1.val().get_bit(20)
+                | ((self.edy_1.val() == self.k0_21.val()) & !self.edx_1.val().get_bit(20) & (self.edx_1.val() != self.k0_21.val()));
+            self.negdy_1.next = self.k0_21.val() - self.edy_1.val();
+            self.negdyw_1.next = signed_bit_cast_safe::<30, 21>(self.negdy_1.val());
+            self.edxw_1.next = signed_bit_cast_safe::<30, 21>(self.edx_1.val());
+            self.stx_1.next = signed_cast(unsigned_cast(self.negdyw_1.val()) << self.k8_6.val());
+            self.sty_1.next = signed_cast(unsigned_cast(self.edxw_1.val()) << self.k8_6.val());
             // Edge 2: from (cx2, cy2) to (cx0, cy0).
-            self.edx_2.next = signed_bit_cast_safe::<17, 16>(self.cx0.val()) - signed_bit_cast_safe::<17, 16>(self.cx2.val());
-            self.edy_2.next = signed_bit_cast_safe::<17, 16>(self.cy0.val()) - signed_bit_cast_safe::<17, 16>(self.cy2.val());
-            self.px_2.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<18, 16>(self.cx2.val());
-            self.py_2.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<18, 16>(self.cy2.val());
-            self.tl_2.next = self.edy_2.val().get_bit(16)
-                | ((self.edy_2.val() == self.k0_17.val()) & !self.edx_2.val().get_bit(16) & (self.edx_2.val() != self.k0_17.val()));
-            self.negdy_2.next = self.k0_17.val() - self.edy_2.val();
-            self.negdyw_2.next = signed_bit_cast_safe::<22, 17>(self.negdy_2.val());
-            self.edxw_2.next = signed_bit_cast_safe::<22, 17>(self.edx_2.val());
-            self.stx_2.next = signed_cast(unsigned_cast(self.negdyw_2.val()) << self.k4_6.val());
-            self.sty_2.next = signed_cast(unsigned_cast(self.edxw_2.val()) << self.k4_6.val());
+            self.edx_2.next = signed_bit_cast_safe::<21, 20>(self.cx0.val()) - signed_bit_cast_safe::<21, 20>(self.cx2.val());
+            self.edy_2.next = signed_bit_cast_safe::<21, 20>(self.cy0.val()) - signed_bit_cast_safe::<21, 20>(self.cy2.val());
+            self.px_2.next = signed_cast(self.cx16.val()) - signed_bit_cast_safe::<21, 20>(self.cx2.val());
+            self.py_2.next = signed_cast(self.cy16.val()) - signed_bit_cast_safe::<21, 20>(self.cy2.val());
+            self.tl_2.next = self.edy_2.val().get_bit(20)
+                | ((self.edy_2.val() == self.k0_21.val()) & !self.edx_2.val().get_bit(20) & (self.edx_2.val() != self.k0_21.val()));
+            self.negdy_2.next = self.k0_21.val() - self.edy_2.val();
+            self.negdyw_2.next = signed_bit_cast_safe::<30, 21>(self.negdy_2.val());
+            self.edxw_2.next = signed_bit_cast_safe::<30, 21>(self.edx_2.val());
+            self.stx_2.next = signed_cast(unsigned_cast(self.negdyw_2.val()) << self.k8_6.val());
+            self.sty_2.next = signed_cast(unsigned_cast(self.edxw_2.val()) << self.k8_6.val());
         }
         // ---- S0 `Det` ----
-        self.v0x.next = self.zs16.val();
-        self.v0y.next = self.zs16.val();
-        self.v1x.next = self.zs16.val();
-        self.v1y.next = self.zs16.val();
-        self.v2x.next = self.zs16.val();
-        self.v2y.next = self.zs16.val();
-        self.dx10.next = self.zs17.val();
-        self.dy10.next = self.zs17.val();
-        self.dx20.next = self.zs17.val();
-        self.dy20.next = self.zs17.val();
-        self.det.next = self.zs36.val();
+        self.v0x.next = self.zs20.val();
+        self.v0y.next = self.zs20.val();
+        self.v1x.next = self.zs20.val();
+        self.v1y.next = self.zs20.val();
+        self.v2x.next = self.zs20.val();
+        self.v2y.next = self.zs20.val();
+        self.dx10.next = self.zs21.val();
+        self.dy10.next = self.zs21.val();
+        self.dx20.next = self.zs21.val();
+        self.dy20.next = self.zs21.val();
+        self.det.next = self.zs44.val();
         if self.s0_v.q.val() {
             self.v0x.next = signed_cast(self.s0.q.val().x0);
             self.v0y.next = signed_cast(self.s0.q.val().y0);
@@ -987,11 +987,11 @@ impl Logic for Setup {
             self.v1y.next = signed_cast(self.s0.q.val().y1);
             self.v2x.next = signed_cast(self.s0.q.val().x2);
             self.v2y.next = signed_cast(self.s0.q.val().y2);
-            self.dx10.next = signed_bit_cast_safe::<17, 16>(self.v1x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
-            self.dy10.next = signed_bit_cast_safe::<17, 16>(self.v1y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
-            self.dx20.next = signed_bit_cast_safe::<17, 16>(self.v2x.val()) - signed_bit_cast_safe::<17, 16>(self.v0x.val());
-            self.dy20.next = signed_bit_cast_safe::<17, 16>(self.v2y.val()) - signed_bit_cast_safe::<17, 16>(self.v0y.val());
-            self.det.next = signed_bit_cast_safe::<36, 34>(self.mul_d0.p.val()) - signed_bit_cast_safe::<36, 34>(self.mul_d1.p.val());
+            self.dx10.next = signed_bit_cast_safe::<21, 20>(self.v1x.val()) - signed_bit_cast_safe::<21, 20>(self.v0x.val());
+            self.dy10.next = signed_bit_cast_safe::<21, 20>(self.v1y.val()) - signed_bit_cast_safe::<21, 20>(self.v0y.val());
+            self.dx20.next = signed_bit_cast_safe::<21, 20>(self.v2x.val()) - signed_bit_cast_safe::<21, 20>(self.v0x.val());
+            self.dy20.next = signed_bit_cast_safe::<21, 20>(self.v2y.val()) - signed_bit_cast_safe::<21, 20>(self.v0y.val());
+            self.det.next = signed_bit_cast_safe::<44, 42>(self.mul_d0.p.val()) - signed_bit_cast_safe::<44, 42>(self.mul_d1.p.val());
         }
         self.mul_d0.a.next = self.dx10.val();
         self.mul_d0.b.next = self.dy20.val();
@@ -1006,18 +1006,18 @@ impl Logic for Setup {
         self.xmax.next = self.v0x.val();
         self.ymin.next = self.v0y.val();
         self.ymax.next = self.v0y.val();
-        self.lo_x.next = self.k0_17.val();
-        self.hi_x.next = self.k0_17.val();
-        self.lo_y.next = self.k0_17.val();
-        self.hi_y.next = self.k0_17.val();
+        self.lo_x.next = self.k0_21.val();
+        self.hi_x.next = self.k0_21.val();
+        self.lo_y.next = self.k0_21.val();
+        self.hi_y.next = self.k0_21.val();
         // Signed order as unsigned order with the sign bits flipped (offset binary): the same compare in
         // hardware, and rust-hdl's Signed compare goes through BigInt.
-        self.o0x.next = self.s0.q.val().x0 ^ self.k_sign16.val();
-        self.o0y.next = self.s0.q.val().y0 ^ self.k_sign16.val();
-        self.o1x.next = self.s0.q.val().x1 ^ self.k_sign16.val();
-        self.o1y.next = self.s0.q.val().y1 ^ self.k_sign16.val();
-        self.o2x.next = self.s0.q.val().x2 ^ self.k_sign16.val();
-        self.o2y.next = self.s0.q.val().y2 ^ self.k_sign16.val();
+        self.o0x.next = self.s0.q.val().x0 ^ self.k_sign20.val();
+        self.o0y.next = self.s0.q.val().y0 ^ self.k_sign20.val();
+        self.o1x.next = self.s0.q.val().x1 ^ self.k_sign20.val();
+        self.o1y.next = self.s0.q.val().y1 ^ self.k_sign20.val();
+        self.o2x.next = self.s0.q.val().x2 ^ self.k_sign20.val();
+        self.o2y.next = self.s0.q.val().y2 ^ self.k_sign20.val();
         if self.s0_v.q.val() {
             if self.o1x.val() < self.o0x.val() {
                 self.xmin.next = self.v1x.val();
@@ -1043,18 +1043,18 @@ impl Logic for Setup {
             if (self.o2y.val() > self.o1y.val()) & (self.o2y.val() > self.o0y.val()) {
                 self.ymax.next = self.v2y.val();
             }
-            self.lo_x.next = signed_bit_cast_safe::<17, 16>(self.xmin.val()) + self.k7_17.val();
-            self.hi_x.next = signed_bit_cast_safe::<17, 16>(self.xmax.val()) - self.k8_17.val();
-            self.lo_y.next = signed_bit_cast_safe::<17, 16>(self.ymin.val()) + self.k7_17.val();
-            self.hi_y.next = signed_bit_cast_safe::<17, 16>(self.ymax.val()) - self.k8_17.val();
+            self.lo_x.next = signed_bit_cast_safe::<21, 20>(self.xmin.val()) + self.k127_21.val();
+            self.hi_x.next = signed_bit_cast_safe::<21, 20>(self.xmax.val()) - self.k128_21.val();
+            self.lo_y.next = signed_bit_cast_safe::<21, 20>(self.ymin.val()) + self.k127_21.val();
+            self.hi_y.next = signed_bit_cast_safe::<21, 20>(self.ymax.val()) - self.k128_21.val();
         }
         // Bits views for slicing (Verilog cannot slice a cast).
         self.lo_x_u.next = unsigned_cast(self.lo_x.val());
         self.hi_x_u.next = unsigned_cast(self.hi_x.val());
         self.lo_y_u.next = unsigned_cast(self.lo_y.val());
         self.hi_y_u.next = unsigned_cast(self.hi_y.val());
-        self.box_x1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_x_u.val().get_bits::<13>(4)));
-        self.box_y1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_y_u.val().get_bits::<13>(4)));
+        self.box_x1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_x_u.val().get_bits::<13>(8)));
+        self.box_y1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_y_u.val().get_bits::<13>(8)));
         self.bx1r_o.next = unsigned_cast(self.box_x1_raw.val()) ^ self.k_sign13.val();
         self.by1r_o.next = unsigned_cast(self.box_y1_raw.val()) ^ self.k_sign13.val();
         self.box_x0.next = self.k0_13.val();
@@ -1067,15 +1067,15 @@ impl Logic for Setup {
         self.by0_o.next = self.zb13.val();
         self.by1_o.next = self.zb13.val();
         if self.s0_v.q.val() {
-            // >> 4 (arithmetic), then clamp to the screen.
-            self.box_x0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_x_u.val().get_bits::<13>(4)));
+            // >> 8 (arithmetic), then clamp to the screen.
+            self.box_x0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_x_u.val().get_bits::<13>(8)));
             self.box_x1.next = self.box_x1_raw.val();
-            self.box_y0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_y_u.val().get_bits::<13>(4)));
+            self.box_y0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_y_u.val().get_bits::<13>(8)));
             self.box_y1.next = self.box_y1_raw.val();
-            if self.lo_x.val().get_bit(16) {
+            if self.lo_x.val().get_bit(20) {
                 self.box_x0.next = self.k0_13.val();
             }
-            if self.lo_y.val().get_bit(16) {
+            if self.lo_y.val().get_bit(20) {
                 self.box_y0.next = self.k0_13.val();
             }
             if self.bx1r_o.val() > self.w_minus_1_o.val() {
@@ -1096,11 +1096,11 @@ impl Logic for Setup {
         self.box_y1_u.next = unsigned_cast(self.box_y1.val());
 
         // The reciprocal of abs(det), requested when S1 holds a drawn triangle that S2 can take.
-        self.det_abs.next = self.zb36.val();
+        self.det_abs.next = self.zb44.val();
         if self.s1_v.q.val() {
             self.det_abs.next = unsigned_cast(self.s1_det.q.val());
             if self.det_neg.val() {
-                self.det_abs.next = unsigned_cast(self.k0_36.val() - self.s1_det.q.val());
+                self.det_abs.next = unsigned_cast(self.k0_44.val() - self.s1_det.q.val());
             }
 
         }
@@ -1146,24 +1146,24 @@ impl Logic for Setup {
         self.mul_b0.b.next = self.op_b1.val();
         self.mul_b1.a.next = self.op_b2.val();
         self.mul_b1.b.next = self.op_b3.val();
-        self.dot_a.next = self.zs44.val();
-        self.dot_b.next = self.zs44.val();
-        self.e_a.next = self.zs36.val();
-        self.e_b.next = self.zs36.val();
+        self.dot_a.next = self.zs47.val();
+        self.dot_b.next = self.zs47.val();
+        self.e_a.next = self.zs44.val();
+        self.e_b.next = self.zs44.val();
         if self.s2_v.q.val() {
-            self.dot_a.next = signed_bit_cast_safe::<44, 43>(self.mul_a0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_a1.p.val());
-            self.dot_b.next = signed_bit_cast_safe::<44, 43>(self.mul_b0.p.val()) - signed_bit_cast_safe::<44, 43>(self.mul_b1.p.val());
-            self.e_a.next = signed_bit_cast_safe::<36, 44>(self.dot_a.val()) - self.k1_36.val();
+            self.dot_a.next = signed_bit_cast_safe::<47, 46>(self.mul_a0.p.val()) - signed_bit_cast_safe::<47, 46>(self.mul_a1.p.val());
+            self.dot_b.next = signed_bit_cast_safe::<47, 46>(self.mul_b0.p.val()) - signed_bit_cast_safe::<47, 46>(self.mul_b1.p.val());
+            self.e_a.next = signed_bit_cast_safe::<44, 47>(self.dot_a.val()) - self.k1_44.val();
             if self.tl_a.val() {
-                self.e_a.next = signed_bit_cast_safe::<36, 44>(self.dot_a.val());
+                self.e_a.next = signed_bit_cast_safe::<44, 47>(self.dot_a.val());
             }
-            self.e_b.next = signed_bit_cast_safe::<36, 44>(self.dot_b.val()) - self.k1_36.val();
+            self.e_b.next = signed_bit_cast_safe::<44, 47>(self.dot_b.val()) - self.k1_44.val();
             if self.tl_b.val() {
-                self.e_b.next = signed_bit_cast_safe::<36, 44>(self.dot_b.val());
+                self.e_b.next = signed_bit_cast_safe::<44, 47>(self.dot_b.val());
             }
 
         }
-        // ---- S5 `Grad`: one 44x26 multiplier ----
+        // ---- S5 `Grad`: one 47x26 multiplier ----
         self.op_ga.next = signed_cast(self.s5p.q.val().na);
         self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.recip.result.data.val().mant));
         if self.s5_phase.q.val() != self.k0_2.val() {
@@ -1172,71 +1172,75 @@ impl Logic for Setup {
         }
         self.mul_g.a.next = self.op_ga.val();
         self.mul_g.b.next = self.op_gb.val();
-        // The gradient sat40((prod + 2^(sh-1)) >> sh), sh = shift + 4, in two cycles (issue 15 item 5):
-        // g_sh = prod >> (sh - 1) from the product register, then ((g_sh + 1) >> 1) and the saturation
-        // from g_sh. The same integer: with prod = q*2^(sh-1) + r, 0 <= r < 2^(sh-1), both are
-        // floor((q + 1) / 2). (70-bit arithmetic is slow in the Rust simulation: evaluated only in the
-        // phases that use it.)
-        self.shifted.next = self.k0_70.val();
-        self.rounded.next = self.k0_70.val();
-        self.halved.next = self.k0_70.val();
-        self.grad_hi.next = self.k0_31.val();
+        // The gradient sat40(round(prod / 2^sh)) with sh = shift (A = na * 2^8 * 2^16 / det, and the
+        // mantissa's 2^24 is those 2^8 subpixels and 16 fraction bits), in two cycles (issue 15 item 5):
+        // g_sh = 2*prod >> sh (= prod / 2^(sh-1), exact when sh is 0) from the product
+        // register, then ((g_sh + 1) >> 1) and the saturation from g_sh. The same integer as
+        // round_shift(prod, sh): floor((floor(2 prod / 2^sh) + 1) / 2) = floor((prod + 2^(sh-1)) / 2^sh),
+        // and for sh = 0 it is (2 prod + 1) >> 1 = prod. (73-bit arithmetic is slow in the Rust
+        // simulation: evaluated only in the phases that use it.)
+        self.g_dbl.next = self.k0_73.val();
+        self.shifted.next = self.k0_73.val();
+        self.rounded.next = self.k0_73.val();
+        self.halved.next = self.k0_73.val();
+        self.grad_hi.next = self.k0_34.val();
         self.grad.next = self.min40.val();
         if self.s5_v.q.val() & ((self.s5_phase.q.val() == self.k1_2.val()) | (self.s5_phase.q.val() == self.k2_2.val())) {
-            self.shifted.next = (self.g_prod.q.val() >> self.s5p.q.val().shift) >> self.k3_6.val();
-            if self.g_prod.q.val().get_bit(69) {
+            self.g_dbl.next = self.g_prod.q.val() << self.k1_6.val();
+            self.shifted.next = self.g_dbl.val() >> self.s5p.q.val().shift;
+            if self.g_prod.q.val().get_bit(72) {
                 // arithmetic shift of a negative value: complement, shift, complement
-                self.shifted.next = !((!self.g_prod.q.val() >> self.s5p.q.val().shift) >> self.k3_6.val());
+                self.shifted.next = !((!self.g_dbl.val()) >> self.s5p.q.val().shift);
             }
         }
         if self.s5_v.q.val() & ((self.s5_phase.q.val() == self.k2_2.val()) | (self.s5_phase.q.val() == self.k3_2.val())) {
-            self.rounded.next = self.g_sh.q.val() + self.k1_70.val();
+            self.rounded.next = self.g_sh.q.val() + self.k1_73.val();
             self.halved.next = self.rounded.val() >> self.k1_6.val();
-            if self.rounded.val().get_bit(69) {
+            if self.rounded.val().get_bit(72) {
                 self.halved.next = !((!self.rounded.val()) >> self.k1_6.val());
             }
-            self.grad_hi.next = self.halved.val().get_bits::<31>(39);
-            if (self.grad_hi.val() == self.k0_31.val()) | (self.grad_hi.val() == self.k1s_31.val()) {
+            self.grad_hi.next = self.halved.val().get_bits::<34>(39);
+            if (self.grad_hi.val() == self.k0_34.val()) | (self.grad_hi.val() == self.k1s_34.val()) {
                 self.grad.next = signed_cast(self.halved.val().get_bits::<40>(0));
-            } else if !self.rounded.val().get_bit(69) {
+            } else if !self.rounded.val().get_bit(72) {
                 self.grad.next = self.max40.val();
             }
         }
 
-        // ---- S6 `Plane`: two 44x26 multipliers ----
+        // ---- S6 `Plane`: two 40x21 multipliers ----
         self.ga.next = self.zs40.val();
         self.gb.next = self.zs40.val();
-        self.off_x.next = self.zs17.val();
-        self.off_y.next = self.zs17.val();
-        self.op_pb.next = self.zs18.val();
-        self.op_qb.next = self.zs18.val();
-        self.p58.next = self.zs58.val();
-        self.q58.next = self.zs58.val();
+        self.off_x.next = self.zs21.val();
+        self.off_y.next = self.zs21.val();
+        self.op_pb.next = self.zs21.val();
+        self.op_qb.next = self.zs21.val();
+        self.pw.next = self.zs62.val();
+        self.qw.next = self.zs62.val();
         self.p56.next = self.zs56.val();
         self.q56.next = self.zs56.val();
-        self.acc_round.next = self.zb58.val();
+        self.acc_round.next = self.zb62.val();
         self.c_frac.next = self.zs56.val();
         self.z0_plane.next = self.zs56.val();
         self.raw_now.next = self.zs56.val();
         if self.s6_v.q.val() {
             self.ga.next = signed_cast(self.s6.q.val().a);
             self.gb.next = signed_cast(self.s6.q.val().b);
-            self.off_x.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6p.q.val().x0));
-            self.off_y.next = self.k8_17.val() - signed_bit_cast_safe::<17, 16>(signed_cast(self.s6p.q.val().y0));
-            // |A| <= 2^39, |8-x0| <= 2^15, X0 < 2^10: every product fits 58 bits (55 used).
-            self.op_pb.next = signed_bit_cast_safe::<18, 17>(self.off_x.val());
-            self.op_qb.next = signed_bit_cast_safe::<18, 17>(self.off_y.val());
+            self.off_x.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s6p.q.val().x0));
+            self.off_y.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s6p.q.val().y0));
+            // |A| <= 2^39, |128-x0| <= 2^19 + 128, X0 < 2^10: every product fits 61 bits (59 used).
+            self.op_pb.next = self.off_x.val();
+            self.op_qb.next = self.off_y.val();
             if self.s6_phase.q.val() != self.k0_2.val() {
-                self.op_pb.next = signed_cast(bit_cast::<18, 10>(self.s6.q.val().bx0));
-                self.op_qb.next = signed_cast(bit_cast::<18, 10>(self.s6.q.val().by0));
+                self.op_pb.next = signed_cast(bit_cast::<21, 10>(self.s6.q.val().bx0));
+                self.op_qb.next = signed_cast(bit_cast::<21, 10>(self.s6.q.val().by0));
             }
-            self.p58.next = signed_cast(self.p_prod.q.val());
-            self.q58.next = signed_cast(self.q_prod.q.val());
+            self.pw.next = signed_bit_cast_safe::<62, 61>(signed_cast(self.p_prod.q.val()));
+            self.qw.next = signed_bit_cast_safe::<62, 61>(signed_cast(self.q_prod.q.val()));
             self.p56.next = signed_cast(self.p_prod.q.val().get_bits::<56>(0));
             self.q56.next = signed_cast(self.q_prod.q.val().get_bits::<56>(0));
-            // C = (z0 << 16) + round(acc >> 4): never saturates (see the module doc).
-            self.acc_round.next = unsigned_cast(self.p_acc.q.val()) + self.k8_58.val();
-            self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(4)));
+            // C = (z0 << 16) + round(acc >> 8): never saturates (see the module doc).
+            self.acc_round.next = unsigned_cast(self.p_acc.q.val()) + self.k128_62.val();
+            self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(8)));
             self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s6p.q.val().z0) << self.k16_6.val());
             self.raw_now.next = self.p_c.q.val() + self.p_s.q.val();
 
@@ -1305,7 +1309,7 @@ impl Logic for Setup {
             self.p_prod.d.next = unsigned_cast(self.mul_p.p.val());
             self.q_prod.d.next = unsigned_cast(self.mul_q.p.val());
             if self.s6_phase.q.val() == self.k1_2.val() {
-                self.p_acc.d.next = self.p58.val() + self.q58.val();
+                self.p_acc.d.next = self.pw.val() + self.qw.val();
             }
             if self.s6_phase.q.val() == self.k2_2.val() {
                 self.p_c.d.next = self.z0_plane.val() + self.c_frac.val();
@@ -1405,27 +1409,27 @@ impl Logic for Setup {
             self.s2p.d.next.x0 = unsigned_cast(self.cx0.val());
             self.s2p.d.next.y0 = unsigned_cast(self.cy0.val());
             self.s2p.d.next.z0 = self.cz0.val();
-            self.la0.d.next = signed_bit_cast_safe::<25, 17>(self.edx_0.val());
+            self.la0.d.next = signed_bit_cast_safe::<25, 21>(self.edx_0.val());
             self.lb0.d.next = self.py_0.val();
-            self.ra0.d.next = signed_bit_cast_safe::<25, 17>(self.edy_0.val());
+            self.ra0.d.next = signed_bit_cast_safe::<25, 21>(self.edy_0.val());
             self.rb0.d.next = self.px_0.val();
             self.tl0.d.next = self.tl_0.val();
-            self.la1.d.next = signed_bit_cast_safe::<25, 17>(self.edx_1.val());
+            self.la1.d.next = signed_bit_cast_safe::<25, 21>(self.edx_1.val());
             self.lb1.d.next = self.py_1.val();
-            self.ra1.d.next = signed_bit_cast_safe::<25, 17>(self.edy_1.val());
+            self.ra1.d.next = signed_bit_cast_safe::<25, 21>(self.edy_1.val());
             self.rb1.d.next = self.px_1.val();
             self.tl1.d.next = self.tl_1.val();
-            self.la2.d.next = signed_bit_cast_safe::<25, 17>(self.edx_2.val());
+            self.la2.d.next = signed_bit_cast_safe::<25, 21>(self.edx_2.val());
             self.lb2.d.next = self.py_2.val();
-            self.ra2.d.next = signed_bit_cast_safe::<25, 17>(self.edy_2.val());
+            self.ra2.d.next = signed_bit_cast_safe::<25, 21>(self.edy_2.val());
             self.rb2.d.next = self.px_2.val();
             self.tl2.d.next = self.tl_2.val();
             self.n_dz10.d.next = self.cdz10.val();
             self.n_dz20.d.next = self.cdz20.val();
-            self.n_dx10.d.next = signed_bit_cast_safe::<18, 17>(self.cdx10.val());
-            self.n_dx20.d.next = signed_bit_cast_safe::<18, 17>(self.cdx20.val());
-            self.n_dy10.d.next = signed_bit_cast_safe::<18, 17>(self.cdy10.val());
-            self.n_dy20.d.next = signed_bit_cast_safe::<18, 17>(self.cdy20.val());
+            self.n_dx10.d.next = self.cdx10.val();
+            self.n_dx20.d.next = self.cdx20.val();
+            self.n_dy10.d.next = self.cdy10.val();
+            self.n_dy20.d.next = self.cdy20.val();
         }
         // S1 and S0.
         if self.leave1.val() {

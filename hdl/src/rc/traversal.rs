@@ -1,5 +1,5 @@
 //! `traversal`: walks a triangle's clamped bounding box in raster order with incremental edge
-//! functions (seed 001 eq. 5: `E += -16*dy` per pixel, `+16*dx` per row) and incremental depth
+//! functions (seed 001 eq. 5: `E += -256*dy` per pixel, `+256*dx` per row) and incremental depth
 //! (`raw += A` per pixel, `+B` per row: the same integers as `Plane::raw`), issuing at most one
 //! fragment per clock; runs the clear engine; and issues one token per cycle to the z-test stage.
 //!
@@ -91,15 +91,15 @@ pub struct Traversal {
     pub rec_by0: Signal<In, Bits<10>>,
     pub rec_by1: Signal<In, Bits<10>>,
     pub rec_addr: Signal<In, Bits<20>>,
-    pub rec_e0: Signal<In, Signed<36>>,
-    pub rec_e1: Signal<In, Signed<36>>,
-    pub rec_e2: Signal<In, Signed<36>>,
-    pub rec_sx0: Signal<In, Signed<22>>,
-    pub rec_sx1: Signal<In, Signed<22>>,
-    pub rec_sx2: Signal<In, Signed<22>>,
-    pub rec_sy0: Signal<In, Signed<22>>,
-    pub rec_sy1: Signal<In, Signed<22>>,
-    pub rec_sy2: Signal<In, Signed<22>>,
+    pub rec_e0: Signal<In, Signed<44>>,
+    pub rec_e1: Signal<In, Signed<44>>,
+    pub rec_e2: Signal<In, Signed<44>>,
+    pub rec_sx0: Signal<In, Signed<30>>,
+    pub rec_sx1: Signal<In, Signed<30>>,
+    pub rec_sx2: Signal<In, Signed<30>>,
+    pub rec_sy0: Signal<In, Signed<30>>,
+    pub rec_sy1: Signal<In, Signed<30>>,
+    pub rec_sy2: Signal<In, Signed<30>>,
     pub rec_raw: Signal<In, Signed<56>>,
     pub rec_a: Signal<In, Signed<40>>,
     pub rec_b: Signal<In, Signed<40>>,
@@ -123,30 +123,30 @@ pub struct Traversal {
     index: DFF<Bits<16>>,
     addr: DFF<Bits<20>>,
     addr_row: DFF<Bits<20>>,
-    e0: DFF<Signed<36>>,
-    e1: DFF<Signed<36>>,
-    e2: DFF<Signed<36>>,
-    er0: DFF<Signed<36>>,
-    er1: DFF<Signed<36>>,
-    er2: DFF<Signed<36>>,
-    sx1_0: DFF<Signed<36>>,
-    sx2_0: DFF<Signed<36>>,
-    sx3_0: DFF<Signed<36>>,
-    sx4_0: DFF<Signed<36>>,
-    sx15_0: DFF<Signed<36>>,
-    sx1_1: DFF<Signed<36>>,
-    sx2_1: DFF<Signed<36>>,
-    sx3_1: DFF<Signed<36>>,
-    sx4_1: DFF<Signed<36>>,
-    sx15_1: DFF<Signed<36>>,
-    sx1_2: DFF<Signed<36>>,
-    sx2_2: DFF<Signed<36>>,
-    sx3_2: DFF<Signed<36>>,
-    sx4_2: DFF<Signed<36>>,
-    sx15_2: DFF<Signed<36>>,
-    sy0: DFF<Signed<36>>,
-    sy1: DFF<Signed<36>>,
-    sy2: DFF<Signed<36>>,
+    e0: DFF<Signed<44>>,
+    e1: DFF<Signed<44>>,
+    e2: DFF<Signed<44>>,
+    er0: DFF<Signed<44>>,
+    er1: DFF<Signed<44>>,
+    er2: DFF<Signed<44>>,
+    sx1_0: DFF<Signed<44>>,
+    sx2_0: DFF<Signed<44>>,
+    sx3_0: DFF<Signed<44>>,
+    sx4_0: DFF<Signed<44>>,
+    sx15_0: DFF<Signed<44>>,
+    sx1_1: DFF<Signed<44>>,
+    sx2_1: DFF<Signed<44>>,
+    sx3_1: DFF<Signed<44>>,
+    sx4_1: DFF<Signed<44>>,
+    sx15_1: DFF<Signed<44>>,
+    sx1_2: DFF<Signed<44>>,
+    sx2_2: DFF<Signed<44>>,
+    sx3_2: DFF<Signed<44>>,
+    sx4_2: DFF<Signed<44>>,
+    sx15_2: DFF<Signed<44>>,
+    sy0: DFF<Signed<44>>,
+    sy1: DFF<Signed<44>>,
+    sy2: DFF<Signed<44>>,
     nonpos0: DFF<Bit>,
     nonpos1: DFF<Bit>,
     nonpos2: DFF<Bit>,
@@ -179,18 +179,18 @@ pub struct Traversal {
 
     // The window: ewJ_K is edge K at x+J, rwJ the raw depth at x+J; cov J: candidate x+J is covered
     // and inside the box; fsel the first covered one, nsel the next candidate after this clock.
-    ew1_0: Signal<Local, Signed<36>>,
-    ew2_0: Signal<Local, Signed<36>>,
-    ew3_0: Signal<Local, Signed<36>>,
-    ew15_0: Signal<Local, Signed<36>>,
-    ew1_1: Signal<Local, Signed<36>>,
-    ew2_1: Signal<Local, Signed<36>>,
-    ew3_1: Signal<Local, Signed<36>>,
-    ew15_1: Signal<Local, Signed<36>>,
-    ew1_2: Signal<Local, Signed<36>>,
-    ew2_2: Signal<Local, Signed<36>>,
-    ew3_2: Signal<Local, Signed<36>>,
-    ew15_2: Signal<Local, Signed<36>>,
+    ew1_0: Signal<Local, Signed<44>>,
+    ew2_0: Signal<Local, Signed<44>>,
+    ew3_0: Signal<Local, Signed<44>>,
+    ew15_0: Signal<Local, Signed<44>>,
+    ew1_1: Signal<Local, Signed<44>>,
+    ew2_1: Signal<Local, Signed<44>>,
+    ew3_1: Signal<Local, Signed<44>>,
+    ew15_1: Signal<Local, Signed<44>>,
+    ew1_2: Signal<Local, Signed<44>>,
+    ew2_2: Signal<Local, Signed<44>>,
+    ew3_2: Signal<Local, Signed<44>>,
+    ew15_2: Signal<Local, Signed<44>>,
     lw: Signal<Local, Bits<10>>,
     cov0: Signal<Local, Bit>,
     cov1: Signal<Local, Bit>,
@@ -213,15 +213,15 @@ pub struct Traversal {
     fsel10: Signal<Local, Bits<10>>,
     load_walk: Signal<Local, Bit>,
     load_clear: Signal<Local, Bit>,
-    rsx1_0: Signal<Local, Signed<36>>,
-    rsx1_1: Signal<Local, Signed<36>>,
-    rsx1_2: Signal<Local, Signed<36>>,
-    rsx2_0: Signal<Local, Signed<36>>,
-    rsx2_1: Signal<Local, Signed<36>>,
-    rsx2_2: Signal<Local, Signed<36>>,
-    rsx4_0: Signal<Local, Signed<36>>,
-    rsx4_1: Signal<Local, Signed<36>>,
-    rsx4_2: Signal<Local, Signed<36>>,
+    rsx1_0: Signal<Local, Signed<44>>,
+    rsx1_1: Signal<Local, Signed<44>>,
+    rsx1_2: Signal<Local, Signed<44>>,
+    rsx2_0: Signal<Local, Signed<44>>,
+    rsx2_1: Signal<Local, Signed<44>>,
+    rsx2_2: Signal<Local, Signed<44>>,
+    rsx4_0: Signal<Local, Signed<44>>,
+    rsx4_1: Signal<Local, Signed<44>>,
+    rsx4_2: Signal<Local, Signed<44>>,
     ra1: Signal<Local, Signed<56>>,
     ra2: Signal<Local, Signed<56>>,
     ra4: Signal<Local, Signed<56>>,
@@ -232,7 +232,7 @@ pub struct Traversal {
     depth_max: Constant<Bits<24>>,
     k0_24: Constant<Bits<24>>,
     k0_15: Constant<Bits<15>>,
-    ks0_36: Constant<Signed<36>>,
+    ks0_44: Constant<Signed<44>>,
     ks0_56: Constant<Signed<56>>,
     kz2: Constant<Bits<2>>,
     kz3: Constant<Bits<3>>,
@@ -413,7 +413,7 @@ impl Traversal {
             depth_max: Constant::new(((1u64 << 24) - 1).into()),
             k0_24: Constant::new(0.into()),
             k0_15: Constant::new(0.into()),
-            ks0_36: Constant::new(0i64.into()),
+            ks0_44: Constant::new(0i64.into()),
             ks0_56: Constant::new(0i64.into()),
             kz2: Constant::new(0.into()),
             kz3: Constant::new(0.into()),
@@ -479,10 +479,10 @@ impl Logic for Traversal {
             self.ew2_2.next = self.e2.q.val() + self.sx2_2.q.val();
             self.ew3_2.next = self.e2.q.val() + self.sx3_2.q.val();
             self.ew15_2.next = self.e2.q.val() + self.sx15_2.q.val();
-            self.cov0.next = !self.e0.q.val().get_bit(35) & !self.e1.q.val().get_bit(35) & !self.e2.q.val().get_bit(35);
-            self.cov1.next = !self.ew1_0.val().get_bit(35) & !self.ew1_1.val().get_bit(35) & !self.ew1_2.val().get_bit(35) & self.rg0.q.val();
-            self.cov2.next = !self.ew2_0.val().get_bit(35) & !self.ew2_1.val().get_bit(35) & !self.ew2_2.val().get_bit(35) & self.rg1.q.val();
-            self.cov3.next = !self.ew3_0.val().get_bit(35) & !self.ew3_1.val().get_bit(35) & !self.ew3_2.val().get_bit(35) & self.rg2.q.val();
+            self.cov0.next = !self.e0.q.val().get_bit(43) & !self.e1.q.val().get_bit(43) & !self.e2.q.val().get_bit(43);
+            self.cov1.next = !self.ew1_0.val().get_bit(43) & !self.ew1_1.val().get_bit(43) & !self.ew1_2.val().get_bit(43) & self.rg0.q.val();
+            self.cov2.next = !self.ew2_0.val().get_bit(43) & !self.ew2_1.val().get_bit(43) & !self.ew2_2.val().get_bit(43) & self.rg1.q.val();
+            self.cov3.next = !self.ew3_0.val().get_bit(43) & !self.ew3_1.val().get_bit(43) & !self.ew3_2.val().get_bit(43) & self.rg2.q.val();
             // The first covered candidate, and the next one after it (or the window's end, 4).
             self.has_frag.next = self.cov0.val() | self.cov1.val() | self.cov2.val() | self.cov3.val();
             self.fsel.next = self.k3_2.val();
@@ -528,17 +528,17 @@ impl Logic for Traversal {
             // The long skip: nothing covered in the window, and an edge negative at x and at x+15 (so at
             // every candidate between).
             self.long.next = !self.has_frag.val()
-                & ((self.e0.q.val().get_bit(35) & self.ew15_0.val().get_bit(35))
-                    | (self.e1.q.val().get_bit(35) & self.ew15_1.val().get_bit(35))
-                    | (self.e2.q.val().get_bit(35) & self.ew15_2.val().get_bit(35)));
+                & ((self.e0.q.val().get_bit(43) & self.ew15_0.val().get_bit(43))
+                    | (self.e1.q.val().get_bit(43) & self.ew15_1.val().get_bit(43))
+                    | (self.e2.q.val().get_bit(43) & self.ew15_2.val().get_bit(43)));
             // Nothing further right in this row: an edge negative at the skip's last candidate whose
             // step does not grow.
-            self.dead4.next = (self.ew3_0.val().get_bit(35) & self.nonpos0.q.val())
-                | (self.ew3_1.val().get_bit(35) & self.nonpos1.q.val())
-                | (self.ew3_2.val().get_bit(35) & self.nonpos2.q.val());
-            self.dead16.next = (self.ew15_0.val().get_bit(35) & self.nonpos0.q.val())
-                | (self.ew15_1.val().get_bit(35) & self.nonpos1.q.val())
-                | (self.ew15_2.val().get_bit(35) & self.nonpos2.q.val());
+            self.dead4.next = (self.ew3_0.val().get_bit(43) & self.nonpos0.q.val())
+                | (self.ew3_1.val().get_bit(43) & self.nonpos1.q.val())
+                | (self.ew3_2.val().get_bit(43) & self.nonpos2.q.val());
+            self.dead16.next = (self.ew15_0.val().get_bit(43) & self.nonpos0.q.val())
+                | (self.ew15_1.val().get_bit(43) & self.nonpos1.q.val())
+                | (self.ew15_2.val().get_bit(43) & self.nonpos2.q.val());
             self.row_done.next = !self.has_next.val() & (!self.rg3.q.val() | self.dead4.val());
             if self.long.val() {
                 self.row_done.next = !self.rg15.q.val() | self.dead16.val();
@@ -570,18 +570,18 @@ impl Logic for Traversal {
                 self.depth.next = self.k0_24.val();
             }
         } else {
-            self.ew1_0.next = self.ks0_36.val();
-            self.ew2_0.next = self.ks0_36.val();
-            self.ew3_0.next = self.ks0_36.val();
-            self.ew15_0.next = self.ks0_36.val();
-            self.ew1_1.next = self.ks0_36.val();
-            self.ew2_1.next = self.ks0_36.val();
-            self.ew3_1.next = self.ks0_36.val();
-            self.ew15_1.next = self.ks0_36.val();
-            self.ew1_2.next = self.ks0_36.val();
-            self.ew2_2.next = self.ks0_36.val();
-            self.ew3_2.next = self.ks0_36.val();
-            self.ew15_2.next = self.ks0_36.val();
+            self.ew1_0.next = self.ks0_44.val();
+            self.ew2_0.next = self.ks0_44.val();
+            self.ew3_0.next = self.ks0_44.val();
+            self.ew15_0.next = self.ks0_44.val();
+            self.ew1_1.next = self.ks0_44.val();
+            self.ew2_1.next = self.ks0_44.val();
+            self.ew3_1.next = self.ks0_44.val();
+            self.ew15_1.next = self.ks0_44.val();
+            self.ew1_2.next = self.ks0_44.val();
+            self.ew2_2.next = self.ks0_44.val();
+            self.ew3_2.next = self.ks0_44.val();
+            self.ew15_2.next = self.ks0_44.val();
             self.cov0.next = false;
             self.cov1.next = false;
             self.cov2.next = false;
@@ -603,13 +603,13 @@ impl Logic for Traversal {
         }
         if self.rec_valid.val() {
             // The multiples of a record's steps (the rest are summed in the load branch).
-            self.rsx1_0.next = signed_bit_cast_safe::<36, 22>(self.rec_sx0.val());
+            self.rsx1_0.next = signed_bit_cast_safe::<44, 30>(self.rec_sx0.val());
             self.rsx2_0.next = self.rsx1_0.val() + self.rsx1_0.val();
             self.rsx4_0.next = self.rsx2_0.val() + self.rsx2_0.val();
-            self.rsx1_1.next = signed_bit_cast_safe::<36, 22>(self.rec_sx1.val());
+            self.rsx1_1.next = signed_bit_cast_safe::<44, 30>(self.rec_sx1.val());
             self.rsx2_1.next = self.rsx1_1.val() + self.rsx1_1.val();
             self.rsx4_1.next = self.rsx2_1.val() + self.rsx2_1.val();
-            self.rsx1_2.next = signed_bit_cast_safe::<36, 22>(self.rec_sx2.val());
+            self.rsx1_2.next = signed_bit_cast_safe::<44, 30>(self.rec_sx2.val());
             self.rsx2_2.next = self.rsx1_2.val() + self.rsx1_2.val();
             self.rsx4_2.next = self.rsx2_2.val() + self.rsx2_2.val();
             self.ra1.next = signed_bit_cast_safe::<56, 40>(self.rec_a.val());
@@ -617,15 +617,15 @@ impl Logic for Traversal {
             self.ra4.next = self.ra2.val() + self.ra2.val();
 
         } else {
-            self.rsx1_0.next = self.ks0_36.val();
-            self.rsx2_0.next = self.ks0_36.val();
-            self.rsx4_0.next = self.ks0_36.val();
-            self.rsx1_1.next = self.ks0_36.val();
-            self.rsx2_1.next = self.ks0_36.val();
-            self.rsx4_1.next = self.ks0_36.val();
-            self.rsx1_2.next = self.ks0_36.val();
-            self.rsx2_2.next = self.ks0_36.val();
-            self.rsx4_2.next = self.ks0_36.val();
+            self.rsx1_0.next = self.ks0_44.val();
+            self.rsx2_0.next = self.ks0_44.val();
+            self.rsx4_0.next = self.ks0_44.val();
+            self.rsx1_1.next = self.ks0_44.val();
+            self.rsx2_1.next = self.ks0_44.val();
+            self.rsx4_1.next = self.ks0_44.val();
+            self.rsx1_2.next = self.ks0_44.val();
+            self.rsx2_2.next = self.ks0_44.val();
+            self.rsx4_2.next = self.ks0_44.val();
             self.ra1.next = self.ks0_56.val();
             self.ra2.next = self.ks0_56.val();
             self.ra4.next = self.ks0_56.val();
@@ -815,8 +815,8 @@ impl Logic for Traversal {
             self.sx3_0.d.next = self.rsx2_0.val() + self.rsx1_0.val();
             self.sx4_0.d.next = self.rsx4_0.val();
             self.sx15_0.d.next = self.rsx4_0.val() + self.rsx4_0.val() + self.rsx4_0.val() + self.rsx2_0.val() + self.rsx1_0.val();
-            self.sy0.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sy0.val());
-            self.nonpos0.d.next = self.rec_sx0.val().get_bit(21) | (self.rsx1_0.val() == self.ks0_36.val());
+            self.sy0.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy0.val());
+            self.nonpos0.d.next = self.rec_sx0.val().get_bit(29) | (self.rsx1_0.val() == self.ks0_44.val());
             self.e1.d.next = self.rec_e1.val();
             self.er1.d.next = self.rec_e1.val();
             self.sx1_1.d.next = self.rsx1_1.val();
@@ -824,8 +824,8 @@ impl Logic for Traversal {
             self.sx3_1.d.next = self.rsx2_1.val() + self.rsx1_1.val();
             self.sx4_1.d.next = self.rsx4_1.val();
             self.sx15_1.d.next = self.rsx4_1.val() + self.rsx4_1.val() + self.rsx4_1.val() + self.rsx2_1.val() + self.rsx1_1.val();
-            self.sy1.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sy1.val());
-            self.nonpos1.d.next = self.rec_sx1.val().get_bit(21) | (self.rsx1_1.val() == self.ks0_36.val());
+            self.sy1.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy1.val());
+            self.nonpos1.d.next = self.rec_sx1.val().get_bit(29) | (self.rsx1_1.val() == self.ks0_44.val());
             self.e2.d.next = self.rec_e2.val();
             self.er2.d.next = self.rec_e2.val();
             self.sx1_2.d.next = self.rsx1_2.val();
@@ -833,8 +833,8 @@ impl Logic for Traversal {
             self.sx3_2.d.next = self.rsx2_2.val() + self.rsx1_2.val();
             self.sx4_2.d.next = self.rsx4_2.val();
             self.sx15_2.d.next = self.rsx4_2.val() + self.rsx4_2.val() + self.rsx4_2.val() + self.rsx2_2.val() + self.rsx1_2.val();
-            self.sy2.d.next = signed_bit_cast_safe::<36, 22>(self.rec_sy2.val());
-            self.nonpos2.d.next = self.rec_sx2.val().get_bit(21) | (self.rsx1_2.val() == self.ks0_36.val());
+            self.sy2.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy2.val());
+            self.nonpos2.d.next = self.rec_sx2.val().get_bit(29) | (self.rsx1_2.val() == self.ks0_44.val());
             self.rawh.d.next = self.rec_raw.val() + self.half.val();
             self.rawh_row.d.next = self.rec_raw.val() + self.half.val();
             self.ga1.d.next = self.ra1.val();

@@ -19,7 +19,7 @@ fn main() {
 fn run() -> Result<(), String> {
     // Setup latency: one drawn triangle; the cycle of its first Z read minus its acceptance cycle.
     let s = Screen::new(32, 32).unwrap();
-    let v = |x: i32, y: i32| WinVertex { x: x * 16, y: y * 16, z: 100 };
+    let v = |x: i32, y: i32| WinVertex { x: x * golden::format::SUBPIXEL_ONE, y: y * golden::format::SUBPIXEL_ONE, z: 100 };
     let one = RcCmd::triangle(1, [v(2, 2), v(12, 2), v(2, 12)], CullMode::None, FrontFace::Ccw)?;
     let single = run_model(s, &frame(false, vec![one]), Drive::ideal(), None)?;
     println!("single drawn triangle (10x10 px box, frame start + triangle + end of frame): {} cycles", single.cycles);

@@ -50,14 +50,15 @@ pub fn entry_of(r: &TdbsRecord) -> TdbsEntry {
 /// A colour-setup command as the RTL's stream word.
 pub fn command_of(c: &SetupCmd) -> SetupCommand {
     let s = |v: i16| -> Bits<16> { (v as u16 as u64).into() };
+    let w = crate::common::window_bits;
     SetupCommand {
         index: (c.index as u64).into(),
-        x0: s(c.x[0]),
-        y0: s(c.y[0]),
-        x1: s(c.x[1]),
-        y1: s(c.y[1]),
-        x2: s(c.x[2]),
-        y2: s(c.y[2]),
+        x0: w(c.x[0]),
+        y0: w(c.y[0]),
+        x1: w(c.x[1]),
+        y1: w(c.y[1]),
+        x2: w(c.x[2]),
+        y2: w(c.y[2]),
         v0r: s(c.values[0][0]),
         v0g: s(c.values[0][1]),
         v0b: s(c.values[0][2]),
@@ -107,15 +108,15 @@ pub fn tex_values_of(v: &[[i64; 3]; 3]) -> TexValues {
 
 /// A texture-setup command as the RTL's stream word.
 pub fn tex_command_of(c: &TexSetupCmd) -> TexSetupCommand {
-    let s = |v: i16| -> Bits<16> { (v as u16 as u64).into() };
+    let w = crate::common::window_bits;
     TexSetupCommand {
         index: (c.index as u64).into(),
-        x0: s(c.x[0]),
-        y0: s(c.y[0]),
-        x1: s(c.x[1]),
-        y1: s(c.y[1]),
-        x2: s(c.x[2]),
-        y2: s(c.y[2]),
+        x0: w(c.x[0]),
+        y0: w(c.y[0]),
+        x1: w(c.x[1]),
+        y1: w(c.y[1]),
+        x2: w(c.x[2]),
+        y2: w(c.y[2]),
         values: tex_values_of(&c.values),
     }
 }
@@ -163,8 +164,8 @@ impl BitVector {
     pub fn push_command(&mut self, c: &SetupCmd) {
         self.push(c.index as u128, 16);
         for k in 0..3 {
-            self.push(c.x[k] as u16 as u128, 16);
-            self.push(c.y[k] as u16 as u128, 16);
+            self.push(c.x[k] as u32 as u128 & 0xf_ffff, 20);
+            self.push(c.y[k] as u32 as u128 & 0xf_ffff, 20);
         }
         for k in 0..3 {
             for ch in 0..3 {
@@ -189,8 +190,8 @@ impl BitVector {
     pub fn push_tex_command(&mut self, c: &TexSetupCmd) {
         self.push(c.index as u128, 16);
         for k in 0..3 {
-            self.push(c.x[k] as u16 as u128, 16);
-            self.push(c.y[k] as u16 as u128, 16);
+            self.push(c.x[k] as u32 as u128 & 0xf_ffff, 20);
+            self.push(c.y[k] as u32 as u128 & 0xf_ffff, 20);
         }
         for vk in &c.values {
             for &v in vk {
@@ -250,30 +251,30 @@ mod tests {
     fn commands_pack_as_the_rtl_struct_does() {
         let c = SetupCmd {
             index: 0x1234,
-            x: [-16384, 32767, 5],
-            y: [-1, 0, 100],
+            x: [-262144, 524287, 5],
+            y: [-1, 0, -524288],
             values: [[255, 0, -16384], [16384, 7, 8], [9, -10, 11]],
             material: 3,
             flat: true,
             flat_rgb: [1, 2, 250],
         };
-        let packed: Bits<297> = command_of(&c).into();
+        let packed: Bits<321> = command_of(&c).into();
         let mut v = BitVector::default();
         v.push_command(&c);
-        assert_eq!(v.len(), 297);
-        for i in 0..297 {
+        assert_eq!(v.len(), 321);
+        for i in 0..321 {
             assert_eq!(packed.get_bit(i), v.0[i], "bit {i}");
         }
     }
 
     #[test]
     fn texture_commands_and_records_pack_as_the_rtl_structs_do() {
-        let c = TexSetupCmd { index: 0xfedc, x: [-16384, 32767, 5], y: [-1, 0, 100], values: [[-(1 << 32), (1 << 32) - 1, 1], [7, -8, 1 << 24], [123456789, -987654321, 3]] };
-        let packed: Bits<409> = tex_command_of(&c).into();
+        let c = TexSetupCmd { index: 0xfedc, x: [-262144, 524287, 5], y: [-1, 0, -524288], values: [[-(1 << 32), (1 << 32) - 1, 1], [7, -8, 1 << 24], [123456789, -987654321, 3]] };
+        let packed: Bits<433> = tex_command_of(&c).into();
         let mut v = BitVector::default();
         v.push_tex_command(&c);
-        assert_eq!(v.len(), 409);
-        for i in 0..409 {
+        assert_eq!(v.len(), 433);
+        for i in 0..433 {
             assert_eq!(packed.get_bit(i), v.0[i], "command bit {i}");
         }
         let t = TexPlanes {

@@ -8,7 +8,7 @@ use super::replay::Recording;
 use crate::common::Rng;
 use golden::cycle::color_shader::{phong_config, CsConfigWrite, CsMemories};
 use golden::cycle::colour_setup::SetupCmd;
-use golden::format::Plane;
+use golden::format::{Plane, WINDOW_MAX, WINDOW_MIN};
 use golden::format::{CS_GLOSS_LOG2_MAX, CS_LIGHTS, CS_MATERIALS};
 use golden::shade::{normal_q14, PhongLights, PhongMaterial, TdbsEntry};
 
@@ -17,7 +17,8 @@ pub fn rand_i16(rng: &mut Rng, lo: i32, hi: i32) -> i16 {
 }
 
 /// Random colour-setup commands: flat ones, zero-area ones, realistic Gouraud and Phong ones, tiny
-/// triangles with steep gradients (A/B saturation), and full-range 16-bit fields (C saturation).
+/// triangles with steep gradients (A/B saturation), and full-range fields (20-bit coordinates, 16-bit
+/// values: C saturation).
 pub fn random_commands(n: usize, rng: &mut Rng) -> Vec<SetupCmd> {
     (0..n)
         .map(|i| {
@@ -26,17 +27,17 @@ pub fn random_commands(n: usize, rng: &mut Rng) -> Vec<SetupCmd> {
             let mut c = SetupCmd { index, material, ..Default::default() };
             let kind = rng.below(10);
             let (lo, hi, span) = match kind {
-                0 | 1 => (-32768, 32767, 65535),
-                2 => (-4000, 8000, 4),
-                _ => (-5120, 10240, 4000),
+                0 | 1 => (WINDOW_MIN, WINDOW_MAX, WINDOW_MAX - WINDOW_MIN),
+                2 => (-4000 * 16, 8000 * 16, 4),
+                _ => (-5120 * 16, 10240 * 16, 4000 * 16),
             };
-            let x0 = rand_i16(rng, lo, hi) as i32;
-            let y0 = rand_i16(rng, lo, hi) as i32;
+            let x0 = lo + rng.below((hi - lo) as u64) as i32;
+            let y0 = lo + rng.below((hi - lo) as u64) as i32;
             for k in 0..3 {
                 let dx = rng.below(2 * span as u64 + 1) as i32 - span;
                 let dy = rng.below(2 * span as u64 + 1) as i32 - span;
-                c.x[k] = (x0 + if k == 0 { 0 } else { dx }).clamp(-32768, 32767) as i16;
-                c.y[k] = (y0 + if k == 0 { 0 } else { dy }).clamp(-32768, 32767) as i16;
+                c.x[k] = (x0 + if k == 0 { 0 } else { dx }).clamp(WINDOW_MIN, WINDOW_MAX);
+                c.y[k] = (y0 + if k == 0 { 0 } else { dy }).clamp(WINDOW_MIN, WINDOW_MAX);
             }
             for k in 0..3 {
                 for ch in 0..3 {
@@ -50,8 +51,8 @@ pub fn random_commands(n: usize, rng: &mut Rng) -> Vec<SetupCmd> {
             if kind == 3 {
                 // Zero area: vertex 2 on the line through vertices 0 and 1 (or all three equal).
                 let t = if i % 2 == 0 { 2 } else { 0 };
-                c.x[2] = (c.x[0] as i32 + t * (c.x[1] as i32 - c.x[0] as i32)).clamp(-32768, 32767) as i16;
-                c.y[2] = (c.y[0] as i32 + t * (c.y[1] as i32 - c.y[0] as i32)).clamp(-32768, 32767) as i16;
+                c.x[2] = (c.x[0] + t * (c.x[1] - c.x[0])).clamp(WINDOW_MIN, WINDOW_MAX);
+                c.y[2] = (c.y[0] + t * (c.y[1] - c.y[0])).clamp(WINDOW_MIN, WINDOW_MAX);
                 if t == 0 {
                     c.x[1] = c.x[0];
                     c.y[1] = c.y[0];

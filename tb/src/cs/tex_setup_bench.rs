@@ -150,26 +150,27 @@ fn run_inner(cmds: &[TexSetupCmd], model_cmds: &[TexSetupCmd], gap_percent: u64,
     Ok(out)
 }
 
-/// Random commands reaching every path: coordinates over the whole 16-bit range and small ones,
+/// Random commands reaching every path: coordinates over the whole 20-bit range and small ones,
 /// det > 0, < 0 and = 0, values over the whole 33-bit range (planes saturating) and in the range real
 /// frames use.
 pub fn random_commands(n: usize, rng: &mut Rng) -> Vec<TexSetupCmd> {
-    let coord = |rng: &mut Rng, lo: i32, span: i32| (lo + rng.below(span as u64 + 1) as i32).clamp(-32768, 32767) as i16;
+    let (wmin, wmax) = (golden::format::WINDOW_MIN, golden::format::WINDOW_MAX);
+    let coord = |rng: &mut Rng, lo: i32, span: i32| (lo + rng.below(span as u64 + 1) as i32).clamp(wmin, wmax);
     (0..n)
         .map(|i| {
             let kind = rng.below(8);
             let mut c = TexSetupCmd { index: 1 + rng.below(65535) as u16, ..Default::default() };
-            let (x0, y0) = (coord(rng, -32768, 65535), coord(rng, -32768, 65535));
-            let span = if kind == 0 { 65535 } else if kind == 1 { 8 } else { 4000 };
+            let (x0, y0) = (coord(rng, wmin, wmax - wmin), coord(rng, wmin, wmax - wmin));
+            let span = if kind == 0 { wmax - wmin } else if kind == 1 { 8 } else { 4000 * 16 };
             for k in 0..3 {
                 let d = |rng: &mut Rng| if k == 0 { 0 } else { rng.below(2 * span as u64 + 1) as i32 - span };
-                c.x[k] = (x0 as i32 + d(rng)).clamp(-32768, 32767) as i16;
-                c.y[k] = (y0 as i32 + d(rng)).clamp(-32768, 32767) as i16;
+                c.x[k] = (x0 + d(rng)).clamp(wmin, wmax);
+                c.y[k] = (y0 + d(rng)).clamp(wmin, wmax);
             }
             if kind == 2 {
                 // Zero area: vertex 2 on the line through vertices 0 and 1.
-                c.x[2] = (2 * c.x[1] as i32 - c.x[0] as i32).clamp(-32768, 32767) as i16;
-                c.y[2] = (2 * c.y[1] as i32 - c.y[0] as i32).clamp(-32768, 32767) as i16;
+                c.x[2] = (2 * c.x[1] - c.x[0]).clamp(wmin, wmax);
+                c.y[2] = (2 * c.y[1] - c.y[0]).clamp(wmin, wmax);
                 if i % 2 == 0 {
                     c.x = [c.x[0]; 3];
                     c.y = [c.y[0]; 3];
@@ -256,8 +257,17 @@ mod tests {
     fn the_texture_setup_bench_fails_when_the_model_gets_another_command() {
         let (mut rng, seed) = seeded("tex_setup_broken", 0x7E5E);
         let cmds = random_commands(40, &mut rng);
+        // Command 17 or the first after it whose record a changed 1/w at vertex 1 changes (a saturated
+        // or zero-area record may not change).
+        let k = (17..cmds.len())
+            .find(|&k| {
+                let mut w = cmds[k];
+                w.values[1][2] += 1;
+                w.record() != cmds[k].record()
+            })
+            .expect("a command whose record depends on vertex 1's 1/w");
         let mut wrong = cmds.clone();
-        wrong[17].values[1][2] += 1;
+        wrong[k].values[1][2] += 1;
         let e = run("tex_setup_broken", &cmds, &wrong, 30, seed, false).unwrap_err();
         assert!(e.contains("port tdbt_write_data"), "{e}");
     }
@@ -273,10 +283,10 @@ mod tests {
         let v = hdl::cs::tex_setup::verilog().unwrap();
         let r = replay_iverilog(&v, "tex_setup", &rec, &scratch_dir("cs/tex_setup_replay")).unwrap();
         println!("tex_setup Verilog (iverilog): {} cycles replayed in {:.2} s, 0 mismatches", r.cycles, r.seconds);
-        // C's rounding (+8 before >> 4) made 0: the replay must fail.
-        let half = "localparam signed [63:0] k8_64 = 64'h8;";
+        // C's rounding (+128 before >> 8) made 0: the replay must fail.
+        let half = "localparam signed [63:0] k128_64 = 64'h80;";
         assert!(v.contains(half), "the rounding constant `{half}` is not in the Verilog");
-        let e = replay_iverilog(&v.replacen(half, "localparam signed [63:0] k8_64 = 64'h0;", 1), "tex_setup", &rec, &scratch_dir("cs/tex_setup_replay_broken")).unwrap_err();
+        let e = replay_iverilog(&v.replacen(half, "localparam signed [63:0] k128_64 = 64'h0;", 1), "tex_setup", &rec, &scratch_dir("cs/tex_setup_replay_broken")).unwrap_err();
         assert!(e.contains("port tdbt_write_data"), "{e}");
     }
 

@@ -213,8 +213,8 @@ mod tests {
         let r = replay_iverilog(&v, "textured_setup", &rec, &scratch_dir("cs/textured_setup_replay")).unwrap();
         println!("textured_setup Verilog (iverilog): {} cycles replayed in {:.2} s, 0 mismatches", r.cycles, r.seconds);
         // Texture setup's y1 wired from y2: the replay must fail on TdbT.
-        let wire = "texture$cmd$data[(64'h40)+:(16)] = cmd$data[(64'h40)+:(16)];";
-        let swapped = "texture$cmd$data[(64'h40)+:(16)] = cmd$data[(64'h60)+:(16)];";
+        let wire = "texture$cmd$data[(64'h4c)+:(20)] = cmd$data[(64'h4c)+:(20)];";
+        let swapped = "texture$cmd$data[(64'h4c)+:(20)] = cmd$data[(64'h74)+:(20)];";
         assert!(v.contains(wire), "the wiring of y1 (`{wire}`) is not in the Verilog");
         let e = replay_iverilog(&v.replacen(wire, swapped, 1), "textured_setup", &rec, &scratch_dir("cs/textured_setup_replay_broken")).unwrap_err();
         assert!(e.contains("port tdbt_write_data"), "{e}");

@@ -239,7 +239,8 @@ pub fn axis_aligned_objects(rng: &mut crate::common::Rng, screen: Screen, count:
         let (a, b) = (leg(), leg());
         let (sx, sy) = (if rng.chance(50) { 1 } else { -1 }, if rng.chance(50) { 1 } else { -1 });
         let z = rng.below(1 << 24) as u32;
-        let corner = |px: i32, py: i32| golden::format::WinVertex { x: px * 16, y: py * 16, z };
+        let one = golden::format::SUBPIXEL_ONE;
+        let corner = |px: i32, py: i32| golden::format::WinVertex { x: px * one, y: py * one, z };
         // Rotated, so that each of the three edges (in the order with det > 0) is a leg in some objects.
         let mut v = [corner(x, y), corner(x + sx * a, y), corner(x, y + sy * b)];
         v.rotate_left(rng.below(3) as usize);
@@ -307,12 +308,13 @@ pub struct ObjectShape {
 
 /// Random triangles of the given shape on a small screen, at most `max_ops` OPs needed with reuse.
 pub fn random_objects_shaped(rng: &mut crate::common::Rng, screen: Screen, count: usize, max_ops: usize, shape: ObjectShape) -> Vec<ObjectParams> {
-    let (w, h) = (screen.width as i64 * 16, screen.height as i64 * 16);
+    let one = golden::format::SUBPIXEL_ONE as i64;
+    let (w, h) = (screen.width as i64 * one, screen.height as i64 * one);
     set_up_objects(rng, screen, count, max_ops, |rng| {
         let big = rng.chance(shape.big_percent);
-        let span = 16 * if big { shape.big_span } else { shape.span };
-        let cx = rng.below((w + 64) as u64) as i64 - 32;
-        let cy = rng.below((h + 64) as u64) as i64 - 32;
+        let span = one * if big { shape.big_span } else { shape.span };
+        let cx = rng.below((w + 4 * one) as u64) as i64 - 2 * one;
+        let cy = rng.below((h + 4 * one) as u64) as i64 - 2 * one;
         [0, 1, 2].map(|_| golden::format::WinVertex {
             x: (cx + rng.below(span as u64) as i64 - span / 2) as i32,
             y: (cy + rng.below(span as u64) as i64 - span / 2) as i32,

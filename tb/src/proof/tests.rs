@@ -37,12 +37,13 @@ fn reused_object_processors_match_their_cycle_model_every_cycle_with_random_gaps
     // Objects in separate bands of lines so that one OP is reused; a background object under each.
     let mut objs = Vec::new();
     for band in 0..4 {
-        let y = band as i32 * 5 * 16;
+        let (one, u) = (golden::format::SUBPIXEL_ONE, golden::format::SUBPIXEL_ONE / 16);
+        let y = band as i32 * 5 * one;
         for (k, (x0, x1)) in [(0, 32), (2, 14), (16, 31)].iter().enumerate() {
             let v = [
-                WinVertex { x: x0 * 16, y: y + 1, z: 1000 + 5000 * k as u32 },
-                WinVertex { x: x1 * 16 + 5, y: y + 2 * 16 + 3, z: 4000 },
-                WinVertex { x: x0 * 16 + 40, y: y + 4 * 16 + 7, z: 9000 },
+                WinVertex { x: x0 * one, y: y + u, z: 1000 + 5000 * k as u32 },
+                WinVertex { x: x1 * one + 5 * u, y: y + 2 * one + 3 * u, z: 4000 },
+                WinVertex { x: x0 * one + 40 * u, y: y + 4 * one + 7 * u, z: 9000 },
             ];
             let _ = (k, rng.next_u64());
             if let Some(p) = object_setup(&v, [[100, -200, 16000]; 3], objs.len() as u16, s) {

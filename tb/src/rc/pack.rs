@@ -8,7 +8,7 @@ use rust_hdl::prelude::*;
 
 /// The RC's command port word for a command.
 pub fn command_word(c: &RcCmd) -> RcCommand {
-    let b16 = |v: i32| Bits::<16>::from(v as u16 as u64);
+    let b20 = crate::common::window_bits;
     let b24 = |v: u32| Bits::<24>::from(v as u64);
     RcCommand {
         kind: match c.kind {
@@ -26,14 +26,14 @@ pub fn command_word(c: &RcCmd) -> RcCommand {
         }
         .into(),
         front_cw: c.front == FrontFace::Cw,
-        x0: b16(c.v[0].x),
-        y0: b16(c.v[0].y),
+        x0: b20(c.v[0].x),
+        y0: b20(c.v[0].y),
         z0: b24(c.v[0].z),
-        x1: b16(c.v[1].x),
-        y1: b16(c.v[1].y),
+        x1: b20(c.v[1].x),
+        y1: b20(c.v[1].y),
         z1: b24(c.v[1].z),
-        x2: b16(c.v[2].x),
-        y2: b16(c.v[2].y),
+        x2: b20(c.v[2].x),
+        y2: b20(c.v[2].y),
         z2: b24(c.v[2].z),
     }
 }

@@ -4,7 +4,10 @@
 
 use crate::common::Rng;
 use golden::cycle::rc::{CmdKind, RcCmd, RcResult};
-use golden::format::{Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND};
+use golden::format::{Screen, WinVertex, DEPTH_MAX, INDEX_BACKGROUND, SUBPIXEL_HALF as HALF, SUBPIXEL_ONE as ONE, WINDOW_MAX, WINDOW_MIN};
+
+/// Subpixels per sixteenth of a pixel: the hand-made geometry below is drawn on a 1/16-pixel grid.
+const U: i32 = ONE / 16;
 use golden::host::{upper_pipeline, Camera};
 use golden::raster::{Culled, CullMode, FrontFace, Rasterizer};
 use golden::scene::{builtin, Mesh, Winding};
@@ -48,17 +51,17 @@ fn tri(index: u32, v: [WinVertex; 3]) -> RcCmd {
 
 /// Hand-made cases on a 32x24 screen, each a named frame (clear = true).
 pub fn hand_made() -> Vec<(&'static str, Vec<RcCmd>)> {
-    let s = 16; // one pixel in subpixels
+    let (s, u) = (ONE, U); // one pixel and one sixteenth of a pixel in subpixels
     let mut cases = vec![
         // Two triangles sharing the diagonal of a square: every centre drawn once.
         ("shared_edge", vec![tri(1, [px(2 * s, 2 * s, 100), px(10 * s, 2 * s, 100), px(10 * s, 10 * s, 100)]),
                              tri(2, [px(2 * s, 2 * s, 200), px(10 * s, 10 * s, 200), px(2 * s, 10 * s, 200)])]),
         // Pixel centres exactly on a top, a left, a bottom and a right edge (fill-rule corners):
         // a 4x4-pixel square whose edges pass through centres, split in two, both windings.
-        ("fill_rule_corners", vec![tri(1, [px(4 * s + 8, 4 * s + 8, 10), px(8 * s + 8, 4 * s + 8, 10), px(8 * s + 8, 8 * s + 8, 10)]),
-                                   tri(2, [px(4 * s + 8, 4 * s + 8, 10), px(4 * s + 8, 8 * s + 8, 10), px(8 * s + 8, 8 * s + 8, 10)]),
-                                   tri(3, [px(12 * s + 8, 4 * s + 8, 10), px(12 * s + 8, 8 * s + 8, 10), px(16 * s + 8, 4 * s + 8, 10)]),
-                                   tri(4, [px(16 * s + 8, 8 * s + 8, 10), px(12 * s + 8, 8 * s + 8, 10), px(16 * s + 8, 4 * s + 8, 10)])]),
+        ("fill_rule_corners", vec![tri(1, [px(4 * s + 8 * u, 4 * s + 8 * u, 10), px(8 * s + 8 * u, 4 * s + 8 * u, 10), px(8 * s + 8 * u, 8 * s + 8 * u, 10)]),
+                                   tri(2, [px(4 * s + 8 * u, 4 * s + 8 * u, 10), px(4 * s + 8 * u, 8 * s + 8 * u, 10), px(8 * s + 8 * u, 8 * s + 8 * u, 10)]),
+                                   tri(3, [px(12 * s + 8 * u, 4 * s + 8 * u, 10), px(12 * s + 8 * u, 8 * s + 8 * u, 10), px(16 * s + 8 * u, 4 * s + 8 * u, 10)]),
+                                   tri(4, [px(16 * s + 8 * u, 8 * s + 8 * u, 10), px(12 * s + 8 * u, 8 * s + 8 * u, 10), px(16 * s + 8 * u, 4 * s + 8 * u, 10)])]),
         // Pixel centres exactly on each edge of a lone triangle, for every edge index: a right triangle
         // whose legs and diagonal pass through centres, in its three vertex rotations and both
         // windings, for each diagonal direction, each at its own place with nothing else drawn there,
@@ -70,18 +73,18 @@ pub fn hand_made() -> Vec<(&'static str, Vec<RcCmd>)> {
                            tri(2, [px(3 * s, 3 * s, 5); 3]),
                            tri(3, [px(s, s, 5), px(9 * s, 2 * s, 5), px(4 * s, 7 * s, 5)])]),
         // One pixel: a tiny triangle around one centre, and one covering no centre at all.
-        ("one_pixel", vec![tri(1, [px(5 * s + 4, 5 * s + 4, 7), px(5 * s + 12, 5 * s + 4, 7), px(5 * s + 8, 5 * s + 12, 7)]),
-                           tri(2, [px(9 * s + 1, 9 * s + 1, 7), px(9 * s + 4, 9 * s + 1, 7), px(9 * s + 1, 9 * s + 4, 7)]),
-                           tri(3, [px(5 * s + 4, 5 * s + 4, 3), px(5 * s + 12, 5 * s + 4, 3), px(5 * s + 8, 5 * s + 12, 3)])]),
+        ("one_pixel", vec![tri(1, [px(5 * s + 4 * u, 5 * s + 4 * u, 7), px(5 * s + 12 * u, 5 * s + 4 * u, 7), px(5 * s + 8 * u, 5 * s + 12 * u, 7)]),
+                           tri(2, [px(9 * s + 1 * u, 9 * s + 1 * u, 7), px(9 * s + 4 * u, 9 * s + 1 * u, 7), px(9 * s + 1 * u, 9 * s + 4 * u, 7)]),
+                           tri(3, [px(5 * s + 4 * u, 5 * s + 4 * u, 3), px(5 * s + 12 * u, 5 * s + 4 * u, 3), px(5 * s + 8 * u, 5 * s + 12 * u, 3)])]),
         // Fully off screen on each side: empty bounding boxes, no traversal.
         ("off_screen", vec![tri(1, [px(-20 * s, 2 * s, 1), px(-2 * s, 2 * s, 1), px(-10 * s, 9 * s, 1)]),
                             tri(2, [px(40 * s, 2 * s, 1), px(50 * s, 2 * s, 1), px(45 * s, 9 * s, 1)]),
                             tri(3, [px(2 * s, -9 * s, 1), px(9 * s, -9 * s, 1), px(5 * s, -s, 1)]),
                             tri(4, [px(2 * s, 30 * s, 1), px(9 * s, 30 * s, 1), px(5 * s, 40 * s, 1)])]),
-        // Vertices in the guard band (and at the 16-bit limits): clamped boxes, big coefficients.
+        // Vertices in the guard band (and at the 20-bit limits): clamped boxes, big coefficients.
         ("guard_band", vec![tri(1, [px(-32 * s, -24 * s, 0), px(63 * s, 5 * s, DEPTH_MAX), px(3 * s, 47 * s, 1 << 23)]),
-                            tri(2, [px(-32768, -32768, 10), px(32767, -32768, 20), px(-32768, 32767, 30)]),
-                            tri(3, [px(32767, 32767, 5000), px(-32768, 100, 6000), px(100, -32768, 7000)])]),
+                            tri(2, [px(WINDOW_MIN, WINDOW_MIN, 10), px(WINDOW_MAX, WINDOW_MIN, 20), px(WINDOW_MIN, WINDOW_MAX, 30)]),
+                            tri(3, [px(WINDOW_MAX, WINDOW_MAX, 5000), px(WINDOW_MIN, 100 * u, 6000), px(100 * u, WINDOW_MIN, 7000)])]),
         // Equal depths: the first drawn keeps the pixel.
         ("equal_depths", vec![tri(1, [px(s, s, 4000), px(20 * s, s, 4000), px(s, 20 * s, 4000)]),
                               tri(2, [px(s, s, 4000), px(20 * s, s, 4000), px(s, 20 * s, 4000)]),
@@ -113,9 +116,9 @@ pub fn hand_made() -> Vec<(&'static str, Vec<RcCmd>)> {
     // runs, so their fragments come in three consecutive cycles; the second (600) must see the first's
     // depth (700) through the forwarding and pass, the third (650) must see the second's and fail.
     cases.push(("same_pixel_back_to_back", vec![
-        tri(1, [px(5 * s + 4, 5 * s + 4, 700), px(5 * s + 12, 5 * s + 4, 700), px(5 * s + 8, 5 * s + 12, 700)]),
-        tri(2, [px(5 * s + 4, 5 * s + 4, 600), px(5 * s + 12, 5 * s + 4, 600), px(5 * s + 8, 5 * s + 12, 600)]),
-        tri(3, [px(5 * s + 4, 5 * s + 4, 650), px(5 * s + 12, 5 * s + 4, 650), px(5 * s + 8, 5 * s + 12, 650)]),
+        tri(1, [px(5 * s + 4 * u, 5 * s + 4 * u, 700), px(5 * s + 12 * u, 5 * s + 4 * u, 700), px(5 * s + 8 * u, 5 * s + 12 * u, 700)]),
+        tri(2, [px(5 * s + 4 * u, 5 * s + 4 * u, 600), px(5 * s + 12 * u, 5 * s + 4 * u, 600), px(5 * s + 8 * u, 5 * s + 12 * u, 600)]),
+        tri(3, [px(5 * s + 4 * u, 5 * s + 4 * u, 650), px(5 * s + 12 * u, 5 * s + 4 * u, 650), px(5 * s + 8 * u, 5 * s + 12 * u, 650)]),
     ]));
     // The same pixel in consecutive cycles across triangles with no gap: a large triangle's last
     // fragment (on its box's last row, so the walk ends with it), then a triangle whose first fragment
@@ -124,17 +127,18 @@ pub fn hand_made() -> Vec<(&'static str, Vec<RcCmd>)> {
     // write yet; only the forwarding keeps it from drawing over the nearer triangle there.
     let big = [px(2 * s, 2 * s, 100), px(12 * s, 12 * s, 100), px(2 * s, 12 * s, 100)];
     let (lx, ly) = last_covered(&big, hand_made_screen());
-    let behind = [px(lx * s + 4, ly * s + 4, 900), px(lx * s + 60, ly * s + 4, 900), px(lx * s + 4, ly * s + 60, 900)];
+    let behind = [px(lx * s + 4 * u, ly * s + 4 * u, 900), px(lx * s + 60 * u, ly * s + 4 * u, 900), px(lx * s + 4 * u, ly * s + 60 * u, 900)];
     cases.push(("same_pixel_across_triangles_without_gap", vec![tri(1, big), tri(2, behind)]));
     cases.into_iter().map(|(n, t)| (n, frame(true, t))).collect()
 }
 
 /// Twelve 4x4-pixel right triangles with every edge through pixel centres (see `hand_made`).
 fn fill_rule_every_edge_index(s: i32) -> Vec<RcCmd> {
+    let u = s / 16;
     let mut tris = Vec::new();
     for (row, diagonal_down) in [(0, true), (1, false)] {
         for k in 0..6 {
-            let (x0, y0) = ((1 + 5 * k) * s + 8, (2 + 6 * row) * s + 8);
+            let (x0, y0) = ((1 + 5 * k) * s + 8 * u, (2 + 6 * row) * s + 8 * u);
             let (a, b, c) = if diagonal_down {
                 (px(x0, y0, 30), px(x0 + 4 * s, y0, 30), px(x0 + 4 * s, y0 + 4 * s, 30))
             } else {
@@ -182,8 +186,8 @@ fn random_triangle(rng: &mut Rng, screen: Screen, index: u32) -> RcCmd {
     let (gy0, gy1) = screen.guard_y();
     let big = rng.chance(20);
     let (cx, cy) = (rng.below((gx1 - gx0) as u64) as i32 + gx0, rng.below((gy1 - gy0) as u64) as i32 + gy0);
-    let (cx, cy) = if big { (cx, cy) } else { (rng.below(screen.width as u64 * 16) as i32, rng.below(screen.height as u64 * 16) as i32) };
-    let r = if big { (gx1 - gx0) as u64 } else { 1 + rng.below(6 * 16) };
+    let (cx, cy) = if big { (cx, cy) } else { (rng.below(screen.width as u64 * ONE as u64) as i32, rng.below(screen.height as u64 * ONE as u64) as i32) };
+    let r = if big { (gx1 - gx0) as u64 } else { 1 + rng.below(6 * ONE as u64) };
     let mut p = [WinVertex::default(); 3];
     for q in &mut p {
         let dx = rng.below(2 * r + 1) as i32 - r as i32;
@@ -209,7 +213,7 @@ fn random_triangle(rng: &mut Rng, screen: Screen, index: u32) -> RcCmd {
 /// one-pixel triangles is culled): the forwarding's compare sees every depth bit and the I-buffer every
 /// index bit.
 pub fn hazard_triangles(rng: &mut Rng, screen: Screen, n: usize, staircase: bool) -> Vec<RcCmd> {
-    let (cx, cy) = ((4 + rng.below(screen.width as u64 - 8) as i32) * 16 + 8, (4 + rng.below(screen.height as u64 - 8) as i32) * 16 + 8);
+    let (cx, cy) = ((4 + rng.below(screen.width as u64 - 8) as i32) * ONE + HALF, (4 + rng.below(screen.height as u64 - 8) as i32) * ONE + HALF);
     // Depths, one of two ways. A staircase: most triangles come a few units nearer than the one before
     // (or at the same depth), so that consecutive fragments on the pixel pass and the next one's test
     // against the forwarded depth is decided by its low bits. Otherwise: random over the whole range
@@ -240,13 +244,13 @@ pub fn hazard_triangles(rng: &mut Rng, screen: Screen, n: usize, staircase: bool
             };
             let index = 1 + rng.below((1 << golden::cycle::rc::INDEX_BITS) - 1) as u32;
             let cull_tiny = rng.chance(20);
-            let mut j = || rng.below(3) as i32;
+            let mut j = || rng.below(3) as i32 * U;
             let (p, cull) = if i % 7 == 0 {
-                let r = 64 + j() * 8;
+                let r = 64 * U + j() * 8;
                 ([(cx - r, cy - r), (cx + r, cy - r / 2), (cx - r / 2, cy + r)], CullMode::None)
             } else {
                 let cull = if cull_tiny { CullMode::Back } else { CullMode::None };
-                ([(cx - 4 - j(), cy - 4 - j()), (cx + 4 + j(), cy - 4 - j()), (cx, cy + 4 + j())], cull)
+                ([(cx - 4 * U - j(), cy - 4 * U - j()), (cx + 4 * U + j(), cy - 4 * U - j()), (cx, cy + 4 * U + j())], cull)
             };
             let clamp = staircase && (z == 0 || z == DEPTH_MAX);
             let v = p.map(|(x, y)| WinVertex { x, y, z: if !clamp && rng.chance(30) { (z + rng.below(4) as u32).min(DEPTH_MAX) } else { z } });
@@ -257,17 +261,17 @@ pub fn hazard_triangles(rng: &mut Rng, screen: Screen, n: usize, staircase: bool
 }
 
 /// `n` right triangles whose determinant is a power of two: legs of 2^a and 2^b subpixels (a, b in
-/// 0..=8) along the axes, at random places on the screen, in a random vertex order (so either
+/// 0..=12) along the axes, at random places on the screen, in a random vertex order (so either
 /// winding; drawn with no culling), random depths and indices. The reciprocal's divisor is then 2^s,
 /// the one case in which the restoring division's remainder becomes 0 after its first step and every
 /// later step takes the "does not fit" branch.
 pub fn power_of_two_triangles(rng: &mut Rng, screen: Screen, n: usize) -> Vec<RcCmd> {
     (0..n)
         .map(|_| {
-            let (a, b) = (rng.below(9) as i32, rng.below(9) as i32);
+            let (a, b) = (rng.below(13) as i32, rng.below(13) as i32);
             let (lx, ly) = (1 << a, 1 << b);
-            let x0 = rng.below((screen.width as i32 * 16 - lx) as u64) as i32;
-            let y0 = rng.below((screen.height as i32 * 16 - ly) as u64) as i32;
+            let x0 = rng.below((screen.width as i32 * ONE - lx) as u64) as i32;
+            let y0 = rng.below((screen.height as i32 * ONE - ly) as u64) as i32;
             let mut z = || rng.below(DEPTH_MAX as u64 + 1) as u32;
             let mut v = [WinVertex { x: x0, y: y0, z: z() }, WinVertex { x: x0 + lx, y: y0, z: z() }, WinVertex { x: x0, y: y0 + ly, z: z() }];
             if rng.chance(50) {
@@ -290,7 +294,7 @@ pub fn queue_filling_triangles() -> (Screen, Vec<RcCmd>) {
 /// Index 1 at depth `z`, covering every pixel with x + y < 60 (all of 32x24, most of 40x24): the long
 /// walk the queues fill behind.
 fn screen_size_triangle(z: u32) -> RcCmd {
-    let v = |x: i32, y: i32| WinVertex { x: x * 16, y: y * 16, z };
+    let v = |x: i32, y: i32| WinVertex { x: x * ONE, y: y * ONE, z };
     RcCmd::triangle(1, [v(-20, -20), v(80, -20), v(-20, 60)], CullMode::None, FrontFace::Ccw).expect("fits")
 }
 
@@ -330,8 +334,8 @@ pub fn depth_rounding_edge_triangles(rng: &mut Rng, screen: Screen, n: usize, ba
         if tris.len() == n {
             break;
         }
-        let (cx, cy) = (rng.below(screen.width as u64 * 16) as i32, rng.below(screen.height as u64 * 16) as i32);
-        let r = 16 + rng.below(9 * 16) as i32;
+        let (cx, cy) = (rng.below(screen.width as u64 * ONE as u64) as i32, rng.below(screen.height as u64 * ONE as u64) as i32);
+        let r = ONE + rng.below(9 * ONE as u64) as i32;
         let v = [0, 1, 2].map(|_| WinVertex {
             x: cx + rng.below(2 * r as u64 + 1) as i32 - r,
             y: cy + rng.below(2 * r as u64 + 1) as i32 - r,
@@ -345,10 +349,10 @@ pub fn depth_rounding_edge_triangles(rng: &mut Rng, screen: Screen, n: usize, ba
     tris
 }
 
-/// `n` slivers (no culling, indices 1 to n): triangles under 1/8 pixel in area (0 < |det| < 64, in
-/// units of 1/256 square pixel) around a pixel centre, each covering a pixel whose raw depth lies
+/// `n` slivers (no culling, indices 1 to n): triangles under 1/8 pixel in area (0 < |det| < 64 U^2, in
+/// units of 1/65536 square pixel) around a pixel centre, each covering a pixel whose raw depth lies
 /// within `band` units of 2^-16 of a rounding edge. Only a determinant this small lets the low bits
-/// of the depth gradient's product reach the gradient (the reciprocal's shift is then at most 5), and
+/// of the depth gradient's product reach the gradient (the reciprocal's shift is then at most 13), and
 /// a sliver covers only pixels within a pixel or two of its vertices, where an error in the gradient
 /// moves the depth by a few units: such a fault shows only at a sliver's pixel near a rounding edge.
 /// Geometries are drawn (at most `20000 n`), and for each sliver that covers a pixel, depths (at
@@ -359,12 +363,12 @@ pub fn sliver_depth_rounding_edge_triangles(rng: &mut Rng, screen: Screen, n: us
         if tris.len() == n {
             break;
         }
-        let (cx, cy) = (rng.below(screen.width as u64) as i32 * 16 + 8, rng.below(screen.height as u64) as i32 * 16 + 8);
-        let xy = [0, 1, 2].map(|_| (cx + rng.below(49) as i32 - 24, cy + rng.below(49) as i32 - 24));
+        let (cx, cy) = (rng.below(screen.width as u64) as i32 * ONE + HALF, rng.below(screen.height as u64) as i32 * ONE + HALF);
+        let xy = [0, 1, 2].map(|_| (cx + rng.below(48 * U as u64 + 1) as i32 - 24 * U, cy + rng.below(48 * U as u64 + 1) as i32 - 24 * U));
         // The determinant, from the geometry alone (it does not depend on the depths; zero area is an error).
         let flat = xy.map(|(x, y)| WinVertex { x, y, z: 0 });
         match golden::raster::setup(&flat, CullMode::None, FrontFace::Ccw, screen) {
-            Ok(st) if st.det.abs() < 64 => {}
+            Ok(st) if st.det.abs() < 64 * (U * U) as i64 => {}
             _ => continue,
         }
         for _ in 0..4096 {
@@ -386,7 +390,7 @@ pub fn sliver_depth_rounding_edge_triangles(rng: &mut Rng, screen: Screen, n: us
 /// it the same way (at 40x24 the same stream).
 pub fn queue_filling_triangles_on(screen: Screen) -> Vec<RcCmd> {
     let (xs, ys) = (screen.width as i32 - 6, screen.height as i32 - 4);
-    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * 16, y: y * 16, z };
+    let v = |x: i32, y: i32, z: u32| WinVertex { x: x * ONE, y: y * ONE, z };
     let mut tris = vec![screen_size_triangle(900)];
     for i in 0..40u32 {
         let (x, y) = (2 + (i as i32 * 3) % xs, 2 + (i as i32 * 5) % ys);
@@ -482,8 +486,8 @@ pub fn long_skip_edge_triangles(rng: &mut Rng, screen: Screen, n: usize, band: i
             break;
         }
         let v = [0, 1, 2].map(|_| WinVertex {
-            x: rng.below(screen.width as u64 * 16) as i32,
-            y: rng.below(screen.height as u64 * 16) as i32,
+            x: rng.below(screen.width as u64 * ONE as u64) as i32,
+            y: rng.below(screen.height as u64 * ONE as u64) as i32,
             z: rng.below(DEPTH_MAX as u64 + 1) as u32,
         });
         let Ok(st) = golden::raster::setup(&v, CullMode::None, FrontFace::Ccw, screen) else { continue };
@@ -501,9 +505,11 @@ mod construction_tests {
     #[test]
     fn a_long_skip_edge_triangle_makes_a_long_skip_test_within_its_band_and_random_ones_rarely_do() {
         let screen = hand_made_screen();
-        let tris = long_skip_edge_triangles(&mut Rng::new(0x5c1b), screen, 40, 128);
+        // 128 square sixteenths of a pixel, in the edge values' unit (subpixel^2): 128 U^2.
+        let band = 128 * (U * U) as i64;
+        let tris = long_skip_edge_triangles(&mut Rng::new(0x5c1b), screen, 40, band);
         assert_eq!(tris.len(), 40);
-        let marginal = |t: &RcCmd| golden::raster::setup(&t.v, t.cull, t.front, screen).is_ok_and(|st| has_marginal_long_skip(&st, 128));
+        let marginal = |t: &RcCmd| golden::raster::setup(&t.v, t.cull, t.front, screen).is_ok_and(|st| has_marginal_long_skip(&st, band));
         assert!(tris.iter().all(marginal));
         let plain = random_triangles(&mut Rng::new(0x5c1b), screen, 40).iter().filter(|t| marginal(t)).count();
         assert!(plain < 10, "{plain} of 40 random triangles");
@@ -536,7 +542,7 @@ mod construction_tests {
             assert_eq!(tris.len(), 40, "band {band}");
             for t in &tris {
                 let st = golden::raster::setup(&t.v, t.cull, t.front, screen).expect("drawn");
-                assert!(st.det.abs() < 64, "triangle {}: det {}", t.index, st.det);
+                assert!(st.det.abs() < 64 * (U * U) as i64, "triangle {}: det {}", t.index, st.det);
                 assert!(plane_moved_by_band_changes_a_depth(&st, band), "band {band}: triangle {} does not sit on a rounding edge", t.index);
             }
         }

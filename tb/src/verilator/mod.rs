@@ -77,9 +77,10 @@ pub fn module_of(ty: RcType) -> &'static str {
 }
 
 /// 32-bit words of the packed ports the harness takes (Verilator's VlWide layout: word 0 = bits 31:0).
-const RC_WORDS: usize = 6;
-const SETUP_WORDS: usize = 10;
-const TEX_WORDS: usize = 10;
+/// The harness gets them as `-D` defines (`verilator_flags`), so that its C++ follows the structs.
+const RC_WORDS: usize = RcCommand::BITS.div_ceil(32);
+const SETUP_WORDS: usize = hdl::cs::SetupCommand::BITS.div_ceil(32);
+const TEX_WORDS: usize = hdl::cs::TexValues::BITS.div_ceil(32);
 
 /// A built harness.
 #[derive(Clone, Debug)]
@@ -117,6 +118,9 @@ fn verilator_flags(ty: RcType, vcd: Option<VcdScope>) -> Vec<String> {
     let mut f: Vec<String> = ["--cc", "--exe", "--build", "-O3", "-j", "2", "--top-module", m, "-o", &format!("V{m}")].iter().map(|s| s.to_string()).collect();
     if ty == RcType::III {
         f.extend(["-CFLAGS".to_string(), "-DTYPE_III".to_string()]);
+    }
+    for (name, words) in [("RC_WORDS", RC_WORDS), ("SETUP_WORDS", SETUP_WORDS), ("TEX_WORDS", TEX_WORDS)] {
+        f.extend(["-CFLAGS".to_string(), format!("-D{name}={words}")]);
     }
     f.extend(BUILD_WAIVERS.iter().map(|w| format!("-Wno-{w}")));
     match vcd {

@@ -23,7 +23,7 @@
 //
 // Protocol. Rust -> harness on stdin: a text line, then for some commands a binary payload (32-bit
 // little-endian words):
-//   frame <n> <tdata> <phong> <c>\n + n RC command words of 6 x u32 (190 bits), then c Phong-constant
+//   frame <n> <tdata> <phong> <c>\n + n RC command words of RC_WORDS x u32, then c Phong-constant
 //                           writes of 6 x u32 (kind 0 = light, 1 = material; address; slot; 96 data
 //                           bits): queue a frame (background tdata, Phong scan-out if set)
 //   texture <w0_log2> <h0_log2> <levels> <filter> <clamp>\n + 1 word (bank words b), `levels` level
@@ -35,8 +35,8 @@
 //   vcd_close\n             flush and close the VCD
 //   quit\n                  exit
 // During `run`, the harness asks for the host's lower pipeline: it writes `Q <frame> <position>\n` and
-// reads back 1 + 10 words: a flag (1 = a command follows; 0 = the host failed, stop the run) and a
-// colour-setup word of 297 bits (TEXTURED: 1 + 20, then the 297-bit texture values).
+// reads back 1 + SETUP_WORDS words: a flag (1 = a command follows; 0 = the host failed, stop the run) and a
+// colour-setup word of SETUP_WORDS words (TEXTURED: then the TEX_WORDS words of the texture values).
 // Harness -> Rust on the protocol channel (the original stdout; the process's stdout is redirected to
 // stderr so that nothing the model prints can corrupt the protocol):
 //   P <done> <total> <phase>\n                        progress
@@ -87,14 +87,16 @@ using Top = Vchipset;
 
 namespace {
 
-constexpr int RC_WORDS = 6;      // 190-bit RC command
-constexpr int SETUP_WORDS = 10;  // 297-bit colour-setup command
+// RC_WORDS (the RC command), SETUP_WORDS (the colour-setup command) and TEX_WORDS (the texture
+// values): 32-bit words of the packed ports, from the structs' widths (`tb::verilator` defines them).
+#if !defined(RC_WORDS) || !defined(SETUP_WORDS) || !defined(TEX_WORDS)
+#error "RC_WORDS, SETUP_WORDS and TEX_WORDS are defined by tb::verilator's build flags"
+#endif
 constexpr int TDBS_WORDS = 14;   // 424-bit TdbS record
 constexpr size_t CONFIG_WORDS = 6;  // one Phong-constant write
 constexpr uint64_t PROGRESS_EVERY = 1 << 16;
 using Record = std::array<uint32_t, TDBS_WORDS>;
 constexpr int TDBT_WORDS = 13;   // 408-bit TdbT record
-constexpr int TEX_WORDS = 10;    // 297-bit texture values
 using TexRecord = std::array<uint32_t, TDBT_WORDS>;
 // tb::chipset::TexTraffic's fields.
 enum TexCount { TT_RD, TT_WR, BANK_WORDS, FOOTPRINTS, COVERED, TEX_COUNTS };
