@@ -76,9 +76,12 @@ pub const SETUP_STAGES: usize = 7;
 pub const GRAD_STAGE: usize = 5;
 /// Cycles a drawn triangle spends in each stage when nothing waits (`Grad`: from the reciprocal's
 /// arrival). Any other command spends one cycle in each.
-pub const STAGE_CYCLES_DRAWN: [u8; SETUP_STAGES] = [1, 1, 3, 1, 1, 4, 4];
-/// Cycles from a request's acceptance to the reciprocal's result (pipelined: one request per clock).
-pub const RECIP_LATENCY: usize = 10;
+pub const STAGE_CYCLES_DRAWN: [u8; SETUP_STAGES] = [1, 1, 4, 1, 1, 4, 4];
+/// Cycles from a request's acceptance to the reciprocal's result (pipelined: one request per clock;
+/// thirteen stations of at most two division steps, `hdl::rc::fast_reciprocal`). With S3 and S4 the
+/// only Hold stages, 13 is the longest latency that keeps a drawn triangle at four cycles (14 gives
+/// 4.24 on a stream of one-pixel triangles).
+pub const RECIP_LATENCY: usize = 13;
 /// Records the queue between setup and traversal holds.
 pub const RECORD_QUEUE: usize = 4;
 /// Results the result queue holds (three: results leave at one per clock with `res_ready` high).
@@ -92,7 +95,10 @@ pub const RESULT_QUEUE_III: usize = 6;
 /// a drawn triangle (the reciprocal, requested in S1's cycle, arrives in S5 RECIP_LATENCY cycles later;
 /// then S5's four cycles and S6's four), and any other command (one cycle in each stage).
 pub const SETUP_CYCLES_DRAWN: u64 = 2 + RECIP_LATENCY as u64 + STAGE_CYCLES_DRAWN[GRAD_STAGE] as u64 + STAGE_CYCLES_DRAWN[6] as u64;
-const _: () = assert!(2 + 3 + 1 + 1 <= 2 + RECIP_LATENCY as u64, "the reciprocal arrives after the record reaches Grad");
+const _: () = assert!(
+    2 + STAGE_CYCLES_DRAWN[2] as u64 + STAGE_CYCLES_DRAWN[3] as u64 + STAGE_CYCLES_DRAWN[4] as u64 <= 2 + RECIP_LATENCY as u64,
+    "the reciprocal arrives after the record reaches Grad"
+);
 pub const SETUP_CYCLES_SHORT: u64 = SETUP_STAGES as u64 + 1;
 /// Steps of the restoring divider (RECIP_BITS + 1).
 pub const RECIP_STEPS: u32 = 25;

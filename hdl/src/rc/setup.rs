@@ -10,23 +10,25 @@
 //!          |21x21 |  |       |  | 25x21   |  |      |      |  | 47x26  |  | 40x21   |  +---------+
 //!          +------+  +---+---+  +---------+  +------+------+  +---^----+  +---------+
 //!                        | abs(det)  +--------------------------+  | mant, shift
-//!                        +---------->| reciprocal, 10 stations  |--+
+//!                        +---------->| reciprocal, 13 stations  |--+
 //!                                    +--------------------------+
 //! ```
 //!
 //! Each stage holds one record (docs/rc.md, "Setup"; `golden::cycle::rc` models the same schedule).
-//! A drawn triangle spends 1, 1, 3, 1, 1, 4 and 4 cycles in S0..S6 when nothing waits; any other
+//! A drawn triangle spends 1, 1, 4, 1, 1, 4 and 4 cycles in S0..S6 when nothing waits; any other
 //! command (frame start, end of frame, a culled or empty-box triangle) one cycle in each.
 //! * S0 `Det`: det = dx10*dy20 - dx20*dy10 (two 21x21 products); the clamped bounding box
 //!   `[(min+127)>>8, (max-128)>>8]`.
 //! * S1 `Order`: zero area / cull decision from det's sign, the cull mode and the front face;
 //!   canonical order (swap vertices 1 and 2 if det < 0); all three edges' multiplier operands, fill-rule
 //!   flags and steps (-256*dy, 256*dx); the start address Y0*W + X0; the reciprocal request of abs(det).
-//! * S2 `Edges` on two dot units (a*b - c*d each): phase 0 E0, E1; phase 1 E2 and
-//!   na = dz10*dy20 - dz20*dy10; phase 2 nb = dz20*dx10 - dz10*dx20.
+//! * S2 `Edges` on two dot units (a*b - c*d each), whose products are registered: the products of
+//!   phase k are chosen in phase k and subtracted in phase k+1. Phase 1 E0, E1; phase 2 E2 and
+//!   na = dz10*dy20 - dz20*dy10; phase 3 nb = dz20*dx10 - dz10*dx20. (Four cycles since issue 15
+//!   item 5: choosing, multiplying and subtracting in one cycle was the RC's critical path.)
 //!   `E = dx*(256*Y0+128-a.y) - dy*(256*X0+128-a.x) - bias` (bias 0 on a top or left edge, else 1).
-//! * S3, S4 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 10, is longer
-//!   than S2's three cycles).
+//! * S3, S4 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 13, is longer
+//!   than S2's four cycles; with 14 or more, a drawn triangle would take more than four cycles).
 //! * S5 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1 shifts
 //!   twice that product right by shift (= the product by shift-1) and forms nb*mant; phase 2
 //!   `A = sat40((shifted + 1) >> 1)` (which is `round(na*mant >> shift)`, also for shift 0) and shifts nb*mant; phase 3 B likewise. The shift and the rounding
@@ -48,7 +50,7 @@
 //! saturates at 56 bits (|A| <= 2^39, |128-x0| <= 2^19 + 128: |C| < 2^52), so the golden model's saturation
 //! of C needs no hardware; raw < 2^52 anywhere in the box (56-bit registers).
 
-use super::reciprocal::Reciprocal;
+use super::fast_reciprocal::FastReciprocal;
 use super::RcCommand;
 use crate::common::{signed_bit_cast_safe, MulS, MulSplitS, StreamIn};
 use rust_hdl::prelude::*;
@@ -149,7 +151,7 @@ pub struct Setup {
     pub rec_c: Signal<Out, Signed<56>>,
 
     // Children
-    recip: Reciprocal,
+    recip: FastReciprocal,
     /// S0: det's two products.
     mul_d0: MulSplitS<21, 21, 42, 3, 3>,
     mul_d1: MulSplitS<21, 21, 42, 3, 3>,
@@ -196,6 +198,14 @@ pub struct Setup {
     ra2: DFF<Signed<25>>,
     rb2: DFF<Signed<21>>,
     tl2: DFF<Bit>,
+    /// The dot units' products and fill-rule flags, registered: consumed in the phase after the one
+    /// that chose their operands.
+    pr_a0: DFF<Signed<46>>,
+    pr_a1: DFF<Signed<46>>,
+    pr_b0: DFF<Signed<46>>,
+    pr_b1: DFF<Signed<46>>,
+    prtl_a: DFF<Bit>,
+    prtl_b: DFF<Bit>,
     n_dz10: DFF<Signed<25>>,
     n_dz20: DFF<Signed<25>>,
     n_dx10: DFF<Signed<21>>,
@@ -228,11 +238,16 @@ pub struct Setup {
     p_acc: DFF<Signed<62>>,
     p_c: DFF<Signed<56>>,
     p_s: DFF<Signed<56>>,
-    // The record queue, head first, and its length.
+    // The record queue: four slots written in turn (`q_wp`) and read in turn (`q_rp`), and its length.
+    // A ring, not a shift register: taking a record moves only the read pointer, so `rec_ready` fans
+    // out to two flip-flops instead of every slot's load select (issue 15 item 5: that fan-out was the
+    // RC's critical path once S2's products were registered).
     q0: DFF<SetupRec>,
     q1: DFF<SetupRec>,
     q2: DFF<SetupRec>,
     q3: DFF<SetupRec>,
+    q_wp: DFF<Bits<2>>,
+    q_rp: DFF<Bits<2>>,
     q_len: DFF<Bits<3>>,
 
     // Combinational: the handshake
@@ -259,6 +274,7 @@ pub struct Setup {
     pop: Signal<Local, Bit>,
     q_after: Signal<Local, Bits<3>>,
     pushed: Signal<Local, SetupRec>,
+    head: Signal<Local, SetupRec>,
     // S0
     v0x: Signal<Local, Signed<20>>,
     v0y: Signal<Local, Signed<20>>,
@@ -284,6 +300,28 @@ pub struct Setup {
     box_y0: Signal<Local, Signed<13>>,
     box_y1: Signal<Local, Signed<13>>,
     box_empty: Signal<Local, Bit>,
+    /// The box's emptiness from each vertex's own bounds (`oz`: the offset-binary coordinate in 21 bits;
+    /// `lo`, `hi`: (c + 127) >> 8 and (c - 128) >> 8 in bits 8..20, offset-binary), as compares side by side.
+    oz0x: Signal<Local, Bits<21>>,
+    lo0x: Signal<Local, Bits<21>>,
+    hi0x: Signal<Local, Bits<21>>,
+    oz1x: Signal<Local, Bits<21>>,
+    lo1x: Signal<Local, Bits<21>>,
+    hi1x: Signal<Local, Bits<21>>,
+    oz2x: Signal<Local, Bits<21>>,
+    lo2x: Signal<Local, Bits<21>>,
+    hi2x: Signal<Local, Bits<21>>,
+    oz0y: Signal<Local, Bits<21>>,
+    lo0y: Signal<Local, Bits<21>>,
+    hi0y: Signal<Local, Bits<21>>,
+    oz1y: Signal<Local, Bits<21>>,
+    lo1y: Signal<Local, Bits<21>>,
+    hi1y: Signal<Local, Bits<21>>,
+    oz2y: Signal<Local, Bits<21>>,
+    lo2y: Signal<Local, Bits<21>>,
+    hi2y: Signal<Local, Bits<21>>,
+    k_lo21: Constant<Bits<21>>,
+    k_hi21: Constant<Bits<21>>,
     o0x: Signal<Local, Bits<20>>,
     o0y: Signal<Local, Bits<20>>,
     o1x: Signal<Local, Bits<20>>,
@@ -292,10 +330,6 @@ pub struct Setup {
     o2y: Signal<Local, Bits<20>>,
     bx1r_o: Signal<Local, Bits<13>>,
     by1r_o: Signal<Local, Bits<13>>,
-    bx0_o: Signal<Local, Bits<13>>,
-    bx1_o: Signal<Local, Bits<13>>,
-    by0_o: Signal<Local, Bits<13>>,
-    by1_o: Signal<Local, Bits<13>>,
     lo_x_u: Signal<Local, Bits<21>>,
     hi_x_u: Signal<Local, Bits<21>>,
     lo_y_u: Signal<Local, Bits<21>>,
@@ -431,8 +465,6 @@ pub struct Setup {
     k3_2: Constant<Bits<2>>,
     k0_3: Constant<Bits<3>>,
     k1_3: Constant<Bits<3>>,
-    k2_3: Constant<Bits<3>>,
-    k3_3: Constant<Bits<3>>,
     k4_3: Constant<Bits<3>>,
     k0_34: Constant<Bits<34>>,
     k16_6: Constant<Bits<6>>,
@@ -537,6 +569,12 @@ impl Setup {
             ra2: Default::default(),
             rb2: Default::default(),
             tl2: Default::default(),
+            pr_a0: Default::default(),
+            pr_a1: Default::default(),
+            pr_b0: Default::default(),
+            pr_b1: Default::default(),
+            prtl_a: Default::default(),
+            prtl_b: Default::default(),
             n_dz10: Default::default(),
             n_dz20: Default::default(),
             n_dx10: Default::default(),
@@ -568,6 +606,8 @@ impl Setup {
             q1: Default::default(),
             q2: Default::default(),
             q3: Default::default(),
+            q_wp: Default::default(),
+            q_rp: Default::default(),
             q_len: Default::default(),
             leave0: Default::default(),
             leave1: Default::default(),
@@ -592,6 +632,7 @@ impl Setup {
             pop: Default::default(),
             q_after: Default::default(),
             pushed: Default::default(),
+            head: Default::default(),
             v0x: Default::default(),
             v0y: Default::default(),
             v1x: Default::default(),
@@ -616,6 +657,26 @@ impl Setup {
             box_y0: Default::default(),
             box_y1: Default::default(),
             box_empty: Default::default(),
+            oz0x: Default::default(),
+            lo0x: Default::default(),
+            hi0x: Default::default(),
+            oz1x: Default::default(),
+            lo1x: Default::default(),
+            hi1x: Default::default(),
+            oz2x: Default::default(),
+            lo2x: Default::default(),
+            hi2x: Default::default(),
+            oz0y: Default::default(),
+            lo0y: Default::default(),
+            hi0y: Default::default(),
+            oz1y: Default::default(),
+            lo1y: Default::default(),
+            hi1y: Default::default(),
+            oz2y: Default::default(),
+            lo2y: Default::default(),
+            hi2y: Default::default(),
+            k_lo21: Constant::new(((1u64 << 19) + 127).into()),
+            k_hi21: Constant::new(((1u64 << 19) - 128).into()),
             o0x: Default::default(),
             o0y: Default::default(),
             o1x: Default::default(),
@@ -624,10 +685,6 @@ impl Setup {
             o2y: Default::default(),
             bx1r_o: Default::default(),
             by1r_o: Default::default(),
-            bx0_o: Default::default(),
-            bx1_o: Default::default(),
-            by0_o: Default::default(),
-            by1_o: Default::default(),
             lo_x_u: Default::default(),
             hi_x_u: Default::default(),
             lo_y_u: Default::default(),
@@ -755,8 +812,6 @@ impl Setup {
             k3_2: Constant::new(3.into()),
             k0_3: Constant::new(0.into()),
             k1_3: Constant::new(1.into()),
-            k2_3: Constant::new(2.into()),
-            k3_3: Constant::new(3.into()),
             k4_3: Constant::new(4.into()),
             k0_34: Constant::new(0.into()),
             k16_6: Constant::new(16.into()),
@@ -795,7 +850,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5_phase, s5, s5p, g_prod, g_sh, s6_v, s6_phase, s6, s6p, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5_phase, s5, s5p, g_prod, g_sh, s6_v, s6_phase, s6, s6p, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -881,7 +936,7 @@ impl Logic for Setup {
         self.walk2.next = self.s2.q.val().kind == self.rec_walk.val();
         self.walk5.next = self.s5.q.val().kind == self.rec_walk.val();
         self.walk6.next = self.s6.q.val().kind == self.rec_walk.val();
-        self.done2.next = self.s2_v.q.val() & (!self.walk2.val() | (self.s2_phase.q.val() == self.k2_2.val()));
+        self.done2.next = self.s2_v.q.val() & (!self.walk2.val() | (self.s2_phase.q.val() == self.k3_2.val()));
         self.done5.next = self.s5_v.q.val() & (!self.walk5.val() | (self.s5_phase.q.val() == self.k3_2.val()));
         self.done6.next = self.s6_v.q.val() & (!self.walk6.val() | (self.s6_phase.q.val() == self.k3_2.val()));
         self.take.next = self.recip.result.valid.val() & self.s5_v.q.val() & self.walk5.val() & (self.s5_phase.q.val() == self.k0_2.val());
@@ -1061,11 +1116,6 @@ impl Logic for Setup {
         self.box_x1.next = self.k0_13.val();
         self.box_y0.next = self.k0_13.val();
         self.box_y1.next = self.k0_13.val();
-        self.box_empty.next = false;
-        self.bx0_o.next = self.zb13.val();
-        self.bx1_o.next = self.zb13.val();
-        self.by0_o.next = self.zb13.val();
-        self.by1_o.next = self.zb13.val();
         if self.s0_v.q.val() {
             // >> 8 (arithmetic), then clamp to the screen.
             self.box_x0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_x_u.val().get_bits::<13>(8)));
@@ -1084,11 +1134,37 @@ impl Logic for Setup {
             if self.by1r_o.val() > self.h_minus_1_o.val() {
                 self.box_y1.next = self.h_minus_1.val();
             }
-            self.bx0_o.next = unsigned_cast(self.box_x0.val()) ^ self.k_sign13.val();
-            self.bx1_o.next = unsigned_cast(self.box_x1.val()) ^ self.k_sign13.val();
-            self.by0_o.next = unsigned_cast(self.box_y0.val()) ^ self.k_sign13.val();
-            self.by1_o.next = unsigned_cast(self.box_y1.val()) ^ self.k_sign13.val();
-            self.box_empty.next = (self.bx0_o.val() > self.bx1_o.val()) | (self.by0_o.val() > self.by1_o.val());
+        }
+        // The box is empty when max(min lo, 0) > min(max hi, W-1): some bound of every pair crosses, or every
+        // hi is negative, or every lo is past the screen. With the offset 2^20 (the offset-binary 20-bit
+        // coordinate plus 2^19), bits 8..20 of c + 2^20 + k are the offset-binary 13-bit (c + k) >> 8, so all
+        // the compares are unsigned and side by side: no minimum, maximum or clamp in front of them.
+        self.oz0x.next = bit_cast::<21, 20>(self.o0x.val());
+        self.oz1x.next = bit_cast::<21, 20>(self.o1x.val());
+        self.oz2x.next = bit_cast::<21, 20>(self.o2x.val());
+        self.lo0x.next = self.oz0x.val() + self.k_lo21.val();
+        self.hi0x.next = self.oz0x.val() + self.k_hi21.val();
+        self.lo1x.next = self.oz1x.val() + self.k_lo21.val();
+        self.hi1x.next = self.oz1x.val() + self.k_hi21.val();
+        self.lo2x.next = self.oz2x.val() + self.k_lo21.val();
+        self.hi2x.next = self.oz2x.val() + self.k_hi21.val();
+        self.oz0y.next = bit_cast::<21, 20>(self.o0y.val());
+        self.oz1y.next = bit_cast::<21, 20>(self.o1y.val());
+        self.oz2y.next = bit_cast::<21, 20>(self.o2y.val());
+        self.lo0y.next = self.oz0y.val() + self.k_lo21.val();
+        self.hi0y.next = self.oz0y.val() + self.k_hi21.val();
+        self.lo1y.next = self.oz1y.val() + self.k_lo21.val();
+        self.hi1y.next = self.oz1y.val() + self.k_hi21.val();
+        self.lo2y.next = self.oz2y.val() + self.k_lo21.val();
+        self.hi2y.next = self.oz2y.val() + self.k_hi21.val();
+        self.box_empty.next = false;
+        if self.s0_v.q.val() {
+            self.box_empty.next = ((self.lo0x.val().get_bits::<13>(8) > self.hi0x.val().get_bits::<13>(8)) & (self.lo0x.val().get_bits::<13>(8) > self.hi1x.val().get_bits::<13>(8)) & (self.lo0x.val().get_bits::<13>(8) > self.hi2x.val().get_bits::<13>(8)) & (self.lo1x.val().get_bits::<13>(8) > self.hi0x.val().get_bits::<13>(8)) & (self.lo1x.val().get_bits::<13>(8) > self.hi1x.val().get_bits::<13>(8)) & (self.lo1x.val().get_bits::<13>(8) > self.hi2x.val().get_bits::<13>(8)) & (self.lo2x.val().get_bits::<13>(8) > self.hi0x.val().get_bits::<13>(8)) & (self.lo2x.val().get_bits::<13>(8) > self.hi1x.val().get_bits::<13>(8)) & (self.lo2x.val().get_bits::<13>(8) > self.hi2x.val().get_bits::<13>(8)))
+                | (!self.hi0x.val().get_bit(20) & !self.hi1x.val().get_bit(20) & !self.hi2x.val().get_bit(20))
+                | ((self.lo0x.val().get_bits::<13>(8) > self.w_minus_1_o.val()) & (self.lo1x.val().get_bits::<13>(8) > self.w_minus_1_o.val()) & (self.lo2x.val().get_bits::<13>(8) > self.w_minus_1_o.val()))
+                | ((self.lo0y.val().get_bits::<13>(8) > self.hi0y.val().get_bits::<13>(8)) & (self.lo0y.val().get_bits::<13>(8) > self.hi1y.val().get_bits::<13>(8)) & (self.lo0y.val().get_bits::<13>(8) > self.hi2y.val().get_bits::<13>(8)) & (self.lo1y.val().get_bits::<13>(8) > self.hi0y.val().get_bits::<13>(8)) & (self.lo1y.val().get_bits::<13>(8) > self.hi1y.val().get_bits::<13>(8)) & (self.lo1y.val().get_bits::<13>(8) > self.hi2y.val().get_bits::<13>(8)) & (self.lo2y.val().get_bits::<13>(8) > self.hi0y.val().get_bits::<13>(8)) & (self.lo2y.val().get_bits::<13>(8) > self.hi1y.val().get_bits::<13>(8)) & (self.lo2y.val().get_bits::<13>(8) > self.hi2y.val().get_bits::<13>(8)))
+                | (!self.hi0y.val().get_bit(20) & !self.hi1y.val().get_bit(20) & !self.hi2y.val().get_bit(20))
+                | ((self.lo0y.val().get_bits::<13>(8) > self.h_minus_1_o.val()) & (self.lo1y.val().get_bits::<13>(8) > self.h_minus_1_o.val()) & (self.lo2y.val().get_bits::<13>(8) > self.h_minus_1_o.val()));
         }
         self.box_x0_u.next = unsigned_cast(self.box_x0.val());
         self.box_x1_u.next = unsigned_cast(self.box_x1.val());
@@ -1130,8 +1206,8 @@ impl Logic for Setup {
             self.op_b2.next = self.n_dz20.q.val();
             self.op_b3.next = self.n_dy10.q.val();
         }
-        if self.s2_phase.q.val() == self.k2_2.val() {
-            // nb = dz20*dx10 - dz10*dx20
+        if self.s2_phase.q.val().get_bit(1) {
+            // nb = dz20*dx10 - dz10*dx20 (phases 2 and 3: the product register keeps nb while S2 waits)
             self.op_b0.next = self.n_dz20.q.val();
             self.op_b1.next = self.n_dx10.q.val();
             self.op_b2.next = self.n_dz10.q.val();
@@ -1146,19 +1222,25 @@ impl Logic for Setup {
         self.mul_b0.b.next = self.op_b1.val();
         self.mul_b1.a.next = self.op_b2.val();
         self.mul_b1.b.next = self.op_b3.val();
+        self.pr_a0.d.next = self.mul_a0.p.val();
+        self.pr_a1.d.next = self.mul_a1.p.val();
+        self.pr_b0.d.next = self.mul_b0.p.val();
+        self.pr_b1.d.next = self.mul_b1.p.val();
+        self.prtl_a.d.next = self.tl_a.val();
+        self.prtl_b.d.next = self.tl_b.val();
         self.dot_a.next = self.zs47.val();
         self.dot_b.next = self.zs47.val();
         self.e_a.next = self.zs44.val();
         self.e_b.next = self.zs44.val();
         if self.s2_v.q.val() {
-            self.dot_a.next = signed_bit_cast_safe::<47, 46>(self.mul_a0.p.val()) - signed_bit_cast_safe::<47, 46>(self.mul_a1.p.val());
-            self.dot_b.next = signed_bit_cast_safe::<47, 46>(self.mul_b0.p.val()) - signed_bit_cast_safe::<47, 46>(self.mul_b1.p.val());
+            self.dot_a.next = signed_bit_cast_safe::<47, 46>(self.pr_a0.q.val()) - signed_bit_cast_safe::<47, 46>(self.pr_a1.q.val());
+            self.dot_b.next = signed_bit_cast_safe::<47, 46>(self.pr_b0.q.val()) - signed_bit_cast_safe::<47, 46>(self.pr_b1.q.val());
             self.e_a.next = signed_bit_cast_safe::<44, 47>(self.dot_a.val()) - self.k1_44.val();
-            if self.tl_a.val() {
+            if self.prtl_a.q.val() {
                 self.e_a.next = signed_bit_cast_safe::<44, 47>(self.dot_a.val());
             }
             self.e_b.next = signed_bit_cast_safe::<44, 47>(self.dot_b.val()) - self.k1_44.val();
-            if self.tl_b.val() {
+            if self.prtl_b.q.val() {
                 self.e_b.next = signed_bit_cast_safe::<44, 47>(self.dot_b.val());
             }
 
@@ -1254,9 +1336,7 @@ impl Logic for Setup {
         self.q_after.next = self.q_len.q.val();
         if self.pop.val() {
             self.q_after.next = self.q_len.q.val() - self.k1_3.val();
-            self.q0.d.next = self.q1.q.val();
-            self.q1.d.next = self.q2.q.val();
-            self.q2.d.next = self.q3.q.val();
+            self.q_rp.d.next = self.q_rp.q.val() + self.k1_2.val();
         }
         self.pushed.next = self.s6.q.val();
         self.pushed.next.raw = unsigned_cast(self.raw_now.val());
@@ -1264,43 +1344,54 @@ impl Logic for Setup {
         self.q_len.d.next = self.q_after.val();
         if self.leave6.val() {
             self.q_len.d.next = self.q_after.val() + self.k1_3.val();
-            if self.q_after.val() == self.k0_3.val() {
+            self.q_wp.d.next = self.q_wp.q.val() + self.k1_2.val();
+            if self.q_wp.q.val() == self.k0_2.val() {
                 self.q0.d.next = self.pushed.val();
             }
-            if self.q_after.val() == self.k1_3.val() {
+            if self.q_wp.q.val() == self.k1_2.val() {
                 self.q1.d.next = self.pushed.val();
             }
-            if self.q_after.val() == self.k2_3.val() {
+            if self.q_wp.q.val() == self.k2_2.val() {
                 self.q2.d.next = self.pushed.val();
             }
-            if self.q_after.val() == self.k3_3.val() {
+            if self.q_wp.q.val() == self.k3_2.val() {
                 self.q3.d.next = self.pushed.val();
             }
         }
+        self.head.next = self.q0.q.val();
+        if self.q_rp.q.val() == self.k1_2.val() {
+            self.head.next = self.q1.q.val();
+        }
+        if self.q_rp.q.val() == self.k2_2.val() {
+            self.head.next = self.q2.q.val();
+        }
+        if self.q_rp.q.val() == self.k3_2.val() {
+            self.head.next = self.q3.q.val();
+        }
         self.rec_valid.next = self.q_len.q.val() != self.k0_3.val();
-        self.rec_kind.next = self.q0.q.val().kind;
-        self.rec_clear.next = self.q0.q.val().clear;
-        self.rec_index.next = self.q0.q.val().index;
-        self.rec_culled.next = self.q0.q.val().culled;
-        self.rec_zero_area.next = self.q0.q.val().zero_area;
-        self.rec_bx0.next = self.q0.q.val().bx0;
-        self.rec_bx1.next = self.q0.q.val().bx1;
-        self.rec_by0.next = self.q0.q.val().by0;
-        self.rec_by1.next = self.q0.q.val().by1;
-        self.rec_addr.next = self.q0.q.val().addr;
-        self.rec_e0.next = signed_cast(self.q0.q.val().e0);
-        self.rec_e1.next = signed_cast(self.q0.q.val().e1);
-        self.rec_e2.next = signed_cast(self.q0.q.val().e2);
-        self.rec_sx0.next = signed_cast(self.q0.q.val().sx0);
-        self.rec_sx1.next = signed_cast(self.q0.q.val().sx1);
-        self.rec_sx2.next = signed_cast(self.q0.q.val().sx2);
-        self.rec_sy0.next = signed_cast(self.q0.q.val().sy0);
-        self.rec_sy1.next = signed_cast(self.q0.q.val().sy1);
-        self.rec_sy2.next = signed_cast(self.q0.q.val().sy2);
-        self.rec_raw.next = signed_cast(self.q0.q.val().raw);
-        self.rec_a.next = signed_cast(self.q0.q.val().a);
-        self.rec_b.next = signed_cast(self.q0.q.val().b);
-        self.rec_c.next = signed_cast(self.q0.q.val().c);
+        self.rec_kind.next = self.head.val().kind;
+        self.rec_clear.next = self.head.val().clear;
+        self.rec_index.next = self.head.val().index;
+        self.rec_culled.next = self.head.val().culled;
+        self.rec_zero_area.next = self.head.val().zero_area;
+        self.rec_bx0.next = self.head.val().bx0;
+        self.rec_bx1.next = self.head.val().bx1;
+        self.rec_by0.next = self.head.val().by0;
+        self.rec_by1.next = self.head.val().by1;
+        self.rec_addr.next = self.head.val().addr;
+        self.rec_e0.next = signed_cast(self.head.val().e0);
+        self.rec_e1.next = signed_cast(self.head.val().e1);
+        self.rec_e2.next = signed_cast(self.head.val().e2);
+        self.rec_sx0.next = signed_cast(self.head.val().sx0);
+        self.rec_sx1.next = signed_cast(self.head.val().sx1);
+        self.rec_sx2.next = signed_cast(self.head.val().sx2);
+        self.rec_sy0.next = signed_cast(self.head.val().sy0);
+        self.rec_sy1.next = signed_cast(self.head.val().sy1);
+        self.rec_sy2.next = signed_cast(self.head.val().sy2);
+        self.rec_raw.next = signed_cast(self.head.val().raw);
+        self.rec_a.next = signed_cast(self.head.val().a);
+        self.rec_b.next = signed_cast(self.head.val().b);
+        self.rec_c.next = signed_cast(self.head.val().c);
 
         // ---- The stages' registers at the edge, last first ----
         // S6: phase 0 the products of C's terms; 1 their sum and those of raw's; 2 C and raw's sum.
@@ -1373,13 +1464,15 @@ impl Logic for Setup {
             self.s3p.d.next = self.s2p.q.val();
             self.s3p.d.next.nb = unsigned_cast(self.dot_b.val());
         }
-        // S2: phase 0 E0, E1; phase 1 E2, na; nb on leaving.
+        // S2: the products of phase k are registered and used in phase k+1: phase 1 E0, E1; phase 2 E2,
+        // na; nb on leaving (phase 3).
         if self.s2_v.q.val() & self.walk2.val() & !self.done2.val() {
             self.s2_phase.d.next = self.s2_phase.q.val() + self.k1_2.val();
-            if self.s2_phase.q.val() == self.k0_2.val() {
+            if self.s2_phase.q.val() == self.k1_2.val() {
                 self.s2.d.next.e0 = unsigned_cast(self.e_a.val());
                 self.s2.d.next.e1 = unsigned_cast(self.e_b.val());
-            } else {
+            }
+            if self.s2_phase.q.val() == self.k2_2.val() {
                 self.s2.d.next.e2 = unsigned_cast(self.e_a.val());
                 self.s2p.d.next.na = unsigned_cast(self.dot_b.val());
             }
