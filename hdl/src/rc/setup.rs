@@ -1,21 +1,21 @@
 //! `setup`: the RC's triangle setup (seed 001 §2.3.1: Pineda edge functions, eq. 5; the depth plane
 //! with one reciprocal per triangle, eqs. 6-7), bit-exact with `golden::raster::setup`, as a pipeline
-//! of seven stages with a pipelined reciprocal and a queue of set-up records in front of the traversal.
+//! of eight stages with a pipelined reciprocal and a queue of set-up records in front of the traversal.
 //!
 //! ```text
-//!          +------+  +-------+  +---------+  +------+------+  +--------+  +---------+  +---------+
-//!  cmd --->| S0   |->| S1    |->| S2      |->| S3   | S4   |->| S5     |->| S6      |->| record  |-> rec_*
-//! (valid/  | Det  |  | Order |  | Edges   |  | Hold | Hold |  | Grad   |  | Plane   |  | queue   |   (valid/
-//!  ready)  | 2x   |  |       |  | 4x      |  |      |      |  | 1x     |  | 2x      |  | 4 deep  |    ready)
-//!          |21x21 |  |       |  | 25x21   |  |      |      |  | 47x26  |  | 40x21   |  +---------+
-//!          +------+  +---+---+  +---------+  +------+------+  +---^----+  +---------+
-//!                        | abs(det)  +--------------------------+  | mant, shift
-//!                        +---------->| reciprocal, 13 stations  |--+
-//!                                    +--------------------------+
+//!          +------+  +-------+  +---------+  +----+----+----+  +--------+  +---------+  +---------+
+//!  cmd --->| S0   |->| S1    |->| S2      |->| S3 | S4 | S5 |->| S6     |->| S7      |->| record  |-> rec_*
+//! (valid/  | Det  |  | Order |  | Edges   |  |Hold|Hold|Hold|  | Grad   |  | Plane   |  | queue   |   (valid/
+//!  ready)  | 2x   |  |       |  | 4x      |  |    |    |    |  | 1x     |  | 2x      |  | 4 deep  |    ready)
+//!          |21x21 |  |       |  | 25x21   |  |    |    |    |  | 47x26  |  | 40x21   |  +---------+
+//!          +------+  +---+---+  +---------+  +----+----+----+  +---^----+  +---------+
+//!                        | abs(det)  +----------------------------+  | mant, shift
+//!                        +---------->| reciprocal, 13 stations    |--+
+//!                                    +----------------------------+
 //! ```
 //!
 //! Each stage holds one record (docs/rc.md, "Setup"; `golden::cycle::rc` models the same schedule).
-//! A drawn triangle spends 1, 1, 4, 1, 1, 4 and 4 cycles in S0..S6 when nothing waits; any other
+//! A drawn triangle spends 1, 1, 4, 1, 1, 1, 4 and 4 cycles in S0..S7 when nothing waits; any other
 //! command (frame start, end of frame, a culled or empty-box triangle) one cycle in each.
 //! * S0 `Det`: det = dx10*dy20 - dx20*dy10 (two 21x21 products); the clamped bounding box
 //!   `[(min+127)>>8, (max-128)>>8]`.
@@ -27,21 +27,23 @@
 //!   na = dz10*dy20 - dz20*dy10; phase 3 nb = dz20*dx10 - dz10*dx20. (Four cycles since issue 15
 //!   item 5: choosing, multiplying and subtracting in one cycle was the RC's critical path.)
 //!   `E = dx*(256*Y0+128-a.y) - dy*(256*X0+128-a.x) - bias` (bias 0 on a top or left edge, else 1).
-//! * S3, S4 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 13, is longer
-//!   than S2's four cycles; with 14 or more, a drawn triangle would take more than four cycles).
-//! * S5 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1 shifts
+//! * S3, S4, S5 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 13, is
+//!   longer than S2's four cycles). S5 is the third since issue 15 item 5: with two, the longer
+//!   reciprocal left culled triangles waiting behind a drawn one (teapot 320x200 rasterization 45 321
+//!   cycles against 45 000 asked; docs/rc.md).
+//! * S6 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1 shifts
 //!   twice that product right by shift (= the product by shift-1) and forms nb*mant; phase 2
 //!   `A = sat40((shifted + 1) >> 1)` (which is `round(na*mant >> shift)`, also for shift 0) and shifts nb*mant; phase 3 B likewise. The shift and the rounding
 //!   are a cycle each since issue 15 item 5 (the one-cycle form was the RC's critical path).
-//! * S6 `Plane` (two 40x21 products per cycle): phase 0 A*(128-x0), B*(128-y0); phase 1 their sum, A*X0,
+//! * S7 `Plane` (two 40x21 products per cycle): phase 0 A*(128-x0), B*(128-y0); phase 1 their sum, A*X0,
 //!   B*Y0; phase 2 `C = (z0 << 16) + round(sum >> 8)` and A*X0 + B*Y0; phase 3 raw = C + A*X0 + B*Y0 (the
 //!   depth plane's raw value at the box's first pixel) goes into the queue with the record.
 //!
 //! Handshake, from the registers at the start of a cycle, last stage first: stage k hands its record on
-//! when it has spent its cycles and stage k+1 is empty or hands its own on in the same cycle; S6 when the
+//! when it has spent its cycles and stage k+1 is empty or hands its own on in the same cycle; S7 when the
 //! queue holds fewer than four records; S1 hands a drawn triangle on only when the reciprocal advances
 //! (takes its request). `cmd.ready` = S0 is empty or hands on. The reciprocal advances when its result
-//! station is empty or S5 takes the result. Everything is first in, first out: records leave in command
+//! station is empty or S6 takes the result. Everything is first in, first out: records leave in command
 //! order.
 //!
 //! Widths: inputs are any 20-bit S11.8 values, so |dx|, |dy| < 2^20 and |det| < 2^41 (44 bits, the
@@ -63,7 +65,7 @@ pub const REC_EOF: u64 = 3;
 /// Records the queue in front of the traversal holds.
 pub const RECORD_QUEUE: u64 = 4;
 
-/// A record on its way through S2..S6 and the queue: what the traversal takes. Signed values are kept
+/// A record on its way through S2..S7 and the queue: what the traversal takes. Signed values are kept
 /// as their bits.
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
 pub struct SetupRec {
@@ -94,7 +96,7 @@ pub struct SetupRec {
     pub c: Bits<56>,
 }
 
-/// What S2..S6 carry beside a [`SetupRec`] to find the depth plane (not queued).
+/// What S2..S7 carry beside a [`SetupRec`] to find the depth plane (not queued).
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
 pub struct PlaneIn {
     pub na: Bits<47>,
@@ -160,9 +162,9 @@ pub struct Setup {
     mul_a1: MulSplitS<25, 21, 46, 0, 3>,
     mul_b0: MulSplitS<25, 21, 46, 0, 3>,
     mul_b1: MulSplitS<25, 21, 46, 0, 3>,
-    /// S5: the gradients.
+    /// S6: the gradients.
     mul_g: MulS<47, 26, 73>,
-    /// S6: the plane's two products per cycle.
+    /// S7: the plane's two products per cycle.
     mul_p: MulSplitS<40, 21, 61, 0, 3>,
     mul_q: MulSplitS<40, 21, 61, 0, 3>,
 
@@ -212,27 +214,30 @@ pub struct Setup {
     n_dx20: DFF<Signed<21>>,
     n_dy10: DFF<Signed<21>>,
     n_dy20: DFF<Signed<21>>,
-    // S3, S4 `Hold`.
+    // S3, S4, S5 `Hold`.
     s3_v: DFF<Bit>,
     s3: DFF<SetupRec>,
     s3p: DFF<PlaneIn>,
     s4_v: DFF<Bit>,
     s4: DFF<SetupRec>,
     s4p: DFF<PlaneIn>,
-    // S5 `Grad`: the record, its phase, the product register.
     s5_v: DFF<Bit>,
-    s5_phase: DFF<Bits<2>>,
     s5: DFF<SetupRec>,
     s5p: DFF<PlaneIn>,
-    g_prod: DFF<Bits<73>>,
-    /// The product shifted right by shift + 3 (arithmetic): the gradient before its last bit's rounding.
-    g_sh: DFF<Bits<73>>,
-    // S6 `Plane`: the record, its phase, the two product registers, their sum, C and the sum of the
-    // start terms.
+    // S6 `Grad`: the record, its phase, the product register.
     s6_v: DFF<Bit>,
     s6_phase: DFF<Bits<2>>,
     s6: DFF<SetupRec>,
     s6p: DFF<PlaneIn>,
+    g_prod: DFF<Bits<73>>,
+    /// The product shifted right by shift + 3 (arithmetic): the gradient before its last bit's rounding.
+    g_sh: DFF<Bits<73>>,
+    // S7 `Plane`: the record, its phase, the two product registers, their sum, C and the sum of the
+    // start terms.
+    s7_v: DFF<Bit>,
+    s7_phase: DFF<Bits<2>>,
+    s7: DFF<SetupRec>,
+    s7p: DFF<PlaneIn>,
     p_prod: DFF<Bits<61>>,
     q_prod: DFF<Bits<61>>,
     p_acc: DFF<Signed<62>>,
@@ -258,18 +263,20 @@ pub struct Setup {
     leave4: Signal<Local, Bit>,
     leave5: Signal<Local, Bit>,
     leave6: Signal<Local, Bit>,
+    leave7: Signal<Local, Bit>,
     free1: Signal<Local, Bit>,
     free2: Signal<Local, Bit>,
     free3: Signal<Local, Bit>,
     free4: Signal<Local, Bit>,
     free5: Signal<Local, Bit>,
     free6: Signal<Local, Bit>,
+    free7: Signal<Local, Bit>,
     done2: Signal<Local, Bit>,
-    done5: Signal<Local, Bit>,
     done6: Signal<Local, Bit>,
+    done7: Signal<Local, Bit>,
     walk2: Signal<Local, Bit>,
-    walk5: Signal<Local, Bit>,
     walk6: Signal<Local, Bit>,
+    walk7: Signal<Local, Bit>,
     take: Signal<Local, Bit>,
     pop: Signal<Local, Bit>,
     q_after: Signal<Local, Bits<3>>,
@@ -413,7 +420,7 @@ pub struct Setup {
     dot_b: Signal<Local, Signed<47>>,
     e_a: Signal<Local, Signed<44>>,
     e_b: Signal<Local, Signed<44>>,
-    // S5
+    // S6
     op_ga: Signal<Local, Signed<47>>,
     op_gb: Signal<Local, Signed<26>>,
     /// The product doubled: the gradient's shift is by `shift - 1`, done as `2*prod >> shift`.
@@ -423,7 +430,7 @@ pub struct Setup {
     halved: Signal<Local, Bits<73>>,
     grad_hi: Signal<Local, Bits<34>>,
     grad: Signal<Local, Signed<40>>,
-    // S6
+    // S7
     ga: Signal<Local, Signed<40>>,
     gb: Signal<Local, Signed<40>>,
     op_pb: Signal<Local, Signed<21>>,
@@ -588,15 +595,18 @@ impl Setup {
             s4: Default::default(),
             s4p: Default::default(),
             s5_v: Default::default(),
-            s5_phase: Default::default(),
             s5: Default::default(),
             s5p: Default::default(),
-            g_prod: Default::default(),
-            g_sh: Default::default(),
             s6_v: Default::default(),
             s6_phase: Default::default(),
             s6: Default::default(),
             s6p: Default::default(),
+            g_prod: Default::default(),
+            g_sh: Default::default(),
+            s7_v: Default::default(),
+            s7_phase: Default::default(),
+            s7: Default::default(),
+            s7p: Default::default(),
             p_prod: Default::default(),
             q_prod: Default::default(),
             p_acc: Default::default(),
@@ -616,18 +626,20 @@ impl Setup {
             leave4: Default::default(),
             leave5: Default::default(),
             leave6: Default::default(),
+            leave7: Default::default(),
             free1: Default::default(),
             free2: Default::default(),
             free3: Default::default(),
             free4: Default::default(),
             free5: Default::default(),
             free6: Default::default(),
+            free7: Default::default(),
             done2: Default::default(),
-            done5: Default::default(),
             done6: Default::default(),
+            done7: Default::default(),
             walk2: Default::default(),
-            walk5: Default::default(),
             walk6: Default::default(),
+            walk7: Default::default(),
             take: Default::default(),
             pop: Default::default(),
             q_after: Default::default(),
@@ -850,7 +862,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5_phase, s5, s5p, g_prod, g_sh, s6_v, s6_phase, s6, s6p, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, g_sh, s7_v, s7_phase, s7, s7p, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -934,15 +946,17 @@ impl Logic for Setup {
         }
         // ---- The handshake, last stage first ----
         self.walk2.next = self.s2.q.val().kind == self.rec_walk.val();
-        self.walk5.next = self.s5.q.val().kind == self.rec_walk.val();
         self.walk6.next = self.s6.q.val().kind == self.rec_walk.val();
+        self.walk7.next = self.s7.q.val().kind == self.rec_walk.val();
         self.done2.next = self.s2_v.q.val() & (!self.walk2.val() | (self.s2_phase.q.val() == self.k3_2.val()));
-        self.done5.next = self.s5_v.q.val() & (!self.walk5.val() | (self.s5_phase.q.val() == self.k3_2.val()));
         self.done6.next = self.s6_v.q.val() & (!self.walk6.val() | (self.s6_phase.q.val() == self.k3_2.val()));
-        self.take.next = self.recip.result.valid.val() & self.s5_v.q.val() & self.walk5.val() & (self.s5_phase.q.val() == self.k0_2.val());
-        self.leave6.next = self.done6.val() & (self.q_len.q.val() < self.k4_3.val());
+        self.done7.next = self.s7_v.q.val() & (!self.walk7.val() | (self.s7_phase.q.val() == self.k3_2.val()));
+        self.take.next = self.recip.result.valid.val() & self.s6_v.q.val() & self.walk6.val() & (self.s6_phase.q.val() == self.k0_2.val());
+        self.leave7.next = self.done7.val() & (self.q_len.q.val() < self.k4_3.val());
+        self.free7.next = !self.s7_v.q.val() | self.leave7.val();
+        self.leave6.next = self.done6.val() & self.free7.val();
         self.free6.next = !self.s6_v.q.val() | self.leave6.val();
-        self.leave5.next = self.done5.val() & self.free6.val();
+        self.leave5.next = self.s5_v.q.val() & self.free6.val();
         self.free5.next = !self.s5_v.q.val() | self.leave5.val();
         self.leave4.next = self.s4_v.q.val() & self.free5.val();
         self.free4.next = !self.s4_v.q.val() | self.leave4.val();
@@ -1245,12 +1259,12 @@ impl Logic for Setup {
             }
 
         }
-        // ---- S5 `Grad`: one 47x26 multiplier ----
-        self.op_ga.next = signed_cast(self.s5p.q.val().na);
+        // ---- S6 `Grad`: one 47x26 multiplier ----
+        self.op_ga.next = signed_cast(self.s6p.q.val().na);
         self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.recip.result.data.val().mant));
-        if self.s5_phase.q.val() != self.k0_2.val() {
-            self.op_ga.next = signed_cast(self.s5p.q.val().nb);
-            self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.s5p.q.val().mant));
+        if self.s6_phase.q.val() != self.k0_2.val() {
+            self.op_ga.next = signed_cast(self.s6p.q.val().nb);
+            self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.s6p.q.val().mant));
         }
         self.mul_g.a.next = self.op_ga.val();
         self.mul_g.b.next = self.op_gb.val();
@@ -1267,15 +1281,15 @@ impl Logic for Setup {
         self.halved.next = self.k0_73.val();
         self.grad_hi.next = self.k0_34.val();
         self.grad.next = self.min40.val();
-        if self.s5_v.q.val() & ((self.s5_phase.q.val() == self.k1_2.val()) | (self.s5_phase.q.val() == self.k2_2.val())) {
+        if self.s6_v.q.val() & ((self.s6_phase.q.val() == self.k1_2.val()) | (self.s6_phase.q.val() == self.k2_2.val())) {
             self.g_dbl.next = self.g_prod.q.val() << self.k1_6.val();
-            self.shifted.next = self.g_dbl.val() >> self.s5p.q.val().shift;
+            self.shifted.next = self.g_dbl.val() >> self.s6p.q.val().shift;
             if self.g_prod.q.val().get_bit(72) {
                 // arithmetic shift of a negative value: complement, shift, complement
-                self.shifted.next = !((!self.g_dbl.val()) >> self.s5p.q.val().shift);
+                self.shifted.next = !((!self.g_dbl.val()) >> self.s6p.q.val().shift);
             }
         }
-        if self.s5_v.q.val() & ((self.s5_phase.q.val() == self.k2_2.val()) | (self.s5_phase.q.val() == self.k3_2.val())) {
+        if self.s6_v.q.val() & ((self.s6_phase.q.val() == self.k2_2.val()) | (self.s6_phase.q.val() == self.k3_2.val())) {
             self.rounded.next = self.g_sh.q.val() + self.k1_73.val();
             self.halved.next = self.rounded.val() >> self.k1_6.val();
             if self.rounded.val().get_bit(72) {
@@ -1289,7 +1303,7 @@ impl Logic for Setup {
             }
         }
 
-        // ---- S6 `Plane`: two 40x21 multipliers ----
+        // ---- S7 `Plane`: two 40x21 multipliers ----
         self.ga.next = self.zs40.val();
         self.gb.next = self.zs40.val();
         self.off_x.next = self.zs21.val();
@@ -1304,17 +1318,17 @@ impl Logic for Setup {
         self.c_frac.next = self.zs56.val();
         self.z0_plane.next = self.zs56.val();
         self.raw_now.next = self.zs56.val();
-        if self.s6_v.q.val() {
-            self.ga.next = signed_cast(self.s6.q.val().a);
-            self.gb.next = signed_cast(self.s6.q.val().b);
-            self.off_x.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s6p.q.val().x0));
-            self.off_y.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s6p.q.val().y0));
+        if self.s7_v.q.val() {
+            self.ga.next = signed_cast(self.s7.q.val().a);
+            self.gb.next = signed_cast(self.s7.q.val().b);
+            self.off_x.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s7p.q.val().x0));
+            self.off_y.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s7p.q.val().y0));
             // |A| <= 2^39, |128-x0| <= 2^19 + 128, X0 < 2^10: every product fits 61 bits (59 used).
             self.op_pb.next = self.off_x.val();
             self.op_qb.next = self.off_y.val();
-            if self.s6_phase.q.val() != self.k0_2.val() {
-                self.op_pb.next = signed_cast(bit_cast::<21, 10>(self.s6.q.val().bx0));
-                self.op_qb.next = signed_cast(bit_cast::<21, 10>(self.s6.q.val().by0));
+            if self.s7_phase.q.val() != self.k0_2.val() {
+                self.op_pb.next = signed_cast(bit_cast::<21, 10>(self.s7.q.val().bx0));
+                self.op_qb.next = signed_cast(bit_cast::<21, 10>(self.s7.q.val().by0));
             }
             self.pw.next = signed_bit_cast_safe::<62, 61>(signed_cast(self.p_prod.q.val()));
             self.qw.next = signed_bit_cast_safe::<62, 61>(signed_cast(self.q_prod.q.val()));
@@ -1323,7 +1337,7 @@ impl Logic for Setup {
             // C = (z0 << 16) + round(acc >> 8): never saturates (see the module doc).
             self.acc_round.next = unsigned_cast(self.p_acc.q.val()) + self.k128_62.val();
             self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(8)));
-            self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s6p.q.val().z0) << self.k16_6.val());
+            self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s7p.q.val().z0) << self.k16_6.val());
             self.raw_now.next = self.p_c.q.val() + self.p_s.q.val();
 
         }
@@ -1338,11 +1352,11 @@ impl Logic for Setup {
             self.q_after.next = self.q_len.q.val() - self.k1_3.val();
             self.q_rp.d.next = self.q_rp.q.val() + self.k1_2.val();
         }
-        self.pushed.next = self.s6.q.val();
+        self.pushed.next = self.s7.q.val();
         self.pushed.next.raw = unsigned_cast(self.raw_now.val());
         self.pushed.next.c = unsigned_cast(self.p_c.q.val());
         self.q_len.d.next = self.q_after.val();
-        if self.leave6.val() {
+        if self.leave7.val() {
             self.q_len.d.next = self.q_after.val() + self.k1_3.val();
             self.q_wp.d.next = self.q_wp.q.val() + self.k1_2.val();
             if self.q_wp.q.val() == self.k0_2.val() {
@@ -1394,17 +1408,47 @@ impl Logic for Setup {
         self.rec_c.next = signed_cast(self.head.val().c);
 
         // ---- The stages' registers at the edge, last first ----
-        // S6: phase 0 the products of C's terms; 1 their sum and those of raw's; 2 C and raw's sum.
-        if self.s6_v.q.val() & self.walk6.val() & !self.done6.val() {
-            self.s6_phase.d.next = self.s6_phase.q.val() + self.k1_2.val();
+        // S7: phase 0 the products of C's terms; 1 their sum and those of raw's; 2 C and raw's sum.
+        if self.s7_v.q.val() & self.walk7.val() & !self.done7.val() {
+            self.s7_phase.d.next = self.s7_phase.q.val() + self.k1_2.val();
             self.p_prod.d.next = unsigned_cast(self.mul_p.p.val());
             self.q_prod.d.next = unsigned_cast(self.mul_q.p.val());
-            if self.s6_phase.q.val() == self.k1_2.val() {
+            if self.s7_phase.q.val() == self.k1_2.val() {
                 self.p_acc.d.next = self.pw.val() + self.qw.val();
             }
-            if self.s6_phase.q.val() == self.k2_2.val() {
+            if self.s7_phase.q.val() == self.k2_2.val() {
                 self.p_c.d.next = self.z0_plane.val() + self.c_frac.val();
                 self.p_s.d.next = self.p56.val() + self.q56.val();
+            }
+        }
+        if self.leave7.val() {
+            self.s7_v.d.next = false;
+        }
+        if self.leave6.val() {
+            self.s7_v.d.next = true;
+            self.s7_phase.d.next = self.k0_2.val();
+            self.s7.d.next = self.s6.q.val();
+            self.s7p.d.next = self.s6p.q.val();
+            self.s7.d.next.b = unsigned_cast(self.grad.val());
+        }
+        // S6: phase 0 takes the reciprocal and forms na*mant; phase 1 shifts it and forms nb*mant;
+        // phase 2 rounds A and shifts nb*mant; B is rounded on leaving (phase 3).
+        if self.s6_v.q.val() & self.walk6.val() & !self.done6.val() {
+            if self.s6_phase.q.val() == self.k0_2.val() {
+                if self.take.val() {
+                    self.s6_phase.d.next = self.k1_2.val();
+                    self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
+                    self.s6p.d.next.mant = self.recip.result.data.val().mant;
+                    self.s6p.d.next.shift = self.recip.result.data.val().shift;
+                }
+            } else if self.s6_phase.q.val() == self.k1_2.val() {
+                self.s6_phase.d.next = self.k2_2.val();
+                self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
+                self.g_sh.d.next = self.shifted.val();
+            } else {
+                self.s6_phase.d.next = self.k3_2.val();
+                self.g_sh.d.next = self.shifted.val();
+                self.s6.d.next.a = unsigned_cast(self.grad.val());
             }
         }
         if self.leave6.val() {
@@ -1415,38 +1459,16 @@ impl Logic for Setup {
             self.s6_phase.d.next = self.k0_2.val();
             self.s6.d.next = self.s5.q.val();
             self.s6p.d.next = self.s5p.q.val();
-            self.s6.d.next.b = unsigned_cast(self.grad.val());
         }
-        // S5: phase 0 takes the reciprocal and forms na*mant; phase 1 shifts it and forms nb*mant;
-        // phase 2 rounds A and shifts nb*mant; B is rounded on leaving (phase 3).
-        if self.s5_v.q.val() & self.walk5.val() & !self.done5.val() {
-            if self.s5_phase.q.val() == self.k0_2.val() {
-                if self.take.val() {
-                    self.s5_phase.d.next = self.k1_2.val();
-                    self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
-                    self.s5p.d.next.mant = self.recip.result.data.val().mant;
-                    self.s5p.d.next.shift = self.recip.result.data.val().shift;
-                }
-            } else if self.s5_phase.q.val() == self.k1_2.val() {
-                self.s5_phase.d.next = self.k2_2.val();
-                self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
-                self.g_sh.d.next = self.shifted.val();
-            } else {
-                self.s5_phase.d.next = self.k3_2.val();
-                self.g_sh.d.next = self.shifted.val();
-                self.s5.d.next.a = unsigned_cast(self.grad.val());
-            }
-        }
+        // S5, S4, S3: hold.
         if self.leave5.val() {
             self.s5_v.d.next = false;
         }
         if self.leave4.val() {
             self.s5_v.d.next = true;
-            self.s5_phase.d.next = self.k0_2.val();
             self.s5.d.next = self.s4.q.val();
             self.s5p.d.next = self.s4p.q.val();
         }
-        // S4, S3: hold.
         if self.leave4.val() {
             self.s4_v.d.next = false;
         }
