@@ -101,10 +101,8 @@ pub struct SetupRec {
 pub struct PlaneIn {
     pub na: Bits<47>,
     pub nb: Bits<47>,
-    /// 128 - x0 and 128 - y0: from vertex 0 to pixel (0, 0)'s centre, in subpixels (formed in S1, off
-    /// S7's product path).
-    pub ox: Bits<21>,
-    pub oy: Bits<21>,
+    pub x0: Bits<20>,
+    pub y0: Bits<20>,
     pub z0: Bits<24>,
     pub mant: Bits<25>,
     pub shift: Bits<6>,
@@ -438,11 +436,6 @@ pub struct Setup {
     op_pb: Signal<Local, Signed<21>>,
     op_qb: Signal<Local, Signed<21>>,
     off_x: Signal<Local, Signed<21>>,
-    /// S1: vertex 0 in 21 bits and 128 minus it (PlaneIn's ox, oy).
-    cx0_21: Signal<Local, Signed<21>>,
-    cy0_21: Signal<Local, Signed<21>>,
-    ox1: Signal<Local, Signed<21>>,
-    oy1: Signal<Local, Signed<21>>,
     off_y: Signal<Local, Signed<21>>,
     pw: Signal<Local, Signed<62>>,
     qw: Signal<Local, Signed<62>>,
@@ -797,10 +790,6 @@ impl Setup {
             op_pb: Default::default(),
             op_qb: Default::default(),
             off_x: Default::default(),
-            cx0_21: Default::default(),
-            cy0_21: Default::default(),
-            ox1: Default::default(),
-            oy1: Default::default(),
             off_y: Default::default(),
             pw: Default::default(),
             qw: Default::default(),
@@ -1196,11 +1185,6 @@ impl Logic for Setup {
         self.box_y0_u.next = unsigned_cast(self.box_y0.val());
         self.box_y1_u.next = unsigned_cast(self.box_y1.val());
 
-        // 128 - x0, 128 - y0 for S7 (one width change per statement).
-        self.cx0_21.next = signed_bit_cast_safe::<21, 20>(self.cx0.val());
-        self.cy0_21.next = signed_bit_cast_safe::<21, 20>(self.cy0.val());
-        self.ox1.next = self.k128_21.val() - self.cx0_21.val();
-        self.oy1.next = self.k128_21.val() - self.cy0_21.val();
         // The reciprocal of abs(det), requested when S1 holds a drawn triangle that S2 can take.
         self.det_abs.next = self.zb44.val();
         if self.s1_v.q.val() {
@@ -1337,8 +1321,8 @@ impl Logic for Setup {
         if self.s7_v.q.val() {
             self.ga.next = signed_cast(self.s7.q.val().a);
             self.gb.next = signed_cast(self.s7.q.val().b);
-            self.off_x.next = signed_cast(self.s7p.q.val().ox);
-            self.off_y.next = signed_cast(self.s7p.q.val().oy);
+            self.off_x.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s7p.q.val().x0));
+            self.off_y.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s7p.q.val().y0));
             // |A| <= 2^39, |128-x0| <= 2^19 + 128, X0 < 2^10: every product fits 61 bits (59 used).
             self.op_pb.next = self.off_x.val();
             self.op_qb.next = self.off_y.val();
@@ -1537,8 +1521,8 @@ impl Logic for Setup {
             self.s2.d.next.sy0 = unsigned_cast(self.sty_0.val());
             self.s2.d.next.sy1 = unsigned_cast(self.sty_1.val());
             self.s2.d.next.sy2 = unsigned_cast(self.sty_2.val());
-            self.s2p.d.next.ox = unsigned_cast(self.ox1.val());
-            self.s2p.d.next.oy = unsigned_cast(self.oy1.val());
+            self.s2p.d.next.x0 = unsigned_cast(self.cx0.val());
+            self.s2p.d.next.y0 = unsigned_cast(self.cy0.val());
             self.s2p.d.next.z0 = self.cz0.val();
             self.la0.d.next = signed_bit_cast_safe::<25, 21>(self.edx_0.val());
             self.lb0.d.next = self.py_0.val();
