@@ -26,20 +26,20 @@
 //! *Setup unit*: a pipeline of [`SETUP_STAGES`] stages, each holding one command on its way to
 //! becoming a traversal record, a pipelined reciprocal beside it and a queue of [`RECORD_QUEUE`]
 //! records behind it (docs/rc.md, "Setup", has the stages' arithmetic):
-//! * Stages S0 `Det`, S1 `Order`, S2 `Edges`, S3 and S4 `Hold`, S5 `Grad`, S6 `Plane`. A drawn
+//! * Stages S0 `Det`, S1 `Order`, S2 `Edges`, S3, S4 and S5 `Hold`, S6 `Grad`, S7 `Plane`. A drawn
 //!   triangle spends [`STAGE_CYCLES_DRAWN`] cycles in them when nothing waits; any other command (frame
 //!   start, end of frame, a culled or empty-box triangle) one cycle in each.
 //! * Handshake, from the registers at the start of a cycle, last stage first: a stage hands its record
 //!   on when it has spent its cycles and the next stage is empty or hands its own on in the same cycle;
-//!   S6 when the queue holds fewer than [`RECORD_QUEUE`] records at the cycle's start. S1 hands a drawn
+//!   S7 when the queue holds fewer than [`RECORD_QUEUE`] records at the cycle's start. S1 hands a drawn
 //!   triangle on only when the reciprocal advances, which is its request's acceptance. `cmd.ready` is
 //!   high when S0 is empty or hands its command on.
 //! * The reciprocal: [`RECIP_LATENCY`] stations; it advances (every request one station on, S1's
-//!   request into the first) unless its last station holds a result that S5 does not take in this
-//!   cycle. S5 takes it in its first cycle with a drawn triangle, and waits there until it comes.
+//!   request into the first) unless its last station holds a result that S6 does not take in this
+//!   cycle. S6 takes it in its first cycle with a drawn triangle, and waits there until it comes.
 //! * So a drawn triangle is offered to the traversal [`SETUP_CYCLES_DRAWN`] cycles after its command
 //!   was accepted, anything else [`SETUP_CYCLES_SHORT`] cycles after; back to back, drawn triangles
-//!   are accepted every 4 cycles (S5's and S6's four) and other commands every cycle.
+//!   are accepted every 4 cycles (S2's, S6's and S7's four) and other commands every cycle.
 //!
 //! *Traversal* (takes a record only in its `Idle` state):
 //! * Frame start: with `clear`, W*H cycles of clear writes (Z = 2^24-1, I = 0, one pixel per clock,
@@ -69,16 +69,19 @@ use crate::raster::{setup, Culled, CullMode, FrontFace, RcType, Setup};
 
 /// The setup pipeline's stages (docs/rc.md, "Setup"): `Det` determinant and bounding box; `Order`
 /// culling, canonical order, the edges' operands and the reciprocal's request; `Edges` edge start
-/// values and depth numerators; two `Hold` stages that keep records while their reciprocals run;
+/// values and depth numerators; three `Hold` stages that keep records while their reciprocals run;
 /// `Grad` the depth gradients (takes the reciprocal); `Plane` the depth plane's start value.
-pub const SETUP_STAGES: usize = 7;
+pub const SETUP_STAGES: usize = 8;
 /// The stage that takes the reciprocal's result, in its first cycle.
-pub const GRAD_STAGE: usize = 5;
+pub const GRAD_STAGE: usize = 6;
 /// Cycles a drawn triangle spends in each stage when nothing waits (`Grad`: from the reciprocal's
 /// arrival). Any other command spends one cycle in each.
-pub const STAGE_CYCLES_DRAWN: [u8; SETUP_STAGES] = [1, 1, 3, 1, 1, 4, 4];
-/// Cycles from a request's acceptance to the reciprocal's result (pipelined: one request per clock).
-pub const RECIP_LATENCY: usize = 10;
+pub const STAGE_CYCLES_DRAWN: [u8; SETUP_STAGES] = [1, 1, 4, 1, 1, 1, 4, 4];
+/// Cycles from a request's acceptance to the reciprocal's result (pipelined: one request per clock;
+/// thirteen stations of at most two division steps, `hdl::rc::fast_reciprocal`; ten stations of three
+/// until issue 15 item 5). The third Hold stage keeps the longer latency from holding up culled
+/// triangles behind a drawn one (docs/rc.md, "Setup").
+pub const RECIP_LATENCY: usize = 13;
 /// Records the queue between setup and traversal holds.
 pub const RECORD_QUEUE: usize = 4;
 /// Results the result queue holds (three: results leave at one per clock with `res_ready` high).
@@ -89,10 +92,14 @@ pub const RESULT_QUEUE: usize = 3;
 pub const TDBV_STAGES: usize = 4;
 pub const RESULT_QUEUE_III: usize = 6;
 /// Cycles from accepting a command to its record being offered to the traversal when nothing waits:
-/// a drawn triangle (the reciprocal, requested in S1's cycle, arrives in S5 RECIP_LATENCY cycles later;
-/// then S5's four cycles and S6's four), and any other command (one cycle in each stage).
-pub const SETUP_CYCLES_DRAWN: u64 = 2 + RECIP_LATENCY as u64 + STAGE_CYCLES_DRAWN[GRAD_STAGE] as u64 + STAGE_CYCLES_DRAWN[6] as u64;
-const _: () = assert!(2 + 3 + 1 + 1 <= 2 + RECIP_LATENCY as u64, "the reciprocal arrives after the record reaches Grad");
+/// a drawn triangle (the reciprocal, requested in S1's cycle, arrives in S6 RECIP_LATENCY cycles later;
+/// then S6's four cycles and S7's four), and any other command (one cycle in each stage).
+pub const SETUP_CYCLES_DRAWN: u64 = 2 + RECIP_LATENCY as u64 + STAGE_CYCLES_DRAWN[GRAD_STAGE] as u64 + STAGE_CYCLES_DRAWN[GRAD_STAGE + 1] as u64;
+const _: () = assert!(
+    2 + STAGE_CYCLES_DRAWN[2] as u64 + STAGE_CYCLES_DRAWN[3] as u64 + STAGE_CYCLES_DRAWN[4] as u64 + STAGE_CYCLES_DRAWN[5] as u64
+        <= 2 + RECIP_LATENCY as u64,
+    "the reciprocal arrives after the record reaches Grad"
+);
 pub const SETUP_CYCLES_SHORT: u64 = SETUP_STAGES as u64 + 1;
 /// Steps of the restoring divider (RECIP_BITS + 1).
 pub const RECIP_STEPS: u32 = 25;
@@ -286,7 +293,7 @@ struct Staged {
 struct SetupMoves {
     /// Stage k hands its record on (to stage k + 1, or the last stage to the record queue).
     leave: [bool; SETUP_STAGES],
-    /// S5 takes the reciprocal's result.
+    /// S6 (`Grad`) takes the reciprocal's result.
     recip_take: bool,
     /// The reciprocal pipeline advances (and accepts S1's request, if any).
     recip_advance: bool,
@@ -363,7 +370,7 @@ pub fn walk_step(s: &Setup, x: i32, y: i32) -> WalkStep {
 pub struct RcModel {
     screen: Screen,
     // setup unit
-    /// The setup pipeline's stages S0..S6.
+    /// The setup pipeline's stages S0..S7.
     stages: [Option<Staged>; SETUP_STAGES],
     /// The reciprocal pipeline: which of its stations hold a request (the last one: a result).
     recip: [bool; RECIP_LATENCY],
@@ -392,7 +399,7 @@ pub struct RcModel {
     pub walk_clocks: u64,
     pub walk_fragment_clocks: u64,
     /// Hazard coverage: cycles the record queue was full, the result queue was full, and the
-    /// reciprocal's result waited for S5.
+    /// reciprocal's result waited for S6.
     pub record_queue_full_cycles: u64,
     pub result_queue_full_cycles: u64,
     pub recip_stall_cycles: u64,
@@ -455,7 +462,7 @@ impl RcModel {
     /// The setup pipeline's handshake this cycle: a stage hands its record on when it is done with it
     /// and the next stage is empty or hands its own on in the same cycle (the last stage: when the
     /// queue has room at the cycle's start); S1 hands a drawn triangle on only when the reciprocal
-    /// pipeline accepts its request; the reciprocal pipeline advances unless its result waits for S5.
+    /// pipeline accepts its request; the reciprocal pipeline advances unless its result waits for S6.
     fn setup_moves(&self) -> SetupMoves {
         let mut m = SetupMoves::default();
         let done = |k: usize| self.stages[k].is_some_and(|s| s.phase + 1 >= s.rec.stage_cycles(k));
@@ -685,7 +692,7 @@ impl RcModel {
             self.recip.rotate_right(1);
             self.recip[0] = moves.leave[1] && self.stages[1].is_some_and(|s| s.rec.walks());
         }
-        // The setup stages, last first: a record moves on, or spends another cycle (S5 waits in its
+        // The setup stages, last first: a record moves on, or spends another cycle (S6 waits in its
         // first cycle for the reciprocal).
         for k in (0..SETUP_STAGES).rev() {
             let Some(st) = self.stages[k] else { continue };

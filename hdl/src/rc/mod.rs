@@ -27,6 +27,7 @@
 
 pub mod front;
 pub mod rc3;
+pub mod fast_reciprocal;
 pub mod reciprocal;
 pub mod result_queue;
 pub mod setup;

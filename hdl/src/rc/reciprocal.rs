@@ -277,34 +277,50 @@ impl Logic for Reciprocal {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    fn exact(det: u64) -> (u64, u64) {
+    /// The exact answer: `(floor(2^(s+24) / det), s)` with `s = floor(log2 det)`.
+    pub(crate) fn exact(det: u64) -> (u64, u64) {
         let s = 63 - det.leading_zeros() as u64;
         (((1u128 << (s + 24)) / det as u128) as u64, s)
     }
 
+    /// The ports the pipelined reciprocal units share (this one and `fast_reciprocal`).
+    pub(crate) trait RecipPorts: Block + Default {
+        fn ports(&mut self) -> (&mut Signal<In, Clock>, &mut StreamIn<Bits<44>>, &mut StreamOut<RecipResult>);
+    }
+
+    impl RecipPorts for Reciprocal {
+        fn ports(&mut self) -> (&mut Signal<In, Clock>, &mut StreamIn<Bits<44>>, &mut StreamOut<RecipResult>) {
+            (&mut self.clock, &mut self.request, &mut self.result)
+        }
+    }
+
     /// Requests on every clock that accepts one; results taken on the clocks `take` says; returns
     /// each result with the cycle it was taken in.
-    fn run(dets: &[u64], take: impl Fn(u64) -> bool) -> Vec<(u64, u64, u64)> {
-        let mut uut = Reciprocal::default();
+    pub(crate) fn run<U: RecipPorts>(dets: &[u64], take: impl Fn(u64) -> bool) -> Vec<(u64, u64, u64)> {
+        let mut uut = U::default();
         uut.connect_all();
         let (mut next, mut out) = (0, Vec::new());
         for cycle in 0..10_000u64 {
-            uut.request.valid.next = next < dets.len();
-            uut.request.data.next = dets.get(next).copied().unwrap_or(0).into();
-            uut.result.ready.next = take(cycle);
-            uut.clock.next = false.into();
+            {
+                let (clock, request, result) = uut.ports();
+                request.valid.next = next < dets.len();
+                request.data.next = dets.get(next).copied().unwrap_or(0).into();
+                result.ready.next = take(cycle);
+                clock.next = false.into();
+            }
             assert!(simulate(&mut uut, 100));
-            if uut.result.valid.val() && take(cycle) {
-                let r = uut.result.data.val();
+            let (_, request, result) = uut.ports();
+            if result.valid.val() && take(cycle) {
+                let r = result.data.val();
                 out.push((r.mant.to_u64(), r.shift.to_u64(), cycle));
             }
-            if next < dets.len() && uut.request.ready.val() {
+            if next < dets.len() && request.ready.val() {
                 next += 1;
             }
-            uut.clock.next = true.into();
+            uut.ports().0.next = true.into();
             assert!(simulate(&mut uut, 100));
             if out.len() == dets.len() {
                 return out;
@@ -317,7 +333,7 @@ mod tests {
     fn reciprocal_is_floor_of_two_to_the_shift_plus_24_over_det_after_10_cycles() {
         assert_eq!(RECIP_LATENCY, 10, "the figure in the test's name");
         for det in [1u64, 2, 3, 5, 7, 255, 256, 1000, 65535, 65536, 123456789, (1 << 34) - 1, (1 << 35) + 12345, (1 << 36) - 1, (1 << 43) + 4321, (1 << 44) - 1] {
-            let r = run(&[det], |_| true);
+            let r = run::<Reciprocal>(&[det], |_| true);
             let (mant, shift) = exact(det);
             assert_eq!((r[0].0, r[0].1), (mant, shift), "det {det}");
             assert_eq!(r[0].2, RECIP_LATENCY, "det {det}");
@@ -327,7 +343,7 @@ mod tests {
     #[test]
     fn back_to_back_requests_give_one_result_per_clock_in_request_order() {
         let dets: Vec<u64> = (0..40u64).map(|k| 1 + k * 0x1234567 % ((1 << 44) - 1)).collect();
-        let r = run(&dets, |_| true);
+        let r = run::<Reciprocal>(&dets, |_| true);
         for (k, (&det, &(mant, shift, cycle))) in dets.iter().zip(&r).enumerate() {
             assert_eq!((mant, shift), exact(det), "request {k}");
             assert_eq!(cycle, RECIP_LATENCY + k as u64, "request {k}");
@@ -338,7 +354,7 @@ mod tests {
     fn a_stalled_result_holds_the_pipeline_and_loses_nothing() {
         let dets: Vec<u64> = (0..30u64).map(|k| 3 + k * 0x9e3779b9 % ((1 << 44) - 3)).collect();
         // Taken on two clocks of every five only.
-        let r = run(&dets, |c| c % 5 == 1 || c % 5 == 3);
+        let r = run::<Reciprocal>(&dets, |c| c % 5 == 1 || c % 5 == 3);
         let got: Vec<(u64, u64)> = r.iter().map(|&(m, s, _)| (m, s)).collect();
         let want: Vec<(u64, u64)> = dets.iter().map(|&d| exact(d)).collect();
         assert_eq!(got, want);

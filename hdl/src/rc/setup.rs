@@ -1,45 +1,49 @@
 //! `setup`: the RC's triangle setup (seed 001 §2.3.1: Pineda edge functions, eq. 5; the depth plane
 //! with one reciprocal per triangle, eqs. 6-7), bit-exact with `golden::raster::setup`, as a pipeline
-//! of seven stages with a pipelined reciprocal and a queue of set-up records in front of the traversal.
+//! of eight stages with a pipelined reciprocal and a queue of set-up records in front of the traversal.
 //!
 //! ```text
-//!          +------+  +-------+  +---------+  +------+------+  +--------+  +---------+  +---------+
-//!  cmd --->| S0   |->| S1    |->| S2      |->| S3   | S4   |->| S5     |->| S6      |->| record  |-> rec_*
-//! (valid/  | Det  |  | Order |  | Edges   |  | Hold | Hold |  | Grad   |  | Plane   |  | queue   |   (valid/
-//!  ready)  | 2x   |  |       |  | 4x      |  |      |      |  | 1x     |  | 2x      |  | 4 deep  |    ready)
-//!          |21x21 |  |       |  | 25x21   |  |      |      |  | 47x26  |  | 40x21   |  +---------+
-//!          +------+  +---+---+  +---------+  +------+------+  +---^----+  +---------+
-//!                        | abs(det)  +--------------------------+  | mant, shift
-//!                        +---------->| reciprocal, 10 stations  |--+
-//!                                    +--------------------------+
+//!          +------+  +-------+  +---------+  +----+----+----+  +--------+  +---------+  +---------+
+//!  cmd --->| S0   |->| S1    |->| S2      |->| S3 | S4 | S5 |->| S6     |->| S7      |->| record  |-> rec_*
+//! (valid/  | Det  |  | Order |  | Edges   |  |Hold|Hold|Hold|  | Grad   |  | Plane   |  | queue   |   (valid/
+//!  ready)  | 2x   |  |       |  | 4x      |  |    |    |    |  | 1x     |  | 2x      |  | 4 deep  |    ready)
+//!          |21x21 |  |       |  | 25x21   |  |    |    |    |  | 47x26  |  | 40x21   |  +---------+
+//!          +------+  +---+---+  +---------+  +----+----+----+  +---^----+  +---------+
+//!                        | abs(det)  +----------------------------+  | mant, shift
+//!                        +---------->| reciprocal, 13 stations    |--+
+//!                                    +----------------------------+
 //! ```
 //!
 //! Each stage holds one record (docs/rc.md, "Setup"; `golden::cycle::rc` models the same schedule).
-//! A drawn triangle spends 1, 1, 3, 1, 1, 4 and 4 cycles in S0..S6 when nothing waits; any other
+//! A drawn triangle spends 1, 1, 4, 1, 1, 1, 4 and 4 cycles in S0..S7 when nothing waits; any other
 //! command (frame start, end of frame, a culled or empty-box triangle) one cycle in each.
 //! * S0 `Det`: det = dx10*dy20 - dx20*dy10 (two 21x21 products); the clamped bounding box
 //!   `[(min+127)>>8, (max-128)>>8]`.
 //! * S1 `Order`: zero area / cull decision from det's sign, the cull mode and the front face;
 //!   canonical order (swap vertices 1 and 2 if det < 0); all three edges' multiplier operands, fill-rule
 //!   flags and steps (-256*dy, 256*dx); the start address Y0*W + X0; the reciprocal request of abs(det).
-//! * S2 `Edges` on two dot units (a*b - c*d each): phase 0 E0, E1; phase 1 E2 and
-//!   na = dz10*dy20 - dz20*dy10; phase 2 nb = dz20*dx10 - dz10*dx20.
+//! * S2 `Edges` on two dot units (a*b - c*d each), whose products are registered: the products of
+//!   phase k are chosen in phase k and subtracted in phase k+1. Phase 1 E0, E1; phase 2 E2 and
+//!   na = dz10*dy20 - dz20*dy10; phase 3 nb = dz20*dx10 - dz10*dx20. (Four cycles since issue 15
+//!   item 5: choosing, multiplying and subtracting in one cycle was the RC's critical path.)
 //!   `E = dx*(256*Y0+128-a.y) - dy*(256*X0+128-a.x) - bias` (bias 0 on a top or left edge, else 1).
-//! * S3, S4 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 10, is longer
-//!   than S2's three cycles).
-//! * S5 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1 shifts
+//! * S3, S4, S5 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 13, is
+//!   longer than S2's four cycles). S5 is the third since issue 15 item 5: with two, the longer
+//!   reciprocal left culled triangles waiting behind a drawn one (teapot 320x200 rasterization 45 321
+//!   cycles against 45 000 asked; docs/rc.md).
+//! * S6 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1 shifts
 //!   twice that product right by shift (= the product by shift-1) and forms nb*mant; phase 2
 //!   `A = sat40((shifted + 1) >> 1)` (which is `round(na*mant >> shift)`, also for shift 0) and shifts nb*mant; phase 3 B likewise. The shift and the rounding
 //!   are a cycle each since issue 15 item 5 (the one-cycle form was the RC's critical path).
-//! * S6 `Plane` (two 40x21 products per cycle): phase 0 A*(128-x0), B*(128-y0); phase 1 their sum, A*X0,
+//! * S7 `Plane` (two 40x21 products per cycle): phase 0 A*(128-x0), B*(128-y0); phase 1 their sum, A*X0,
 //!   B*Y0; phase 2 `C = (z0 << 16) + round(sum >> 8)` and A*X0 + B*Y0; phase 3 raw = C + A*X0 + B*Y0 (the
 //!   depth plane's raw value at the box's first pixel) goes into the queue with the record.
 //!
 //! Handshake, from the registers at the start of a cycle, last stage first: stage k hands its record on
-//! when it has spent its cycles and stage k+1 is empty or hands its own on in the same cycle; S6 when the
+//! when it has spent its cycles and stage k+1 is empty or hands its own on in the same cycle; S7 when the
 //! queue holds fewer than four records; S1 hands a drawn triangle on only when the reciprocal advances
 //! (takes its request). `cmd.ready` = S0 is empty or hands on. The reciprocal advances when its result
-//! station is empty or S5 takes the result. Everything is first in, first out: records leave in command
+//! station is empty or S6 takes the result. Everything is first in, first out: records leave in command
 //! order.
 //!
 //! Widths: inputs are any 20-bit S11.8 values, so |dx|, |dy| < 2^20 and |det| < 2^41 (44 bits, the
@@ -48,7 +52,7 @@
 //! saturates at 56 bits (|A| <= 2^39, |128-x0| <= 2^19 + 128: |C| < 2^52), so the golden model's saturation
 //! of C needs no hardware; raw < 2^52 anywhere in the box (56-bit registers).
 
-use super::reciprocal::Reciprocal;
+use super::fast_reciprocal::FastReciprocal;
 use super::RcCommand;
 use crate::common::{signed_bit_cast_safe, MulS, MulSplitS, StreamIn};
 use rust_hdl::prelude::*;
@@ -61,7 +65,7 @@ pub const REC_EOF: u64 = 3;
 /// Records the queue in front of the traversal holds.
 pub const RECORD_QUEUE: u64 = 4;
 
-/// A record on its way through S2..S6 and the queue: what the traversal takes. Signed values are kept
+/// A record on its way through S2..S7 and the queue: what the traversal takes. Signed values are kept
 /// as their bits.
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
 pub struct SetupRec {
@@ -92,7 +96,7 @@ pub struct SetupRec {
     pub c: Bits<56>,
 }
 
-/// What S2..S6 carry beside a [`SetupRec`] to find the depth plane (not queued).
+/// What S2..S7 carry beside a [`SetupRec`] to find the depth plane (not queued).
 #[derive(Copy, Clone, Debug, PartialEq, Default, LogicStruct)]
 pub struct PlaneIn {
     pub na: Bits<47>,
@@ -149,7 +153,7 @@ pub struct Setup {
     pub rec_c: Signal<Out, Signed<56>>,
 
     // Children
-    recip: Reciprocal,
+    recip: FastReciprocal,
     /// S0: det's two products.
     mul_d0: MulSplitS<21, 21, 42, 3, 3>,
     mul_d1: MulSplitS<21, 21, 42, 3, 3>,
@@ -158,9 +162,9 @@ pub struct Setup {
     mul_a1: MulSplitS<25, 21, 46, 0, 3>,
     mul_b0: MulSplitS<25, 21, 46, 0, 3>,
     mul_b1: MulSplitS<25, 21, 46, 0, 3>,
-    /// S5: the gradients.
+    /// S6: the gradients.
     mul_g: MulS<47, 26, 73>,
-    /// S6: the plane's two products per cycle.
+    /// S7: the plane's two products per cycle.
     mul_p: MulSplitS<40, 21, 61, 0, 3>,
     mul_q: MulSplitS<40, 21, 61, 0, 3>,
 
@@ -196,43 +200,59 @@ pub struct Setup {
     ra2: DFF<Signed<25>>,
     rb2: DFF<Signed<21>>,
     tl2: DFF<Bit>,
+    /// The dot units' products and fill-rule flags, registered: consumed in the phase after the one
+    /// that chose their operands.
+    pr_a0: DFF<Signed<46>>,
+    pr_a1: DFF<Signed<46>>,
+    pr_b0: DFF<Signed<46>>,
+    pr_b1: DFF<Signed<46>>,
+    prtl_a: DFF<Bit>,
+    prtl_b: DFF<Bit>,
     n_dz10: DFF<Signed<25>>,
     n_dz20: DFF<Signed<25>>,
     n_dx10: DFF<Signed<21>>,
     n_dx20: DFF<Signed<21>>,
     n_dy10: DFF<Signed<21>>,
     n_dy20: DFF<Signed<21>>,
-    // S3, S4 `Hold`.
+    // S3, S4, S5 `Hold`.
     s3_v: DFF<Bit>,
     s3: DFF<SetupRec>,
     s3p: DFF<PlaneIn>,
     s4_v: DFF<Bit>,
     s4: DFF<SetupRec>,
     s4p: DFF<PlaneIn>,
-    // S5 `Grad`: the record, its phase, the product register.
     s5_v: DFF<Bit>,
-    s5_phase: DFF<Bits<2>>,
     s5: DFF<SetupRec>,
     s5p: DFF<PlaneIn>,
-    g_prod: DFF<Bits<73>>,
-    /// The product shifted right by shift + 3 (arithmetic): the gradient before its last bit's rounding.
-    g_sh: DFF<Bits<73>>,
-    // S6 `Plane`: the record, its phase, the two product registers, their sum, C and the sum of the
-    // start terms.
+    // S6 `Grad`: the record, its phase, the product register.
     s6_v: DFF<Bit>,
     s6_phase: DFF<Bits<2>>,
     s6: DFF<SetupRec>,
     s6p: DFF<PlaneIn>,
+    g_prod: DFF<Bits<73>>,
+    /// The product shifted right by shift + 3 (arithmetic): the gradient before its last bit's rounding.
+    g_sh: DFF<Bits<73>>,
+    // S7 `Plane`: the record, its phase, the two product registers, their sum, C and the sum of the
+    // start terms.
+    s7_v: DFF<Bit>,
+    s7_phase: DFF<Bits<2>>,
+    s7: DFF<SetupRec>,
+    s7p: DFF<PlaneIn>,
     p_prod: DFF<Bits<61>>,
     q_prod: DFF<Bits<61>>,
     p_acc: DFF<Signed<62>>,
     p_c: DFF<Signed<56>>,
     p_s: DFF<Signed<56>>,
-    // The record queue, head first, and its length.
+    // The record queue: four slots written in turn (`q_wp`) and read in turn (`q_rp`), and its length.
+    // A ring, not a shift register: taking a record moves only the read pointer, so `rec_ready` fans
+    // out to two flip-flops instead of every slot's load select (issue 15 item 5: that fan-out was the
+    // RC's critical path once S2's products were registered).
     q0: DFF<SetupRec>,
     q1: DFF<SetupRec>,
     q2: DFF<SetupRec>,
     q3: DFF<SetupRec>,
+    q_wp: DFF<Bits<2>>,
+    q_rp: DFF<Bits<2>>,
     q_len: DFF<Bits<3>>,
 
     // Combinational: the handshake
@@ -243,22 +263,25 @@ pub struct Setup {
     leave4: Signal<Local, Bit>,
     leave5: Signal<Local, Bit>,
     leave6: Signal<Local, Bit>,
+    leave7: Signal<Local, Bit>,
     free1: Signal<Local, Bit>,
     free2: Signal<Local, Bit>,
     free3: Signal<Local, Bit>,
     free4: Signal<Local, Bit>,
     free5: Signal<Local, Bit>,
     free6: Signal<Local, Bit>,
+    free7: Signal<Local, Bit>,
     done2: Signal<Local, Bit>,
-    done5: Signal<Local, Bit>,
     done6: Signal<Local, Bit>,
+    done7: Signal<Local, Bit>,
     walk2: Signal<Local, Bit>,
-    walk5: Signal<Local, Bit>,
     walk6: Signal<Local, Bit>,
+    walk7: Signal<Local, Bit>,
     take: Signal<Local, Bit>,
     pop: Signal<Local, Bit>,
     q_after: Signal<Local, Bits<3>>,
     pushed: Signal<Local, SetupRec>,
+    head: Signal<Local, SetupRec>,
     // S0
     v0x: Signal<Local, Signed<20>>,
     v0y: Signal<Local, Signed<20>>,
@@ -284,6 +307,28 @@ pub struct Setup {
     box_y0: Signal<Local, Signed<13>>,
     box_y1: Signal<Local, Signed<13>>,
     box_empty: Signal<Local, Bit>,
+    /// The box's emptiness from each vertex's own bounds (`oz`: the offset-binary coordinate in 21 bits;
+    /// `lo`, `hi`: (c + 127) >> 8 and (c - 128) >> 8 in bits 8..20, offset-binary), as compares side by side.
+    oz0x: Signal<Local, Bits<21>>,
+    lo0x: Signal<Local, Bits<21>>,
+    hi0x: Signal<Local, Bits<21>>,
+    oz1x: Signal<Local, Bits<21>>,
+    lo1x: Signal<Local, Bits<21>>,
+    hi1x: Signal<Local, Bits<21>>,
+    oz2x: Signal<Local, Bits<21>>,
+    lo2x: Signal<Local, Bits<21>>,
+    hi2x: Signal<Local, Bits<21>>,
+    oz0y: Signal<Local, Bits<21>>,
+    lo0y: Signal<Local, Bits<21>>,
+    hi0y: Signal<Local, Bits<21>>,
+    oz1y: Signal<Local, Bits<21>>,
+    lo1y: Signal<Local, Bits<21>>,
+    hi1y: Signal<Local, Bits<21>>,
+    oz2y: Signal<Local, Bits<21>>,
+    lo2y: Signal<Local, Bits<21>>,
+    hi2y: Signal<Local, Bits<21>>,
+    k_lo21: Constant<Bits<21>>,
+    k_hi21: Constant<Bits<21>>,
     o0x: Signal<Local, Bits<20>>,
     o0y: Signal<Local, Bits<20>>,
     o1x: Signal<Local, Bits<20>>,
@@ -292,10 +337,6 @@ pub struct Setup {
     o2y: Signal<Local, Bits<20>>,
     bx1r_o: Signal<Local, Bits<13>>,
     by1r_o: Signal<Local, Bits<13>>,
-    bx0_o: Signal<Local, Bits<13>>,
-    bx1_o: Signal<Local, Bits<13>>,
-    by0_o: Signal<Local, Bits<13>>,
-    by1_o: Signal<Local, Bits<13>>,
     lo_x_u: Signal<Local, Bits<21>>,
     hi_x_u: Signal<Local, Bits<21>>,
     lo_y_u: Signal<Local, Bits<21>>,
@@ -379,7 +420,7 @@ pub struct Setup {
     dot_b: Signal<Local, Signed<47>>,
     e_a: Signal<Local, Signed<44>>,
     e_b: Signal<Local, Signed<44>>,
-    // S5
+    // S6
     op_ga: Signal<Local, Signed<47>>,
     op_gb: Signal<Local, Signed<26>>,
     /// The product doubled: the gradient's shift is by `shift - 1`, done as `2*prod >> shift`.
@@ -389,7 +430,7 @@ pub struct Setup {
     halved: Signal<Local, Bits<73>>,
     grad_hi: Signal<Local, Bits<34>>,
     grad: Signal<Local, Signed<40>>,
-    // S6
+    // S7
     ga: Signal<Local, Signed<40>>,
     gb: Signal<Local, Signed<40>>,
     op_pb: Signal<Local, Signed<21>>,
@@ -431,8 +472,6 @@ pub struct Setup {
     k3_2: Constant<Bits<2>>,
     k0_3: Constant<Bits<3>>,
     k1_3: Constant<Bits<3>>,
-    k2_3: Constant<Bits<3>>,
-    k3_3: Constant<Bits<3>>,
     k4_3: Constant<Bits<3>>,
     k0_34: Constant<Bits<34>>,
     k16_6: Constant<Bits<6>>,
@@ -537,6 +576,12 @@ impl Setup {
             ra2: Default::default(),
             rb2: Default::default(),
             tl2: Default::default(),
+            pr_a0: Default::default(),
+            pr_a1: Default::default(),
+            pr_b0: Default::default(),
+            pr_b1: Default::default(),
+            prtl_a: Default::default(),
+            prtl_b: Default::default(),
             n_dz10: Default::default(),
             n_dz20: Default::default(),
             n_dx10: Default::default(),
@@ -550,15 +595,18 @@ impl Setup {
             s4: Default::default(),
             s4p: Default::default(),
             s5_v: Default::default(),
-            s5_phase: Default::default(),
             s5: Default::default(),
             s5p: Default::default(),
-            g_prod: Default::default(),
-            g_sh: Default::default(),
             s6_v: Default::default(),
             s6_phase: Default::default(),
             s6: Default::default(),
             s6p: Default::default(),
+            g_prod: Default::default(),
+            g_sh: Default::default(),
+            s7_v: Default::default(),
+            s7_phase: Default::default(),
+            s7: Default::default(),
+            s7p: Default::default(),
             p_prod: Default::default(),
             q_prod: Default::default(),
             p_acc: Default::default(),
@@ -568,6 +616,8 @@ impl Setup {
             q1: Default::default(),
             q2: Default::default(),
             q3: Default::default(),
+            q_wp: Default::default(),
+            q_rp: Default::default(),
             q_len: Default::default(),
             leave0: Default::default(),
             leave1: Default::default(),
@@ -576,22 +626,25 @@ impl Setup {
             leave4: Default::default(),
             leave5: Default::default(),
             leave6: Default::default(),
+            leave7: Default::default(),
             free1: Default::default(),
             free2: Default::default(),
             free3: Default::default(),
             free4: Default::default(),
             free5: Default::default(),
             free6: Default::default(),
+            free7: Default::default(),
             done2: Default::default(),
-            done5: Default::default(),
             done6: Default::default(),
+            done7: Default::default(),
             walk2: Default::default(),
-            walk5: Default::default(),
             walk6: Default::default(),
+            walk7: Default::default(),
             take: Default::default(),
             pop: Default::default(),
             q_after: Default::default(),
             pushed: Default::default(),
+            head: Default::default(),
             v0x: Default::default(),
             v0y: Default::default(),
             v1x: Default::default(),
@@ -616,6 +669,26 @@ impl Setup {
             box_y0: Default::default(),
             box_y1: Default::default(),
             box_empty: Default::default(),
+            oz0x: Default::default(),
+            lo0x: Default::default(),
+            hi0x: Default::default(),
+            oz1x: Default::default(),
+            lo1x: Default::default(),
+            hi1x: Default::default(),
+            oz2x: Default::default(),
+            lo2x: Default::default(),
+            hi2x: Default::default(),
+            oz0y: Default::default(),
+            lo0y: Default::default(),
+            hi0y: Default::default(),
+            oz1y: Default::default(),
+            lo1y: Default::default(),
+            hi1y: Default::default(),
+            oz2y: Default::default(),
+            lo2y: Default::default(),
+            hi2y: Default::default(),
+            k_lo21: Constant::new(((1u64 << 19) + 127).into()),
+            k_hi21: Constant::new(((1u64 << 19) - 128).into()),
             o0x: Default::default(),
             o0y: Default::default(),
             o1x: Default::default(),
@@ -624,10 +697,6 @@ impl Setup {
             o2y: Default::default(),
             bx1r_o: Default::default(),
             by1r_o: Default::default(),
-            bx0_o: Default::default(),
-            bx1_o: Default::default(),
-            by0_o: Default::default(),
-            by1_o: Default::default(),
             lo_x_u: Default::default(),
             hi_x_u: Default::default(),
             lo_y_u: Default::default(),
@@ -755,8 +824,6 @@ impl Setup {
             k3_2: Constant::new(3.into()),
             k0_3: Constant::new(0.into()),
             k1_3: Constant::new(1.into()),
-            k2_3: Constant::new(2.into()),
-            k3_3: Constant::new(3.into()),
             k4_3: Constant::new(4.into()),
             k0_34: Constant::new(0.into()),
             k16_6: Constant::new(16.into()),
@@ -795,7 +862,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5_phase, s5, s5p, g_prod, g_sh, s6_v, s6_phase, s6, s6p, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, g_sh, s7_v, s7_phase, s7, s7p, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -879,15 +946,17 @@ impl Logic for Setup {
         }
         // ---- The handshake, last stage first ----
         self.walk2.next = self.s2.q.val().kind == self.rec_walk.val();
-        self.walk5.next = self.s5.q.val().kind == self.rec_walk.val();
         self.walk6.next = self.s6.q.val().kind == self.rec_walk.val();
-        self.done2.next = self.s2_v.q.val() & (!self.walk2.val() | (self.s2_phase.q.val() == self.k2_2.val()));
-        self.done5.next = self.s5_v.q.val() & (!self.walk5.val() | (self.s5_phase.q.val() == self.k3_2.val()));
+        self.walk7.next = self.s7.q.val().kind == self.rec_walk.val();
+        self.done2.next = self.s2_v.q.val() & (!self.walk2.val() | (self.s2_phase.q.val() == self.k3_2.val()));
         self.done6.next = self.s6_v.q.val() & (!self.walk6.val() | (self.s6_phase.q.val() == self.k3_2.val()));
-        self.take.next = self.recip.result.valid.val() & self.s5_v.q.val() & self.walk5.val() & (self.s5_phase.q.val() == self.k0_2.val());
-        self.leave6.next = self.done6.val() & (self.q_len.q.val() < self.k4_3.val());
+        self.done7.next = self.s7_v.q.val() & (!self.walk7.val() | (self.s7_phase.q.val() == self.k3_2.val()));
+        self.take.next = self.recip.result.valid.val() & self.s6_v.q.val() & self.walk6.val() & (self.s6_phase.q.val() == self.k0_2.val());
+        self.leave7.next = self.done7.val() & (self.q_len.q.val() < self.k4_3.val());
+        self.free7.next = !self.s7_v.q.val() | self.leave7.val();
+        self.leave6.next = self.done6.val() & self.free7.val();
         self.free6.next = !self.s6_v.q.val() | self.leave6.val();
-        self.leave5.next = self.done5.val() & self.free6.val();
+        self.leave5.next = self.s5_v.q.val() & self.free6.val();
         self.free5.next = !self.s5_v.q.val() | self.leave5.val();
         self.leave4.next = self.s4_v.q.val() & self.free5.val();
         self.free4.next = !self.s4_v.q.val() | self.leave4.val();
@@ -1061,11 +1130,6 @@ impl Logic for Setup {
         self.box_x1.next = self.k0_13.val();
         self.box_y0.next = self.k0_13.val();
         self.box_y1.next = self.k0_13.val();
-        self.box_empty.next = false;
-        self.bx0_o.next = self.zb13.val();
-        self.bx1_o.next = self.zb13.val();
-        self.by0_o.next = self.zb13.val();
-        self.by1_o.next = self.zb13.val();
         if self.s0_v.q.val() {
             // >> 8 (arithmetic), then clamp to the screen.
             self.box_x0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_x_u.val().get_bits::<13>(8)));
@@ -1084,11 +1148,37 @@ impl Logic for Setup {
             if self.by1r_o.val() > self.h_minus_1_o.val() {
                 self.box_y1.next = self.h_minus_1.val();
             }
-            self.bx0_o.next = unsigned_cast(self.box_x0.val()) ^ self.k_sign13.val();
-            self.bx1_o.next = unsigned_cast(self.box_x1.val()) ^ self.k_sign13.val();
-            self.by0_o.next = unsigned_cast(self.box_y0.val()) ^ self.k_sign13.val();
-            self.by1_o.next = unsigned_cast(self.box_y1.val()) ^ self.k_sign13.val();
-            self.box_empty.next = (self.bx0_o.val() > self.bx1_o.val()) | (self.by0_o.val() > self.by1_o.val());
+        }
+        // The box is empty when max(min lo, 0) > min(max hi, W-1): some bound of every pair crosses, or every
+        // hi is negative, or every lo is past the screen. With the offset 2^20 (the offset-binary 20-bit
+        // coordinate plus 2^19), bits 8..20 of c + 2^20 + k are the offset-binary 13-bit (c + k) >> 8, so all
+        // the compares are unsigned and side by side: no minimum, maximum or clamp in front of them.
+        self.oz0x.next = bit_cast::<21, 20>(self.o0x.val());
+        self.oz1x.next = bit_cast::<21, 20>(self.o1x.val());
+        self.oz2x.next = bit_cast::<21, 20>(self.o2x.val());
+        self.lo0x.next = self.oz0x.val() + self.k_lo21.val();
+        self.hi0x.next = self.oz0x.val() + self.k_hi21.val();
+        self.lo1x.next = self.oz1x.val() + self.k_lo21.val();
+        self.hi1x.next = self.oz1x.val() + self.k_hi21.val();
+        self.lo2x.next = self.oz2x.val() + self.k_lo21.val();
+        self.hi2x.next = self.oz2x.val() + self.k_hi21.val();
+        self.oz0y.next = bit_cast::<21, 20>(self.o0y.val());
+        self.oz1y.next = bit_cast::<21, 20>(self.o1y.val());
+        self.oz2y.next = bit_cast::<21, 20>(self.o2y.val());
+        self.lo0y.next = self.oz0y.val() + self.k_lo21.val();
+        self.hi0y.next = self.oz0y.val() + self.k_hi21.val();
+        self.lo1y.next = self.oz1y.val() + self.k_lo21.val();
+        self.hi1y.next = self.oz1y.val() + self.k_hi21.val();
+        self.lo2y.next = self.oz2y.val() + self.k_lo21.val();
+        self.hi2y.next = self.oz2y.val() + self.k_hi21.val();
+        self.box_empty.next = false;
+        if self.s0_v.q.val() {
+            self.box_empty.next = ((self.lo0x.val().get_bits::<13>(8) > self.hi0x.val().get_bits::<13>(8)) & (self.lo0x.val().get_bits::<13>(8) > self.hi1x.val().get_bits::<13>(8)) & (self.lo0x.val().get_bits::<13>(8) > self.hi2x.val().get_bits::<13>(8)) & (self.lo1x.val().get_bits::<13>(8) > self.hi0x.val().get_bits::<13>(8)) & (self.lo1x.val().get_bits::<13>(8) > self.hi1x.val().get_bits::<13>(8)) & (self.lo1x.val().get_bits::<13>(8) > self.hi2x.val().get_bits::<13>(8)) & (self.lo2x.val().get_bits::<13>(8) > self.hi0x.val().get_bits::<13>(8)) & (self.lo2x.val().get_bits::<13>(8) > self.hi1x.val().get_bits::<13>(8)) & (self.lo2x.val().get_bits::<13>(8) > self.hi2x.val().get_bits::<13>(8)))
+                | (!self.hi0x.val().get_bit(20) & !self.hi1x.val().get_bit(20) & !self.hi2x.val().get_bit(20))
+                | ((self.lo0x.val().get_bits::<13>(8) > self.w_minus_1_o.val()) & (self.lo1x.val().get_bits::<13>(8) > self.w_minus_1_o.val()) & (self.lo2x.val().get_bits::<13>(8) > self.w_minus_1_o.val()))
+                | ((self.lo0y.val().get_bits::<13>(8) > self.hi0y.val().get_bits::<13>(8)) & (self.lo0y.val().get_bits::<13>(8) > self.hi1y.val().get_bits::<13>(8)) & (self.lo0y.val().get_bits::<13>(8) > self.hi2y.val().get_bits::<13>(8)) & (self.lo1y.val().get_bits::<13>(8) > self.hi0y.val().get_bits::<13>(8)) & (self.lo1y.val().get_bits::<13>(8) > self.hi1y.val().get_bits::<13>(8)) & (self.lo1y.val().get_bits::<13>(8) > self.hi2y.val().get_bits::<13>(8)) & (self.lo2y.val().get_bits::<13>(8) > self.hi0y.val().get_bits::<13>(8)) & (self.lo2y.val().get_bits::<13>(8) > self.hi1y.val().get_bits::<13>(8)) & (self.lo2y.val().get_bits::<13>(8) > self.hi2y.val().get_bits::<13>(8)))
+                | (!self.hi0y.val().get_bit(20) & !self.hi1y.val().get_bit(20) & !self.hi2y.val().get_bit(20))
+                | ((self.lo0y.val().get_bits::<13>(8) > self.h_minus_1_o.val()) & (self.lo1y.val().get_bits::<13>(8) > self.h_minus_1_o.val()) & (self.lo2y.val().get_bits::<13>(8) > self.h_minus_1_o.val()));
         }
         self.box_x0_u.next = unsigned_cast(self.box_x0.val());
         self.box_x1_u.next = unsigned_cast(self.box_x1.val());
@@ -1130,8 +1220,8 @@ impl Logic for Setup {
             self.op_b2.next = self.n_dz20.q.val();
             self.op_b3.next = self.n_dy10.q.val();
         }
-        if self.s2_phase.q.val() == self.k2_2.val() {
-            // nb = dz20*dx10 - dz10*dx20
+        if self.s2_phase.q.val().get_bit(1) {
+            // nb = dz20*dx10 - dz10*dx20 (phases 2 and 3: the product register keeps nb while S2 waits)
             self.op_b0.next = self.n_dz20.q.val();
             self.op_b1.next = self.n_dx10.q.val();
             self.op_b2.next = self.n_dz10.q.val();
@@ -1146,29 +1236,35 @@ impl Logic for Setup {
         self.mul_b0.b.next = self.op_b1.val();
         self.mul_b1.a.next = self.op_b2.val();
         self.mul_b1.b.next = self.op_b3.val();
+        self.pr_a0.d.next = self.mul_a0.p.val();
+        self.pr_a1.d.next = self.mul_a1.p.val();
+        self.pr_b0.d.next = self.mul_b0.p.val();
+        self.pr_b1.d.next = self.mul_b1.p.val();
+        self.prtl_a.d.next = self.tl_a.val();
+        self.prtl_b.d.next = self.tl_b.val();
         self.dot_a.next = self.zs47.val();
         self.dot_b.next = self.zs47.val();
         self.e_a.next = self.zs44.val();
         self.e_b.next = self.zs44.val();
         if self.s2_v.q.val() {
-            self.dot_a.next = signed_bit_cast_safe::<47, 46>(self.mul_a0.p.val()) - signed_bit_cast_safe::<47, 46>(self.mul_a1.p.val());
-            self.dot_b.next = signed_bit_cast_safe::<47, 46>(self.mul_b0.p.val()) - signed_bit_cast_safe::<47, 46>(self.mul_b1.p.val());
+            self.dot_a.next = signed_bit_cast_safe::<47, 46>(self.pr_a0.q.val()) - signed_bit_cast_safe::<47, 46>(self.pr_a1.q.val());
+            self.dot_b.next = signed_bit_cast_safe::<47, 46>(self.pr_b0.q.val()) - signed_bit_cast_safe::<47, 46>(self.pr_b1.q.val());
             self.e_a.next = signed_bit_cast_safe::<44, 47>(self.dot_a.val()) - self.k1_44.val();
-            if self.tl_a.val() {
+            if self.prtl_a.q.val() {
                 self.e_a.next = signed_bit_cast_safe::<44, 47>(self.dot_a.val());
             }
             self.e_b.next = signed_bit_cast_safe::<44, 47>(self.dot_b.val()) - self.k1_44.val();
-            if self.tl_b.val() {
+            if self.prtl_b.q.val() {
                 self.e_b.next = signed_bit_cast_safe::<44, 47>(self.dot_b.val());
             }
 
         }
-        // ---- S5 `Grad`: one 47x26 multiplier ----
-        self.op_ga.next = signed_cast(self.s5p.q.val().na);
+        // ---- S6 `Grad`: one 47x26 multiplier ----
+        self.op_ga.next = signed_cast(self.s6p.q.val().na);
         self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.recip.result.data.val().mant));
-        if self.s5_phase.q.val() != self.k0_2.val() {
-            self.op_ga.next = signed_cast(self.s5p.q.val().nb);
-            self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.s5p.q.val().mant));
+        if self.s6_phase.q.val() != self.k0_2.val() {
+            self.op_ga.next = signed_cast(self.s6p.q.val().nb);
+            self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.s6p.q.val().mant));
         }
         self.mul_g.a.next = self.op_ga.val();
         self.mul_g.b.next = self.op_gb.val();
@@ -1185,15 +1281,15 @@ impl Logic for Setup {
         self.halved.next = self.k0_73.val();
         self.grad_hi.next = self.k0_34.val();
         self.grad.next = self.min40.val();
-        if self.s5_v.q.val() & ((self.s5_phase.q.val() == self.k1_2.val()) | (self.s5_phase.q.val() == self.k2_2.val())) {
+        if self.s6_v.q.val() & ((self.s6_phase.q.val() == self.k1_2.val()) | (self.s6_phase.q.val() == self.k2_2.val())) {
             self.g_dbl.next = self.g_prod.q.val() << self.k1_6.val();
-            self.shifted.next = self.g_dbl.val() >> self.s5p.q.val().shift;
+            self.shifted.next = self.g_dbl.val() >> self.s6p.q.val().shift;
             if self.g_prod.q.val().get_bit(72) {
                 // arithmetic shift of a negative value: complement, shift, complement
-                self.shifted.next = !((!self.g_dbl.val()) >> self.s5p.q.val().shift);
+                self.shifted.next = !((!self.g_dbl.val()) >> self.s6p.q.val().shift);
             }
         }
-        if self.s5_v.q.val() & ((self.s5_phase.q.val() == self.k2_2.val()) | (self.s5_phase.q.val() == self.k3_2.val())) {
+        if self.s6_v.q.val() & ((self.s6_phase.q.val() == self.k2_2.val()) | (self.s6_phase.q.val() == self.k3_2.val())) {
             self.rounded.next = self.g_sh.q.val() + self.k1_73.val();
             self.halved.next = self.rounded.val() >> self.k1_6.val();
             if self.rounded.val().get_bit(72) {
@@ -1207,7 +1303,7 @@ impl Logic for Setup {
             }
         }
 
-        // ---- S6 `Plane`: two 40x21 multipliers ----
+        // ---- S7 `Plane`: two 40x21 multipliers ----
         self.ga.next = self.zs40.val();
         self.gb.next = self.zs40.val();
         self.off_x.next = self.zs21.val();
@@ -1222,17 +1318,17 @@ impl Logic for Setup {
         self.c_frac.next = self.zs56.val();
         self.z0_plane.next = self.zs56.val();
         self.raw_now.next = self.zs56.val();
-        if self.s6_v.q.val() {
-            self.ga.next = signed_cast(self.s6.q.val().a);
-            self.gb.next = signed_cast(self.s6.q.val().b);
-            self.off_x.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s6p.q.val().x0));
-            self.off_y.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s6p.q.val().y0));
+        if self.s7_v.q.val() {
+            self.ga.next = signed_cast(self.s7.q.val().a);
+            self.gb.next = signed_cast(self.s7.q.val().b);
+            self.off_x.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s7p.q.val().x0));
+            self.off_y.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s7p.q.val().y0));
             // |A| <= 2^39, |128-x0| <= 2^19 + 128, X0 < 2^10: every product fits 61 bits (59 used).
             self.op_pb.next = self.off_x.val();
             self.op_qb.next = self.off_y.val();
-            if self.s6_phase.q.val() != self.k0_2.val() {
-                self.op_pb.next = signed_cast(bit_cast::<21, 10>(self.s6.q.val().bx0));
-                self.op_qb.next = signed_cast(bit_cast::<21, 10>(self.s6.q.val().by0));
+            if self.s7_phase.q.val() != self.k0_2.val() {
+                self.op_pb.next = signed_cast(bit_cast::<21, 10>(self.s7.q.val().bx0));
+                self.op_qb.next = signed_cast(bit_cast::<21, 10>(self.s7.q.val().by0));
             }
             self.pw.next = signed_bit_cast_safe::<62, 61>(signed_cast(self.p_prod.q.val()));
             self.qw.next = signed_bit_cast_safe::<62, 61>(signed_cast(self.q_prod.q.val()));
@@ -1241,7 +1337,7 @@ impl Logic for Setup {
             // C = (z0 << 16) + round(acc >> 8): never saturates (see the module doc).
             self.acc_round.next = unsigned_cast(self.p_acc.q.val()) + self.k128_62.val();
             self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(8)));
-            self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s6p.q.val().z0) << self.k16_6.val());
+            self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s7p.q.val().z0) << self.k16_6.val());
             self.raw_now.next = self.p_c.q.val() + self.p_s.q.val();
 
         }
@@ -1254,66 +1350,105 @@ impl Logic for Setup {
         self.q_after.next = self.q_len.q.val();
         if self.pop.val() {
             self.q_after.next = self.q_len.q.val() - self.k1_3.val();
-            self.q0.d.next = self.q1.q.val();
-            self.q1.d.next = self.q2.q.val();
-            self.q2.d.next = self.q3.q.val();
+            self.q_rp.d.next = self.q_rp.q.val() + self.k1_2.val();
         }
-        self.pushed.next = self.s6.q.val();
+        self.pushed.next = self.s7.q.val();
         self.pushed.next.raw = unsigned_cast(self.raw_now.val());
         self.pushed.next.c = unsigned_cast(self.p_c.q.val());
         self.q_len.d.next = self.q_after.val();
-        if self.leave6.val() {
+        if self.leave7.val() {
             self.q_len.d.next = self.q_after.val() + self.k1_3.val();
-            if self.q_after.val() == self.k0_3.val() {
+            self.q_wp.d.next = self.q_wp.q.val() + self.k1_2.val();
+            if self.q_wp.q.val() == self.k0_2.val() {
                 self.q0.d.next = self.pushed.val();
             }
-            if self.q_after.val() == self.k1_3.val() {
+            if self.q_wp.q.val() == self.k1_2.val() {
                 self.q1.d.next = self.pushed.val();
             }
-            if self.q_after.val() == self.k2_3.val() {
+            if self.q_wp.q.val() == self.k2_2.val() {
                 self.q2.d.next = self.pushed.val();
             }
-            if self.q_after.val() == self.k3_3.val() {
+            if self.q_wp.q.val() == self.k3_2.val() {
                 self.q3.d.next = self.pushed.val();
             }
         }
+        self.head.next = self.q0.q.val();
+        if self.q_rp.q.val() == self.k1_2.val() {
+            self.head.next = self.q1.q.val();
+        }
+        if self.q_rp.q.val() == self.k2_2.val() {
+            self.head.next = self.q2.q.val();
+        }
+        if self.q_rp.q.val() == self.k3_2.val() {
+            self.head.next = self.q3.q.val();
+        }
         self.rec_valid.next = self.q_len.q.val() != self.k0_3.val();
-        self.rec_kind.next = self.q0.q.val().kind;
-        self.rec_clear.next = self.q0.q.val().clear;
-        self.rec_index.next = self.q0.q.val().index;
-        self.rec_culled.next = self.q0.q.val().culled;
-        self.rec_zero_area.next = self.q0.q.val().zero_area;
-        self.rec_bx0.next = self.q0.q.val().bx0;
-        self.rec_bx1.next = self.q0.q.val().bx1;
-        self.rec_by0.next = self.q0.q.val().by0;
-        self.rec_by1.next = self.q0.q.val().by1;
-        self.rec_addr.next = self.q0.q.val().addr;
-        self.rec_e0.next = signed_cast(self.q0.q.val().e0);
-        self.rec_e1.next = signed_cast(self.q0.q.val().e1);
-        self.rec_e2.next = signed_cast(self.q0.q.val().e2);
-        self.rec_sx0.next = signed_cast(self.q0.q.val().sx0);
-        self.rec_sx1.next = signed_cast(self.q0.q.val().sx1);
-        self.rec_sx2.next = signed_cast(self.q0.q.val().sx2);
-        self.rec_sy0.next = signed_cast(self.q0.q.val().sy0);
-        self.rec_sy1.next = signed_cast(self.q0.q.val().sy1);
-        self.rec_sy2.next = signed_cast(self.q0.q.val().sy2);
-        self.rec_raw.next = signed_cast(self.q0.q.val().raw);
-        self.rec_a.next = signed_cast(self.q0.q.val().a);
-        self.rec_b.next = signed_cast(self.q0.q.val().b);
-        self.rec_c.next = signed_cast(self.q0.q.val().c);
+        self.rec_kind.next = self.head.val().kind;
+        self.rec_clear.next = self.head.val().clear;
+        self.rec_index.next = self.head.val().index;
+        self.rec_culled.next = self.head.val().culled;
+        self.rec_zero_area.next = self.head.val().zero_area;
+        self.rec_bx0.next = self.head.val().bx0;
+        self.rec_bx1.next = self.head.val().bx1;
+        self.rec_by0.next = self.head.val().by0;
+        self.rec_by1.next = self.head.val().by1;
+        self.rec_addr.next = self.head.val().addr;
+        self.rec_e0.next = signed_cast(self.head.val().e0);
+        self.rec_e1.next = signed_cast(self.head.val().e1);
+        self.rec_e2.next = signed_cast(self.head.val().e2);
+        self.rec_sx0.next = signed_cast(self.head.val().sx0);
+        self.rec_sx1.next = signed_cast(self.head.val().sx1);
+        self.rec_sx2.next = signed_cast(self.head.val().sx2);
+        self.rec_sy0.next = signed_cast(self.head.val().sy0);
+        self.rec_sy1.next = signed_cast(self.head.val().sy1);
+        self.rec_sy2.next = signed_cast(self.head.val().sy2);
+        self.rec_raw.next = signed_cast(self.head.val().raw);
+        self.rec_a.next = signed_cast(self.head.val().a);
+        self.rec_b.next = signed_cast(self.head.val().b);
+        self.rec_c.next = signed_cast(self.head.val().c);
 
         // ---- The stages' registers at the edge, last first ----
-        // S6: phase 0 the products of C's terms; 1 their sum and those of raw's; 2 C and raw's sum.
-        if self.s6_v.q.val() & self.walk6.val() & !self.done6.val() {
-            self.s6_phase.d.next = self.s6_phase.q.val() + self.k1_2.val();
+        // S7: phase 0 the products of C's terms; 1 their sum and those of raw's; 2 C and raw's sum.
+        if self.s7_v.q.val() & self.walk7.val() & !self.done7.val() {
+            self.s7_phase.d.next = self.s7_phase.q.val() + self.k1_2.val();
             self.p_prod.d.next = unsigned_cast(self.mul_p.p.val());
             self.q_prod.d.next = unsigned_cast(self.mul_q.p.val());
-            if self.s6_phase.q.val() == self.k1_2.val() {
+            if self.s7_phase.q.val() == self.k1_2.val() {
                 self.p_acc.d.next = self.pw.val() + self.qw.val();
             }
-            if self.s6_phase.q.val() == self.k2_2.val() {
+            if self.s7_phase.q.val() == self.k2_2.val() {
                 self.p_c.d.next = self.z0_plane.val() + self.c_frac.val();
                 self.p_s.d.next = self.p56.val() + self.q56.val();
+            }
+        }
+        if self.leave7.val() {
+            self.s7_v.d.next = false;
+        }
+        if self.leave6.val() {
+            self.s7_v.d.next = true;
+            self.s7_phase.d.next = self.k0_2.val();
+            self.s7.d.next = self.s6.q.val();
+            self.s7p.d.next = self.s6p.q.val();
+            self.s7.d.next.b = unsigned_cast(self.grad.val());
+        }
+        // S6: phase 0 takes the reciprocal and forms na*mant; phase 1 shifts it and forms nb*mant;
+        // phase 2 rounds A and shifts nb*mant; B is rounded on leaving (phase 3).
+        if self.s6_v.q.val() & self.walk6.val() & !self.done6.val() {
+            if self.s6_phase.q.val() == self.k0_2.val() {
+                if self.take.val() {
+                    self.s6_phase.d.next = self.k1_2.val();
+                    self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
+                    self.s6p.d.next.mant = self.recip.result.data.val().mant;
+                    self.s6p.d.next.shift = self.recip.result.data.val().shift;
+                }
+            } else if self.s6_phase.q.val() == self.k1_2.val() {
+                self.s6_phase.d.next = self.k2_2.val();
+                self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
+                self.g_sh.d.next = self.shifted.val();
+            } else {
+                self.s6_phase.d.next = self.k3_2.val();
+                self.g_sh.d.next = self.shifted.val();
+                self.s6.d.next.a = unsigned_cast(self.grad.val());
             }
         }
         if self.leave6.val() {
@@ -1324,38 +1459,16 @@ impl Logic for Setup {
             self.s6_phase.d.next = self.k0_2.val();
             self.s6.d.next = self.s5.q.val();
             self.s6p.d.next = self.s5p.q.val();
-            self.s6.d.next.b = unsigned_cast(self.grad.val());
         }
-        // S5: phase 0 takes the reciprocal and forms na*mant; phase 1 shifts it and forms nb*mant;
-        // phase 2 rounds A and shifts nb*mant; B is rounded on leaving (phase 3).
-        if self.s5_v.q.val() & self.walk5.val() & !self.done5.val() {
-            if self.s5_phase.q.val() == self.k0_2.val() {
-                if self.take.val() {
-                    self.s5_phase.d.next = self.k1_2.val();
-                    self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
-                    self.s5p.d.next.mant = self.recip.result.data.val().mant;
-                    self.s5p.d.next.shift = self.recip.result.data.val().shift;
-                }
-            } else if self.s5_phase.q.val() == self.k1_2.val() {
-                self.s5_phase.d.next = self.k2_2.val();
-                self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
-                self.g_sh.d.next = self.shifted.val();
-            } else {
-                self.s5_phase.d.next = self.k3_2.val();
-                self.g_sh.d.next = self.shifted.val();
-                self.s5.d.next.a = unsigned_cast(self.grad.val());
-            }
-        }
+        // S5, S4, S3: hold.
         if self.leave5.val() {
             self.s5_v.d.next = false;
         }
         if self.leave4.val() {
             self.s5_v.d.next = true;
-            self.s5_phase.d.next = self.k0_2.val();
             self.s5.d.next = self.s4.q.val();
             self.s5p.d.next = self.s4p.q.val();
         }
-        // S4, S3: hold.
         if self.leave4.val() {
             self.s4_v.d.next = false;
         }
@@ -1373,13 +1486,15 @@ impl Logic for Setup {
             self.s3p.d.next = self.s2p.q.val();
             self.s3p.d.next.nb = unsigned_cast(self.dot_b.val());
         }
-        // S2: phase 0 E0, E1; phase 1 E2, na; nb on leaving.
+        // S2: the products of phase k are registered and used in phase k+1: phase 1 E0, E1; phase 2 E2,
+        // na; nb on leaving (phase 3).
         if self.s2_v.q.val() & self.walk2.val() & !self.done2.val() {
             self.s2_phase.d.next = self.s2_phase.q.val() + self.k1_2.val();
-            if self.s2_phase.q.val() == self.k0_2.val() {
+            if self.s2_phase.q.val() == self.k1_2.val() {
                 self.s2.d.next.e0 = unsigned_cast(self.e_a.val());
                 self.s2.d.next.e1 = unsigned_cast(self.e_b.val());
-            } else {
+            }
+            if self.s2_phase.q.val() == self.k2_2.val() {
                 self.s2.d.next.e2 = unsigned_cast(self.e_a.val());
                 self.s2p.d.next.na = unsigned_cast(self.dot_b.val());
             }
