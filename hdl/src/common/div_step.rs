@@ -1,7 +1,7 @@
 //! `DivStepN<R>` (`DivStep`, 37 bits, and `DivStep45`): one step of the restoring division of `golden::format::reciprocal` (combinational): the
 //! partial remainder is compared with the divisor, the divisor subtracted if it fits, one quotient bit
-//! shifted in. The RC's pipelined reciprocal chains three per station; colour setup's pipelined one
-//! has one per station.
+//! shifted in. The RC's pipelined reciprocal (`rc::fast_reciprocal`) chains two per station, the
+//! texture units' (`rc::reciprocal`) three; colour setup's pipelined one has one per station.
 //!
 //! A leaf written as Verilog (like [`super::MulS`]): rust-hdl 0.46 keeps any `Bits` wider than 32 bits
 //! as an array of bools, so the 37/45-bit compare and subtract of an `hdl_gen` version cost more than

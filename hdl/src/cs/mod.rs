@@ -20,8 +20,8 @@
 //!
 //! Colour setup has its own reciprocal: the 25 restoring steps of `golden::format::reciprocal` as a
 //! chain of [`crate::common::DivStep`]s, one step per cycle, so that a new triangle can start every 4
-//! cycles. The RC's [`crate::rc::reciprocal::Reciprocal`] computes the same quotient one triangle at a
-//! time (27 cycles each) and is busy with the RC's own triangles, so it is not shared.
+//! cycles. The RC's [`crate::rc::fast_reciprocal::FastReciprocal`] computes the same quotient for the
+//! RC's own triangles (one request per clock, 13 cycles each), so it is not shared.
 //!
 //! Both memories (TdbS: 2^16 records of 424 bits, and the screen-size buffers) are outside the blocks,
 //! behind ports, because they do not fit FPGA block RAM; the testbenches model them.

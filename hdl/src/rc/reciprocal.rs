@@ -1,6 +1,8 @@
 //! `reciprocal`: one reciprocal per triangle (seed 001 eq. 6, Ka = 1/det), as the 25-step restoring
 //! division of `golden::format::reciprocal`: `mant = floor(2^(shift+24) / det)`, `shift = floor(log2 det)`,
 //! so `1/det = mant * 2^-(shift+24)` with `mant` in [2^23, 2^24]. Pipelined: one request per clock.
+//! Since issue 15 item 5 the RC's setup uses [`super::fast_reciprocal`] (13 stations of two steps);
+//! this ten-station unit serves the texture units, whose cycle models are built on its latency.
 //!
 //! ```text
 //!                 +---------------------------------------------+
