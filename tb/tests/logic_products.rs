@@ -195,3 +195,20 @@ fn the_split_products_of_setup_equal_verilogs_multiply_and_keep_the_blocks_of_th
     one::<34, 21, 55, 0, 3>(&root, "texture setup's numerators", 2);
     one::<55, 26, 80, 3, 0>(&root, "texture setup's A and B", 6);
 }
+
+/// The Color Shader's plane product (`PlaneMul`, 40x11: two multiplier blocks and five LUT rows, also
+/// the texture units' `tex_coord`) equals Verilog's `*` on extreme and random operands, in its
+/// hand-written Verilog and in Yosys's ECP5 netlist, and keeps exactly two MULT18X18D. (Until now only
+/// the CS's Verilog replays checked that Verilog, on the operands a few frames happen to produce.)
+#[test]
+fn the_plane_product_of_the_colour_shader_equals_verilogs_multiply_on_two_multiplier_blocks() {
+    if !require_tools("the_plane_product_of_the_colour_shader_equals_verilogs_multiply_on_two_multiplier_blocks", &["iverilog", "vvp", "yosys"]) {
+        return;
+    }
+    let root = workspace_target().join("hdl").join("plane_product");
+    let _ = std::fs::remove_dir_all(&root);
+    let mut m = hdl::cs::plane_mul::PlaneMul::default();
+    m.connect_all();
+    let v = verilog_named(&m, "lp").unwrap();
+    check_blocks("PlaneMul (40x11)", &v, &[random_testbench(40, 11, 51, 2000)], &root, 2);
+}
