@@ -34,10 +34,14 @@
 //! * S6 `Grad`: waits in phase 0 for the reciprocal and multiplies na by its mantissa; phase 1 shifts
 //!   twice that product right by shift (= the product by shift-1) and forms nb*mant; phase 2
 //!   `A = sat40((shifted + 1) >> 1)` (which is `round(na*mant >> shift)`, also for shift 0) and shifts nb*mant; phase 3 B likewise. The shift and the rounding
-//!   are a cycle each since issue 15 item 5 (the one-cycle form was the RC's critical path).
+//!   are a cycle each since issue 15 item 5 (the one-cycle form was the RC's critical path). The
+//!   multiplier's first operand comes from a register (na loaded as the record enters S6, nb at the
+//!   end of phase 0).
 //! * S7 `Plane` (two 40x21 products per cycle): phase 0 A*(128-x0), B*(128-y0); phase 1 their sum, A*X0,
 //!   B*Y0; phase 2 `C = (z0 << 16) + round(sum >> 8)` and A*X0 + B*Y0; phase 3 raw = C + A*X0 + B*Y0 (the
-//!   depth plane's raw value at the box's first pixel) goes into the queue with the record.
+//!   depth plane's raw value at the box's first pixel) goes into the queue with the record. The
+//!   multipliers' operands come straight from registers: A and B from the record, `128 - x0` and
+//!   `128 - y0` formed as the record enters S7, X0 and Y0 loaded at the end of phase 0.
 //!
 //! Handshake, from the registers at the start of a cycle, last stage first: stage k hands its record on
 //! when it has spent its cycles and stage k+1 is empty or hands its own on in the same cycle; S7 when the
@@ -230,6 +234,10 @@ pub struct Setup {
     s6: DFF<SetupRec>,
     s6p: DFF<PlaneIn>,
     g_prod: DFF<Bits<73>>,
+    /// The gradient multiplier's first operand, registered (issue 15 item 5: the phase's choice in
+    /// front of the product was the RC's critical path): na from the record entering S6, nb from the
+    /// end of phase 0 on.
+    ga_op: DFF<Signed<47>>,
     /// The product shifted right by shift + 3 (arithmetic): the gradient before its last bit's rounding.
     g_sh: DFF<Bits<73>>,
     // S7 `Plane`: the record, its phase, the two product registers, their sum, C and the sum of the
@@ -238,6 +246,12 @@ pub struct Setup {
     s7_phase: DFF<Bits<2>>,
     s7: DFF<SetupRec>,
     s7p: DFF<PlaneIn>,
+    /// The plane multipliers' second operands, registered (issue 15 item 5: `128 - x0` and the phase's
+    /// choice in front of the product were the RC's critical path): `128 - x0`, `128 - y0` from the
+    /// record entering S7, then X0, Y0 from the end of phase 0 on. The first operands are A and B
+    /// straight from `s7`.
+    pb_op: DFF<Signed<21>>,
+    qb_op: DFF<Signed<21>>,
     p_prod: DFF<Bits<61>>,
     q_prod: DFF<Bits<61>>,
     p_acc: DFF<Signed<62>>,
@@ -421,7 +435,6 @@ pub struct Setup {
     e_a: Signal<Local, Signed<44>>,
     e_b: Signal<Local, Signed<44>>,
     // S6
-    op_ga: Signal<Local, Signed<47>>,
     op_gb: Signal<Local, Signed<26>>,
     /// The product doubled: the gradient's shift is by `shift - 1`, done as `2*prod >> shift`.
     g_dbl: Signal<Local, Bits<73>>,
@@ -431,10 +444,6 @@ pub struct Setup {
     grad_hi: Signal<Local, Bits<34>>,
     grad: Signal<Local, Signed<40>>,
     // S7
-    ga: Signal<Local, Signed<40>>,
-    gb: Signal<Local, Signed<40>>,
-    op_pb: Signal<Local, Signed<21>>,
-    op_qb: Signal<Local, Signed<21>>,
     off_x: Signal<Local, Signed<21>>,
     off_y: Signal<Local, Signed<21>>,
     pw: Signal<Local, Signed<62>>,
@@ -602,11 +611,14 @@ impl Setup {
             s6: Default::default(),
             s6p: Default::default(),
             g_prod: Default::default(),
+            ga_op: Default::default(),
             g_sh: Default::default(),
             s7_v: Default::default(),
             s7_phase: Default::default(),
             s7: Default::default(),
             s7p: Default::default(),
+            pb_op: Default::default(),
+            qb_op: Default::default(),
             p_prod: Default::default(),
             q_prod: Default::default(),
             p_acc: Default::default(),
@@ -777,7 +789,6 @@ impl Setup {
             dot_b: Default::default(),
             e_a: Default::default(),
             e_b: Default::default(),
-            op_ga: Default::default(),
             op_gb: Default::default(),
             g_dbl: Default::default(),
             shifted: Default::default(),
@@ -785,10 +796,6 @@ impl Setup {
             halved: Default::default(),
             grad_hi: Default::default(),
             grad: Default::default(),
-            ga: Default::default(),
-            gb: Default::default(),
-            op_pb: Default::default(),
-            op_qb: Default::default(),
             off_x: Default::default(),
             off_y: Default::default(),
             pw: Default::default(),
@@ -862,7 +869,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, g_sh, s7_v, s7_phase, s7, s7p, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -1260,13 +1267,11 @@ impl Logic for Setup {
 
         }
         // ---- S6 `Grad`: one 47x26 multiplier ----
-        self.op_ga.next = signed_cast(self.s6p.q.val().na);
         self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.recip.result.data.val().mant));
         if self.s6_phase.q.val() != self.k0_2.val() {
-            self.op_ga.next = signed_cast(self.s6p.q.val().nb);
             self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.s6p.q.val().mant));
         }
-        self.mul_g.a.next = self.op_ga.val();
+        self.mul_g.a.next = self.ga_op.q.val();
         self.mul_g.b.next = self.op_gb.val();
         // The gradient sat40(round(prod / 2^sh)) with sh = shift (A = na * 2^8 * 2^16 / det, and the
         // mantissa's 2^24 is those 2^8 subpixels and 16 fraction bits), in two cycles (issue 15 item 5):
@@ -1304,12 +1309,13 @@ impl Logic for Setup {
         }
 
         // ---- S7 `Plane`: two 40x21 multipliers ----
-        self.ga.next = self.zs40.val();
-        self.gb.next = self.zs40.val();
+        // `128 - x0`, `128 - y0` of the record in S6, for the operand registers as it enters S7.
         self.off_x.next = self.zs21.val();
         self.off_y.next = self.zs21.val();
-        self.op_pb.next = self.zs21.val();
-        self.op_qb.next = self.zs21.val();
+        if self.s6_v.q.val() {
+            self.off_x.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s6p.q.val().x0));
+            self.off_y.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s6p.q.val().y0));
+        }
         self.pw.next = self.zs62.val();
         self.qw.next = self.zs62.val();
         self.p56.next = self.zs56.val();
@@ -1319,17 +1325,6 @@ impl Logic for Setup {
         self.z0_plane.next = self.zs56.val();
         self.raw_now.next = self.zs56.val();
         if self.s7_v.q.val() {
-            self.ga.next = signed_cast(self.s7.q.val().a);
-            self.gb.next = signed_cast(self.s7.q.val().b);
-            self.off_x.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s7p.q.val().x0));
-            self.off_y.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(signed_cast(self.s7p.q.val().y0));
-            // |A| <= 2^39, |128-x0| <= 2^19 + 128, X0 < 2^10: every product fits 61 bits (59 used).
-            self.op_pb.next = self.off_x.val();
-            self.op_qb.next = self.off_y.val();
-            if self.s7_phase.q.val() != self.k0_2.val() {
-                self.op_pb.next = signed_cast(bit_cast::<21, 10>(self.s7.q.val().bx0));
-                self.op_qb.next = signed_cast(bit_cast::<21, 10>(self.s7.q.val().by0));
-            }
             self.pw.next = signed_bit_cast_safe::<62, 61>(signed_cast(self.p_prod.q.val()));
             self.qw.next = signed_bit_cast_safe::<62, 61>(signed_cast(self.q_prod.q.val()));
             self.p56.next = signed_cast(self.p_prod.q.val().get_bits::<56>(0));
@@ -1341,10 +1336,13 @@ impl Logic for Setup {
             self.raw_now.next = self.p_c.q.val() + self.p_s.q.val();
 
         }
-        self.mul_p.a.next = self.ga.val();
-        self.mul_p.b.next = self.op_pb.val();
-        self.mul_q.a.next = self.gb.val();
-        self.mul_q.b.next = self.op_qb.val();
+        // Straight from registers (what the products of an empty S7 are does not matter: they are
+        // kept only while a record walks). |A| <= 2^39, |128-x0| <= 2^19 + 128, X0 < 2^10: every
+        // product fits 61 bits (59 used).
+        self.mul_p.a.next = signed_cast(self.s7.q.val().a);
+        self.mul_p.b.next = self.pb_op.q.val();
+        self.mul_q.a.next = signed_cast(self.s7.q.val().b);
+        self.mul_q.b.next = self.qb_op.q.val();
         // ---- The record queue ----
         self.pop.next = self.rec_ready.val() & (self.q_len.q.val() != self.k0_3.val());
         self.q_after.next = self.q_len.q.val();
@@ -1413,6 +1411,10 @@ impl Logic for Setup {
             self.s7_phase.d.next = self.s7_phase.q.val() + self.k1_2.val();
             self.p_prod.d.next = unsigned_cast(self.mul_p.p.val());
             self.q_prod.d.next = unsigned_cast(self.mul_q.p.val());
+            if self.s7_phase.q.val() == self.k0_2.val() {
+                self.pb_op.d.next = signed_cast(bit_cast::<21, 10>(self.s7.q.val().bx0));
+                self.qb_op.d.next = signed_cast(bit_cast::<21, 10>(self.s7.q.val().by0));
+            }
             if self.s7_phase.q.val() == self.k1_2.val() {
                 self.p_acc.d.next = self.pw.val() + self.qw.val();
             }
@@ -1430,6 +1432,8 @@ impl Logic for Setup {
             self.s7.d.next = self.s6.q.val();
             self.s7p.d.next = self.s6p.q.val();
             self.s7.d.next.b = unsigned_cast(self.grad.val());
+            self.pb_op.d.next = self.off_x.val();
+            self.qb_op.d.next = self.off_y.val();
         }
         // S6: phase 0 takes the reciprocal and forms na*mant; phase 1 shifts it and forms nb*mant;
         // phase 2 rounds A and shifts nb*mant; B is rounded on leaving (phase 3).
@@ -1438,6 +1442,7 @@ impl Logic for Setup {
                 if self.take.val() {
                     self.s6_phase.d.next = self.k1_2.val();
                     self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
+                    self.ga_op.d.next = signed_cast(self.s6p.q.val().nb);
                     self.s6p.d.next.mant = self.recip.result.data.val().mant;
                     self.s6p.d.next.shift = self.recip.result.data.val().shift;
                 }
@@ -1459,6 +1464,7 @@ impl Logic for Setup {
             self.s6_phase.d.next = self.k0_2.val();
             self.s6.d.next = self.s5.q.val();
             self.s6p.d.next = self.s5p.q.val();
+            self.ga_op.d.next = signed_cast(self.s5p.q.val().na);
         }
         // S5, S4, S3: hold.
         if self.leave5.val() {
