@@ -25,7 +25,8 @@
 //! * S2 `Edges` on two dot units (a*b - c*d each), whose products are registered: the products of
 //!   phase k are chosen in phase k and subtracted in phase k+1. Phase 1 E0, E1; phase 2 E2 and
 //!   na = dz10*dy20 - dz20*dy10; phase 3 nb = dz20*dx10 - dz10*dx20. (Four cycles since issue 15
-//!   item 5: choosing, multiplying and subtracting in one cycle was the RC's critical path.)
+//!   item 5: choosing, multiplying and subtracting in one cycle was the RC's critical path.) The
+//!   operands sit in registers that move on with the phases, so no choice stands in front of a product.
 //!   `E = dx*(256*Y0+128-a.y) - dy*(256*X0+128-a.x) - bias` (bias 0 on a top or left edge, else 1).
 //! * S3, S4, S5 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 13, is
 //!   longer than S2's four cycles). S5 is the third since issue 15 item 5: with two, the longer
@@ -184,7 +185,11 @@ pub struct Setup {
     s1_by0: DFF<Bits<10>>,
     s1_by1: DFF<Bits<10>>,
     s1_box_empty: DFF<Bit>,
-    // S2 `Edges`: the record, its phase and the dot units' operands (edge k: la*lb - ra*rb).
+    // S2 `Edges`: the record, its phase and the dot units' operands (edge k: la*lb - ra*rb). The
+    // multipliers read `*0` (unit a) and `*1` (unit b) straight from these registers, which move on
+    // with the phases (issue 15 item 5: the phase's choice in front of the products was the RC's
+    // critical path): from S1 edges 0 and 1; after phase 0 unit a takes edge 2 and unit b na's
+    // operands; after phase 1 unit b takes nb's.
     s2_v: DFF<Bit>,
     s2_phase: DFF<Bits<2>>,
     s2: DFF<SetupRec>,
@@ -420,16 +425,6 @@ pub struct Setup {
     stx_2: Signal<Local, Signed<30>>,
     sty_2: Signal<Local, Signed<30>>,
     // S2
-    op_a0: Signal<Local, Signed<25>>,
-    op_a1: Signal<Local, Signed<21>>,
-    op_a2: Signal<Local, Signed<25>>,
-    op_a3: Signal<Local, Signed<21>>,
-    op_b0: Signal<Local, Signed<25>>,
-    op_b1: Signal<Local, Signed<21>>,
-    op_b2: Signal<Local, Signed<25>>,
-    op_b3: Signal<Local, Signed<21>>,
-    tl_a: Signal<Local, Bit>,
-    tl_b: Signal<Local, Bit>,
     dot_a: Signal<Local, Signed<47>>,
     dot_b: Signal<Local, Signed<47>>,
     e_a: Signal<Local, Signed<44>>,
@@ -775,16 +770,6 @@ impl Setup {
             edxw_2: Default::default(),
             stx_2: Default::default(),
             sty_2: Default::default(),
-            op_a0: Default::default(),
-            op_a1: Default::default(),
-            op_a2: Default::default(),
-            op_a3: Default::default(),
-            op_b0: Default::default(),
-            op_b1: Default::default(),
-            op_b2: Default::default(),
-            op_b3: Default::default(),
-            tl_a: Default::default(),
-            tl_b: Default::default(),
             dot_a: Default::default(),
             dot_b: Default::default(),
             e_a: Default::default(),
@@ -1205,50 +1190,21 @@ impl Logic for Setup {
         self.recip.request.valid.next = self.s1_v.q.val() & self.walk1.val() & self.free2.val();
         self.recip.result.ready.next = self.take.val();
         // ---- S2 `Edges`: two dot units ----
-        self.op_a0.next = self.la0.q.val();
-        self.op_a1.next = self.lb0.q.val();
-        self.op_a2.next = self.ra0.q.val();
-        self.op_a3.next = self.rb0.q.val();
-        self.tl_a.next = self.tl0.q.val();
-        self.op_b0.next = self.la1.q.val();
-        self.op_b1.next = self.lb1.q.val();
-        self.op_b2.next = self.ra1.q.val();
-        self.op_b3.next = self.rb1.q.val();
-        self.tl_b.next = self.tl1.q.val();
-        if self.s2_phase.q.val() != self.k0_2.val() {
-            self.op_a0.next = self.la2.q.val();
-            self.op_a1.next = self.lb2.q.val();
-            self.op_a2.next = self.ra2.q.val();
-            self.op_a3.next = self.rb2.q.val();
-            self.tl_a.next = self.tl2.q.val();
-            // na = dz10*dy20 - dz20*dy10
-            self.op_b0.next = self.n_dz10.q.val();
-            self.op_b1.next = self.n_dy20.q.val();
-            self.op_b2.next = self.n_dz20.q.val();
-            self.op_b3.next = self.n_dy10.q.val();
-        }
-        if self.s2_phase.q.val().get_bit(1) {
-            // nb = dz20*dx10 - dz10*dx20 (phases 2 and 3: the product register keeps nb while S2 waits)
-            self.op_b0.next = self.n_dz20.q.val();
-            self.op_b1.next = self.n_dx10.q.val();
-            self.op_b2.next = self.n_dz10.q.val();
-            self.op_b3.next = self.n_dx20.q.val();
-        }
         // Each multiplier input is driven exactly once per evaluation (Icarus settles only then).
-        self.mul_a0.a.next = self.op_a0.val();
-        self.mul_a0.b.next = self.op_a1.val();
-        self.mul_a1.a.next = self.op_a2.val();
-        self.mul_a1.b.next = self.op_a3.val();
-        self.mul_b0.a.next = self.op_b0.val();
-        self.mul_b0.b.next = self.op_b1.val();
-        self.mul_b1.a.next = self.op_b2.val();
-        self.mul_b1.b.next = self.op_b3.val();
+        self.mul_a0.a.next = self.la0.q.val();
+        self.mul_a0.b.next = self.lb0.q.val();
+        self.mul_a1.a.next = self.ra0.q.val();
+        self.mul_a1.b.next = self.rb0.q.val();
+        self.mul_b0.a.next = self.la1.q.val();
+        self.mul_b0.b.next = self.lb1.q.val();
+        self.mul_b1.a.next = self.ra1.q.val();
+        self.mul_b1.b.next = self.rb1.q.val();
         self.pr_a0.d.next = self.mul_a0.p.val();
         self.pr_a1.d.next = self.mul_a1.p.val();
         self.pr_b0.d.next = self.mul_b0.p.val();
         self.pr_b1.d.next = self.mul_b1.p.val();
-        self.prtl_a.d.next = self.tl_a.val();
-        self.prtl_b.d.next = self.tl_b.val();
+        self.prtl_a.d.next = self.tl0.q.val();
+        self.prtl_b.d.next = self.tl1.q.val();
         self.dot_a.next = self.zs47.val();
         self.dot_b.next = self.zs47.val();
         self.e_a.next = self.zs44.val();
@@ -1496,7 +1452,25 @@ impl Logic for Setup {
         // na; nb on leaving (phase 3).
         if self.s2_v.q.val() & self.walk2.val() & !self.done2.val() {
             self.s2_phase.d.next = self.s2_phase.q.val() + self.k1_2.val();
+            if self.s2_phase.q.val() == self.k0_2.val() {
+                // unit a: E2; unit b: na = dz10*dy20 - dz20*dy10
+                self.la0.d.next = self.la2.q.val();
+                self.lb0.d.next = self.lb2.q.val();
+                self.ra0.d.next = self.ra2.q.val();
+                self.rb0.d.next = self.rb2.q.val();
+                self.tl0.d.next = self.tl2.q.val();
+                self.la1.d.next = self.n_dz10.q.val();
+                self.lb1.d.next = self.n_dy20.q.val();
+                self.ra1.d.next = self.n_dz20.q.val();
+                self.rb1.d.next = self.n_dy10.q.val();
+            }
             if self.s2_phase.q.val() == self.k1_2.val() {
+                // unit b: nb = dz20*dx10 - dz10*dx20 (phases 2 and 3: the product register keeps nb
+                // while S2 waits)
+                self.la1.d.next = self.n_dz20.q.val();
+                self.lb1.d.next = self.n_dx10.q.val();
+                self.ra1.d.next = self.n_dz10.q.val();
+                self.rb1.d.next = self.n_dx20.q.val();
                 self.s2.d.next.e0 = unsigned_cast(self.e_a.val());
                 self.s2.d.next.e1 = unsigned_cast(self.e_b.val());
             }
