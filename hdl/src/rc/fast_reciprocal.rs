@@ -43,6 +43,9 @@ pub struct FastReciprocal {
     // To the requester
     /// The reciprocal, held until taken.
     pub result: StreamOut<RecipResult>,
+    /// The mantissa `result` holds from the next cycle on (the result station's input): lets the
+    /// setup keep a copy of the result in its own operand register (issue 15 item 5).
+    pub next_mant: Signal<Out, Bits<25>>,
 
     /// Normalisation of the request: the divisor's leading one and its index.
     lead: LeadingOne44,
@@ -66,6 +69,7 @@ impl Default for FastReciprocal {
             clock: Default::default(),
             request: Default::default(),
             result: Default::default(),
+            next_mant: Default::default(),
             lead: Default::default(),
             st: Default::default(),
             step: Default::default(),
@@ -238,6 +242,10 @@ impl Logic for FastReciprocal {
         self.result.valid.next = self.st[12].q.val().valid;
         self.result.data.next.mant = self.st[12].q.val().quo;
         self.result.data.next.shift = self.st[12].q.val().shift;
+        self.next_mant.next = self.st[12].q.val().quo;
+        if self.advance.val() {
+            self.next_mant.next = self.step[23].quo_next.val();
+        }
     }
 }
 

@@ -243,6 +243,10 @@ pub struct Setup {
     /// front of the product was the RC's critical path): na from the record entering S6, nb from the
     /// end of phase 0 on.
     ga_op: DFF<Signed<47>>,
+    /// Its second operand, registered: a copy of the reciprocal's result mantissa (loaded from the
+    /// result station's input, `recip.next_mant`), held over the cycle after S6 takes it, when the
+    /// station may already hold the next result: the mantissa for nb*mant in phase 1.
+    gb_op: DFF<Bits<25>>,
     /// The product shifted right by shift + 3 (arithmetic): the gradient before its last bit's rounding.
     g_sh: DFF<Bits<73>>,
     // S7 `Plane`: the record, its phase, the two product registers, their sum, C and the sum of the
@@ -430,7 +434,6 @@ pub struct Setup {
     e_a: Signal<Local, Signed<44>>,
     e_b: Signal<Local, Signed<44>>,
     // S6
-    op_gb: Signal<Local, Signed<26>>,
     /// The product doubled: the gradient's shift is by `shift - 1`, done as `2*prod >> shift`.
     g_dbl: Signal<Local, Bits<73>>,
     shifted: Signal<Local, Bits<73>>,
@@ -607,6 +610,7 @@ impl Setup {
             s6p: Default::default(),
             g_prod: Default::default(),
             ga_op: Default::default(),
+            gb_op: Default::default(),
             g_sh: Default::default(),
             s7_v: Default::default(),
             s7_phase: Default::default(),
@@ -774,7 +778,6 @@ impl Setup {
             dot_b: Default::default(),
             e_a: Default::default(),
             e_b: Default::default(),
-            op_gb: Default::default(),
             g_dbl: Default::default(),
             shifted: Default::default(),
             rounded: Default::default(),
@@ -854,7 +857,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, gb_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -1223,12 +1226,8 @@ impl Logic for Setup {
 
         }
         // ---- S6 `Grad`: one 47x26 multiplier ----
-        self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.recip.result.data.val().mant));
-        if self.s6_phase.q.val() != self.k0_2.val() {
-            self.op_gb.next = signed_cast(bit_cast::<26, 25>(self.s6p.q.val().mant));
-        }
         self.mul_g.a.next = self.ga_op.q.val();
-        self.mul_g.b.next = self.op_gb.val();
+        self.mul_g.b.next = signed_cast(bit_cast::<26, 25>(self.gb_op.q.val()));
         // The gradient sat40(round(prod / 2^sh)) with sh = shift (A = na * 2^8 * 2^16 / det, and the
         // mantissa's 2^24 is those 2^8 subpixels and 16 fraction bits), in two cycles (issue 15 item 5):
         // g_sh = 2*prod >> sh (= prod / 2^(sh-1), exact when sh is 0) from the product
@@ -1391,6 +1390,9 @@ impl Logic for Setup {
             self.pb_op.d.next = self.off_x.val();
             self.qb_op.d.next = self.off_y.val();
         }
+        // The copy of the reciprocal's result (held when S6 takes it, below): in phase 0 it equals
+        // `recip.result`, whose station it mirrors; in phase 1 it is the mantissa taken.
+        self.gb_op.d.next = self.recip.next_mant.val();
         // S6: phase 0 takes the reciprocal and forms na*mant; phase 1 shifts it and forms nb*mant;
         // phase 2 rounds A and shifts nb*mant; B is rounded on leaving (phase 3).
         if self.s6_v.q.val() & self.walk6.val() & !self.done6.val() {
@@ -1399,6 +1401,7 @@ impl Logic for Setup {
                     self.s6_phase.d.next = self.k1_2.val();
                     self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
                     self.ga_op.d.next = signed_cast(self.s6p.q.val().nb);
+                    self.gb_op.d.next = self.gb_op.q.val();
                     self.s6p.d.next.mant = self.recip.result.data.val().mant;
                     self.s6p.d.next.shift = self.recip.result.data.val().shift;
                 }
