@@ -109,7 +109,6 @@ pub struct PlaneIn {
     pub x0: Bits<20>,
     pub y0: Bits<20>,
     pub z0: Bits<24>,
-    pub mant: Bits<25>,
     pub shift: Bits<6>,
 }
 
@@ -1402,7 +1401,6 @@ impl Logic for Setup {
                     self.g_prod.d.next = unsigned_cast(self.mul_g.p.val());
                     self.ga_op.d.next = signed_cast(self.s6p.q.val().nb);
                     self.gb_op.d.next = self.gb_op.q.val();
-                    self.s6p.d.next.mant = self.recip.result.data.val().mant;
                     self.s6p.d.next.shift = self.recip.result.data.val().shift;
                 }
             } else if self.s6_phase.q.val() == self.k1_2.val() {
