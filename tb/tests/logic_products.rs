@@ -4,7 +4,7 @@
 //! and the netlist has no multiplier block. The Rust side of each leaf is checked by the texel filter's
 //! and the texture unit's benches against golden.
 
-use hdl::common::{verilog_named, LerpDeltaLogic, MulLogicU, MulSplitS};
+use hdl::common::{verilog_named, LerpDeltaLogic, MulLogicU, MulPipeS, MulSplitS};
 use rust_hdl::prelude::*;
 use std::path::Path;
 use std::process::Command;
@@ -148,6 +148,12 @@ fn mult18x18d_model() -> String {
 /// first 64 pairs from the extremes and small values of each operand (every combination), the rest
 /// random (`$random` words, as wide as the operand).
 fn random_testbench(wa: usize, wb: usize, wp: usize, n: usize) -> String {
+    operand_testbench(wa, wb, wp, n, false)
+}
+
+/// [`random_testbench`] for a product with a clock (`clocked`, [`MulPipeS`]): before each rising edge
+/// `p` must still be the product of the pair before, after it the product of the new pair.
+fn operand_testbench(wa: usize, wb: usize, wp: usize, n: usize, clocked: bool) -> String {
     let word = |w: usize| format!("{{{}}}", vec!["$random"; w.div_ceil(32)].join(", "));
     let corner = |w: usize, name: &str| {
         format!(
@@ -158,7 +164,7 @@ fn random_testbench(wa: usize, wb: usize, wp: usize, n: usize) -> String {
         )
     };
     format!(
-        "module tb;\n    reg signed [{a}:0] a;\n    reg signed [{b}:0] b;\n    wire signed [{o}:0] p;\n    reg signed [{o}:0] want;\n    integer i, k, bad;\n    lp uut(.a(a), .b(b), .p(p));\n    initial begin\n      bad = 0;\n      for (i = 0; i < {n}; i = i + 1) begin\n        if (i < 64) begin\n          k = i % 8; {ca}\n          k = i / 8; {cb}\n        end else begin\n          a = {ra};\n          b = {rb};\n        end\n        #1;\n        want = a * b;\n        if (p !== want) begin\n          if (bad < 5) $display(\"mismatch at %0d: %0d * %0d got %0d want %0d\", i, a, b, p, want);\n          bad = bad + 1;\n        end\n      end\n      $display(\"checked %0d mismatches %0d\", {n}, bad);\n      $finish;\n    end\nendmodule\n",
+        "module tb;\n    reg signed [{a}:0] a;\n    reg signed [{b}:0] b;\n    wire signed [{o}:0] p;\n    reg signed [{o}:0] want;\n    integer i, k, bad;\n    {inst}\n    initial begin\n      bad = 0;\n      {init}\n      for (i = 0; i < {n}; i = i + 1) begin\n        if (i < 64) begin\n          k = i % 8; {ca}\n          k = i / 8; {cb}\n        end else begin\n          a = {ra};\n          b = {rb};\n        end\n        #1;\n        {before}want = a * b;\n        if (p !== want) begin\n          if (bad < 5) $display(\"mismatch at %0d: %0d * %0d got %0d want %0d\", i, a, b, p, want);\n          bad = bad + 1;\n        end\n      end\n      $display(\"checked %0d mismatches %0d\", {n}, bad);\n      $finish;\n    end\nendmodule\n",
         a = wa - 1,
         b = wb - 1,
         o = wp - 1,
@@ -166,6 +172,13 @@ fn random_testbench(wa: usize, wb: usize, wp: usize, n: usize) -> String {
         cb = corner(wb, "b"),
         ra = word(wa),
         rb = word(wb),
+        inst = if clocked { "reg clock;\n    lp uut(.clock(clock), .a(a), .b(b), .p(p));" } else { "lp uut(.a(a), .b(b), .p(p));" },
+        init = if clocked { "clock = 0; a = 0; b = 0; #1 clock = 1; #1 clock = 0; want = 0;" } else { "" },
+        before = if clocked {
+            "if (p !== want) begin if (bad < 5) $display(\"changed before the edge at %0d: got %0d want %0d\", i, p, want); bad = bad + 1; end\n        clock = 1; #1 clock = 0;\n        "
+        } else {
+            ""
+        },
     )
 }
 
@@ -211,4 +224,25 @@ fn the_plane_product_of_the_colour_shader_equals_verilogs_multiply_on_two_multip
     m.connect_all();
     let v = verilog_named(&m, "lp").unwrap();
     check_blocks("PlaneMul (40x11)", &v, &[random_testbench(40, 11, 51, 2000)], &root, 2);
+}
+
+/// The pipelined products (`MulPipeS`: partial products registered, their sum in the next cycle; issue
+/// 15 item 5): each shape equals Verilog's `*` of the operands at the last rising edge (and not before
+/// it), on extreme and random operands, in the generated Verilog and in Yosys's ECP5 netlist, on as
+/// many MULT18X18D as pairs of pieces.
+#[test]
+fn the_pipelined_products_equal_verilogs_multiply_one_edge_later_on_one_block_per_pair_of_pieces() {
+    if !require_tools("the_pipelined_products_equal_verilogs_multiply_one_edge_later_on_one_block_per_pair_of_pieces", &["iverilog", "vvp", "yosys"]) {
+        return;
+    }
+    let root = workspace_target().join("hdl").join("pipe_products");
+    let _ = std::fs::remove_dir_all(&root);
+    fn one<const A: usize, const B: usize, const P: usize, const KA: usize>(root: &Path, what: &str, blocks: usize) {
+        let mut m = MulPipeS::<A, B, P, KA>::default();
+        m.connect_all();
+        let v = verilog_named(&m, "lp").unwrap();
+        let name = format!("MulPipeS<{A}, {B}, {P}, {KA}> ({what})");
+        check_blocks(&name, &v, &[operand_testbench(A, B, P, 1000, true)], &root.join(format!("p{A}x{B}_{KA}")), blocks);
+    }
+    one::<40, 26, 64, 5>(&root, "colour setup's A and B", 4);
 }

@@ -88,6 +88,88 @@ pub fn split_product_verilog(a: usize, b: usize, p: usize, ka: usize, kb: usize)
     v
 }
 
+/// Signed A x B -> P bits over one clock edge: `p` is the product of the operands `a` and `b` held at
+/// the last rising edge of `clock` (latency 1, a new product every cycle). In Verilog the partial
+/// products are registered and only their shifted sum is combinational ([`pipe_product_verilog`]): the
+/// low `KA` bits of `a` times `b` in logic, and the rest of `a` and all of `b` cut into 17-bit unsigned
+/// pieces under one signed top piece of at most 18 bits, each pair on one MULT18X18D. Setup's products
+/// were a register, a multiplier block and the sum of its partials in one cycle, 8-9 ns of logic and
+/// 10-12 ns of routing on the ECP5 (issue 15 item 5): here the block's output ends the cycle. The
+/// Rust simulation registers the exact product, which the partials' sum equals modulo 2^P; the Verilog
+/// is checked against `*` one edge later under Icarus and on Yosys's ECP5 netlist
+/// (`tb/tests/logic_products.rs`).
+#[derive(LogicBlock, Default)]
+pub struct MulPipeS<const A: usize, const B: usize, const P: usize, const KA: usize> {
+    pub clock: Signal<In, Clock>,
+    pub a: Signal<In, Signed<A>>,
+    pub b: Signal<In, Signed<B>>,
+    pub p: Signal<Out, Signed<P>>,
+}
+
+impl<const A: usize, const B: usize, const P: usize, const KA: usize> Logic for MulPipeS<A, B, P, KA> {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            let prod = to_i128(self.a.val()).wrapping_mul(to_i128(self.b.val()));
+            self.p.next = from_i128::<P>(prod);
+        }
+    }
+    fn connect(&mut self) {
+        self.p.connect();
+    }
+    fn hdl(&self) -> Verilog {
+        Verilog::Custom(pipe_product_verilog(A, B, P, KA))
+    }
+}
+
+/// The pieces [`MulPipeS`] cuts bits `lo..hi` of an operand into, lowest first: (lowest bit, width,
+/// signed). 17-bit unsigned pieces (18 bits with a zero on top, one MULT18X18D operand) while more than
+/// 18 bits are left, then the signed rest.
+fn product_pieces(lo: usize, hi: usize) -> Vec<(usize, usize, bool)> {
+    let mut v = Vec::new();
+    let mut at = lo;
+    while hi - at > 18 {
+        v.push((at, 17, false));
+        at += 17;
+    }
+    v.push((at, hi - at, true));
+    v
+}
+
+/// The Verilog of [`MulPipeS`]: one registered 18x18 (or narrower) signed product per pair of pieces,
+/// the low `ka` bits of `a` times `b` as a registered sum of shifted copies, and `p` their shifted sum.
+pub fn pipe_product_verilog(a: usize, b: usize, p: usize, ka: usize) -> String {
+    assert!(ka < a && p >= a.max(b) && p <= a + b, "pipelined product {a}x{b} into {p} bits, {ka} low bits in logic");
+    let (pa, pb) = (product_pieces(ka, a), product_pieces(0, b));
+    let mut v = String::new();
+    let piece = |name: &str, port: &str, k: usize, (lo, w, signed): (usize, usize, bool)| -> (String, usize) {
+        if signed {
+            (format!("wire signed [{}:0] {name}{k} = {port}[{}:{lo}];\n", w - 1, lo + w - 1), w)
+        } else {
+            (format!("wire signed [{w}:0] {name}{k} = {{1'b0, {port}[{}:{lo}]}};\n", lo + w - 1), w + 1)
+        }
+    };
+    let wa: Vec<usize> = pa.iter().enumerate().map(|(k, &x)| { let (d, w) = piece("pa", "a", k, x); v += &d; w }).collect();
+    let wb: Vec<usize> = pb.iter().enumerate().map(|(k, &x)| { let (d, w) = piece("pb", "b", k, x); v += &d; w }).collect();
+    let mut regs = String::new();
+    let mut terms = Vec::new();
+    for (i, &(la, _, _)) in pa.iter().enumerate() {
+        for (j, &(lb, _, _)) in pb.iter().enumerate() {
+            v += &format!("reg signed [{}:0] pp{i}_{j};\n", wa[i] + wb[j] - 1);
+            regs += &format!("    pp{i}_{j} <= pa{i} * pb{j};\n");
+            terms.push(format!("(pp{i}_{j} <<< {})", la + lb));
+        }
+    }
+    if ka > 0 {
+        let w = ka + b;
+        let rows: Vec<String> = (0..ka).map(|i| format!("(a[{i}] ? (bx <<< {i}) : {w}'sd0)")).collect();
+        v += &format!("wire signed [{}:0] bx = b;\nwire signed [{}:0] lb = {};\nreg signed [{}:0] lbr;\n", w - 1, w - 1, rows.join(" + "), w - 1);
+        regs += "    lbr <= lb;\n";
+        terms.push("lbr".to_string());
+    }
+    v += &format!("always @(posedge clock) begin\n{regs}end\nalways @(*) p = {};", terms.join(" + "));
+    v
+}
+
 /// The Verilog of an unsigned product in logic: one sum of B partial products (`a` shifted by i where
 /// bit i of `b` is set, each extended to P bits by the context), so that Yosys builds an adder tree of
 /// LUTs (its `$macc` mapping) instead of a `$mul` that `synth_ecp5` would put on a MULT18X18D. The
@@ -189,6 +271,33 @@ mod tests {
             assert!(simulate(&mut m, 10));
             assert_eq!(to_i128(m.p.val()), a as i128 * b as i128);
         }
+    }
+
+    #[test]
+    fn the_pipelined_product_is_the_product_of_the_operands_at_the_last_edge() {
+        let mut m = MulPipeS::<40, 26, 66, 5>::default();
+        m.connect_all();
+        let pairs = [(-(1i64 << 39), -(1i64 << 25)), ((1 << 39) - 1, -(1 << 25)), (-12345, 678), (7, -1)];
+        let mut last = 0i128;
+        for (a, b) in pairs {
+            m.a.next = from_i64::<40>(a);
+            m.b.next = from_i64::<26>(b);
+            m.clock.next = Clock::from(false);
+            assert!(simulate(&mut m, 10));
+            // Before the edge: still the product of the pair before.
+            assert_eq!(to_i128(m.p.val()), last);
+            m.clock.next = Clock::from(true);
+            assert!(simulate(&mut m, 10));
+            last = a as i128 * b as i128;
+            assert_eq!(to_i128(m.p.val()), last);
+        }
+    }
+
+    #[test]
+    fn the_pipelined_product_cuts_its_operands_into_pieces_of_one_multiplier_block() {
+        assert_eq!(product_pieces(5, 40), vec![(5, 17, false), (22, 18, true)]);
+        assert_eq!(product_pieces(0, 26), vec![(0, 17, false), (17, 9, true)]);
+        assert_eq!(product_pieces(0, 18), vec![(0, 18, true)]);
     }
 
     #[test]
