@@ -151,8 +151,9 @@ fn random_testbench(wa: usize, wb: usize, wp: usize, n: usize) -> String {
     operand_testbench(wa, wb, wp, n, false)
 }
 
-/// [`random_testbench`] for a product with a clock (`clocked`, [`MulPipeS`]): before each rising edge
-/// `p` must still be the product of the pair before, after it the product of the new pair.
+/// [`random_testbench`] for a product with a clock and an enable (`clocked`, [`MulPipeS`]): before each
+/// rising edge `p` must still be the product of the pair before, after it the product of the new pair,
+/// or of the pair before when `ce` was low at the edge (every seventh).
 fn operand_testbench(wa: usize, wb: usize, wp: usize, n: usize, clocked: bool) -> String {
     let word = |w: usize| format!("{{{}}}", vec!["$random"; w.div_ceil(32)].join(", "));
     let corner = |w: usize, name: &str| {
@@ -172,10 +173,11 @@ fn operand_testbench(wa: usize, wb: usize, wp: usize, n: usize, clocked: bool) -
         cb = corner(wb, "b"),
         ra = word(wa),
         rb = word(wb),
-        inst = if clocked { "reg clock;\n    lp uut(.clock(clock), .a(a), .b(b), .p(p));" } else { "lp uut(.a(a), .b(b), .p(p));" },
-        init = if clocked { "clock = 0; a = 0; b = 0; #1 clock = 1; #1 clock = 0; want = 0;" } else { "" },
+        inst = if clocked { "reg clock, ce;\n    lp uut(.clock(clock), .ce(ce), .a(a), .b(b), .p(p));" } else { "lp uut(.a(a), .b(b), .p(p));" },
+        init = if clocked { "clock = 0; ce = 1; a = 0; b = 0; #1 clock = 1; #1 clock = 0; want = 0;" } else { "" },
+        // Every seventh edge with ce low: the product of the pair before must stand.
         before = if clocked {
-            "if (p !== want) begin if (bad < 5) $display(\"changed before the edge at %0d: got %0d want %0d\", i, p, want); bad = bad + 1; end\n        clock = 1; #1 clock = 0;\n        "
+            "if (p !== want) begin if (bad < 5) $display(\"changed before the edge at %0d: got %0d want %0d\", i, p, want); bad = bad + 1; end\n        ce = (i % 7 != 3); #1 clock = 1; #1 clock = 0;\n        if (ce) "
         } else {
             ""
         },
@@ -237,12 +239,13 @@ fn the_pipelined_products_equal_verilogs_multiply_one_edge_later_on_one_block_pe
     }
     let root = workspace_target().join("hdl").join("pipe_products");
     let _ = std::fs::remove_dir_all(&root);
-    fn one<const A: usize, const B: usize, const P: usize, const KA: usize>(root: &Path, what: &str, blocks: usize) {
-        let mut m = MulPipeS::<A, B, P, KA>::default();
+    fn one<const A: usize, const B: usize, const P: usize, const KA: usize, const KB: usize>(root: &Path, what: &str, blocks: usize) {
+        let mut m = MulPipeS::<A, B, P, KA, KB>::default();
         m.connect_all();
         let v = verilog_named(&m, "lp").unwrap();
-        let name = format!("MulPipeS<{A}, {B}, {P}, {KA}> ({what})");
-        check_blocks(&name, &v, &[operand_testbench(A, B, P, 1000, true)], &root.join(format!("p{A}x{B}_{KA}")), blocks);
+        let name = format!("MulPipeS<{A}, {B}, {P}, {KA}, {KB}> ({what})");
+        check_blocks(&name, &v, &[operand_testbench(A, B, P, 1000, true)], &root.join(format!("p{A}x{B}_{KA}_{KB}")), blocks);
     }
-    one::<40, 26, 64, 5>(&root, "colour setup's A and B", 4);
+    one::<40, 26, 64, 5, 0>(&root, "colour setup's A and B", 4);
+    one::<21, 21, 42, 3, 3>(&root, "the RC's det", 1);
 }

@@ -89,26 +89,29 @@ pub fn split_product_verilog(a: usize, b: usize, p: usize, ka: usize, kb: usize)
 }
 
 /// Signed A x B -> P bits over one clock edge: `p` is the product of the operands `a` and `b` held at
-/// the last rising edge of `clock` (latency 1, a new product every cycle). In Verilog the partial
-/// products are registered and only their shifted sum is combinational ([`pipe_product_verilog`]): the
-/// low `KA` bits of `a` times `b` in logic, and the rest of `a` and all of `b` cut into 17-bit unsigned
-/// pieces under one signed top piece of at most 18 bits, each pair on one MULT18X18D. Setup's products
-/// were a register, a multiplier block and the sum of its partials in one cycle, 8-9 ns of logic and
-/// 10-12 ns of routing on the ECP5 (issue 15 item 5): here the block's output ends the cycle. The
-/// Rust simulation registers the exact product, which the partials' sum equals modulo 2^P; the Verilog
-/// is checked against `*` one edge later under Icarus and on Yosys's ECP5 netlist
-/// (`tb/tests/logic_products.rs`).
+/// the last rising edge of `clock` where `ce` was high (latency 1; with `ce` low the product stands).
+/// In Verilog the partial products are registered and only their shifted sum is combinational
+/// ([`pipe_product_verilog`]): as in [`MulSplitS`], the low `KA` bits of `a` times `b` and the low `KB`
+/// bits of `b` times the high part of `a` in logic, and the high parts cut into 17-bit unsigned pieces
+/// under one signed top piece of at most 18 bits, each pair on one MULT18X18D. Setup's products were a
+/// register, the blocks and the sum of their partials in one cycle, 8-9 ns of logic and 10-12 ns of
+/// routing on the ECP5 (issue 15 item 5): here the blocks' outputs end the cycle. The Rust simulation
+/// registers the exact product, which the partials' sum equals modulo 2^P; the Verilog is checked
+/// against `*` one edge later, and against holding when `ce` is low, under Icarus and on Yosys's ECP5
+/// netlist (`tb/tests/logic_products.rs`).
 #[derive(LogicBlock, Default)]
-pub struct MulPipeS<const A: usize, const B: usize, const P: usize, const KA: usize> {
+pub struct MulPipeS<const A: usize, const B: usize, const P: usize, const KA: usize, const KB: usize> {
     pub clock: Signal<In, Clock>,
+    /// Take the operands at this edge.
+    pub ce: Signal<In, Bit>,
     pub a: Signal<In, Signed<A>>,
     pub b: Signal<In, Signed<B>>,
     pub p: Signal<Out, Signed<P>>,
 }
 
-impl<const A: usize, const B: usize, const P: usize, const KA: usize> Logic for MulPipeS<A, B, P, KA> {
+impl<const A: usize, const B: usize, const P: usize, const KA: usize, const KB: usize> Logic for MulPipeS<A, B, P, KA, KB> {
     fn update(&mut self) {
-        if self.clock.pos_edge() {
+        if self.clock.pos_edge() && self.ce.val() {
             let prod = to_i128(self.a.val()).wrapping_mul(to_i128(self.b.val()));
             self.p.next = from_i128::<P>(prod);
         }
@@ -117,7 +120,7 @@ impl<const A: usize, const B: usize, const P: usize, const KA: usize> Logic for 
         self.p.connect();
     }
     fn hdl(&self) -> Verilog {
-        Verilog::Custom(pipe_product_verilog(A, B, P, KA))
+        Verilog::Custom(pipe_product_verilog(A, B, P, KA, KB))
     }
 }
 
@@ -135,11 +138,12 @@ fn product_pieces(lo: usize, hi: usize) -> Vec<(usize, usize, bool)> {
     v
 }
 
-/// The Verilog of [`MulPipeS`]: one registered 18x18 (or narrower) signed product per pair of pieces,
-/// the low `ka` bits of `a` times `b` as a registered sum of shifted copies, and `p` their shifted sum.
-pub fn pipe_product_verilog(a: usize, b: usize, p: usize, ka: usize) -> String {
-    assert!(ka < a && p >= a.max(b) && p <= a + b, "pipelined product {a}x{b} into {p} bits, {ka} low bits in logic");
-    let (pa, pb) = (product_pieces(ka, a), product_pieces(0, b));
+/// The Verilog of [`MulPipeS`]: one registered 18x18 (or narrower) signed product per pair of pieces
+/// of `ah = a >> ka` and `bh = b >> kb`, the rows of `al * b` and `ah * bl` as registered sums of
+/// shifted copies, and `p` the shifted sum of them all (`a b = ah bh 2^(ka+kb) + ah bl 2^ka + al b`).
+pub fn pipe_product_verilog(a: usize, b: usize, p: usize, ka: usize, kb: usize) -> String {
+    assert!(ka < a && kb < b && p >= a.max(b) && p <= a + b, "pipelined product {a}x{b} into {p} bits, {ka} + {kb} low bits in logic");
+    let (pa, pb) = (product_pieces(ka, a), product_pieces(kb, b));
     let mut v = String::new();
     let piece = |name: &str, port: &str, k: usize, (lo, w, signed): (usize, usize, bool)| -> (String, usize) {
         if signed {
@@ -159,14 +163,34 @@ pub fn pipe_product_verilog(a: usize, b: usize, p: usize, ka: usize) -> String {
             terms.push(format!("(pp{i}_{j} <<< {})", la + lb));
         }
     }
+    // The rows in logic, in registered sums of at most three: Yosys 0.23 maps a sum of five such rows
+    // into 781 LUT4, of three and two into 253 (measured on 5 x 26 bits).
+    let rows = |name: &str, x: &str, sel: &str, n: usize, w: usize, shift: usize| -> (String, String, Vec<String>) {
+        let (mut d, mut r, mut t) = (String::new(), String::new(), Vec::new());
+        for (g, lo) in (0..n).step_by(3).enumerate() {
+            let sum: Vec<String> = (lo..n.min(lo + 3)).map(|i| format!("({sel}[{i}] ? ({x} <<< {i}) : {w}'sd0)")).collect();
+            d += &format!("wire signed [{}:0] {name}{g} = {};\nreg signed [{}:0] {name}r{g};\n", w - 1, sum.join(" + "), w - 1);
+            r += &format!("    {name}r{g} <= {name}{g};\n");
+            t.push(format!("({name}r{g} <<< {shift})"));
+        }
+        (d, r, t)
+    };
+    let mut add = |(d, r, t): (String, String, Vec<String>)| {
+        v += &d;
+        regs += &r;
+        terms.extend(t);
+    };
+    if kb > 0 {
+        let w = a - ka + kb;
+        add((format!("wire signed [{}:0] ahx = $signed(a[{}:{ka}]);\n", w - 1, a - 1), String::new(), Vec::new()));
+        add(rows("hl", "ahx", "b", kb, w, ka));
+    }
     if ka > 0 {
         let w = ka + b;
-        let rows: Vec<String> = (0..ka).map(|i| format!("(a[{i}] ? (bx <<< {i}) : {w}'sd0)")).collect();
-        v += &format!("wire signed [{}:0] bx = b;\nwire signed [{}:0] lb = {};\nreg signed [{}:0] lbr;\n", w - 1, w - 1, rows.join(" + "), w - 1);
-        regs += "    lbr <= lb;\n";
-        terms.push("lbr".to_string());
+        add((format!("wire signed [{}:0] bx = b;\n", w - 1), String::new(), Vec::new()));
+        add(rows("lb", "bx", "a", ka, w, 0));
     }
-    v += &format!("always @(posedge clock) begin\n{regs}end\nalways @(*) p = {};", terms.join(" + "));
+    v += &format!("always @(posedge clock) if (ce) begin\n{regs}end\nalways @(*) p = {};", terms.join(" + "));
     v
 }
 
@@ -275,13 +299,14 @@ mod tests {
 
     #[test]
     fn the_pipelined_product_is_the_product_of_the_operands_at_the_last_edge() {
-        let mut m = MulPipeS::<40, 26, 66, 5>::default();
+        let mut m = MulPipeS::<40, 26, 66, 5, 0>::default();
         m.connect_all();
         let pairs = [(-(1i64 << 39), -(1i64 << 25)), ((1 << 39) - 1, -(1 << 25)), (-12345, 678), (7, -1)];
         let mut last = 0i128;
         for (a, b) in pairs {
             m.a.next = from_i64::<40>(a);
             m.b.next = from_i64::<26>(b);
+            m.ce.next = true;
             m.clock.next = Clock::from(false);
             assert!(simulate(&mut m, 10));
             // Before the edge: still the product of the pair before.
@@ -291,6 +316,14 @@ mod tests {
             last = a as i128 * b as i128;
             assert_eq!(to_i128(m.p.val()), last);
         }
+        // With ce low an edge leaves the product.
+        m.a.next = from_i64::<40>(3);
+        m.ce.next = false;
+        m.clock.next = Clock::from(false);
+        assert!(simulate(&mut m, 10));
+        m.clock.next = Clock::from(true);
+        assert!(simulate(&mut m, 10));
+        assert_eq!(to_i128(m.p.val()), last);
     }
 
     #[test]
