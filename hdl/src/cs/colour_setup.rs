@@ -35,8 +35,10 @@
 //!   and keeps vertex 0, so the planes use the numerators negated when det < 0 and |det|.
 //! * Cycles 6-30: the 25 restoring steps (`golden::format::reciprocal`), one per cycle, three in
 //!   station 2, four in each of stations 3-7, two in station 8: mant = quotient, valid from cycle 31.
-//! * Cycles 33-35: A and B of R, G, B on two 40x26 multipliers; rounded, shifted and saturated
-//!   (`plane_round`) two cycles later (35-37). det == 0 (never sent by the host: the RC does not flag
+//! * Cycles 33-35: A and B of R, G, B on two pipelined 40x26 multipliers (`MulPipeS`), their operands
+//!   registered in 32-34 and their sums in 34-36 (the blocks and the sum of their partial products in
+//!   one cycle were the chipset's critical path, issue 15 item 5); rounded, shifted and saturated
+//!   (`plane_round`) in 35-37. det == 0 (never sent by the host: the RC does not flag
 //!   a zero-area triangle visible) gives A = B = 0, so C is the constant vertex-0 value.
 //! * Cycles 36-38: A*(128-x0) and B*(128-y0) of R, G, B on two 40x21 multipliers; C two cycles later
 //!   (38-40).
@@ -49,7 +51,7 @@
 //! port input: |det| < 2^41 (44-bit divisor), |numerator| < 2^37 (38 bits), |n*mant| < 2^61,
 //! |A*(128-x0)| < 2^59: the 64-bit products and sums never wrap. All payload outputs are 0 while their enable is low.
 
-use crate::common::{signed_bit_cast_safe, DivStep45, LeadingOne44, MulSplitS, StreamIn};
+use crate::common::{signed_bit_cast_safe, DivStep45, LeadingOne44, MulPipeS, MulSplitS, StreamIn};
 use crate::cs::plane_round::PlaneRound;
 use crate::cs::{SetupCommand, TdbsRecord};
 use rust_hdl::prelude::*;
@@ -152,7 +154,7 @@ pub struct ColourSetup {
     pc: [DFF<Signed<64>>; 2],
     lead: LeadingOne44,
     mn: [MulSplitS<21, 21, 42, 3, 3>; 4],
-    mab: [MulSplitS<40, 26, 64, 4, 0>; 2],
+    mab: [MulPipeS<40, 26, 64, 5, 0>; 2],
     mc: [MulSplitS<40, 21, 64, 0, 3>; 2],
     round: [PlaneRound; 2],
     /// One division step per station 2..=8 (`step[k]` steps station k + 2).
@@ -201,6 +203,7 @@ pub struct ColourSetup {
     sn_b: Signal<Local, Signed<38>>,
     wn_a: Signal<Local, Signed<40>>,
     wn_b: Signal<Local, Signed<40>>,
+    neg_ab: Signal<Local, Bit>,
     ab_a: Signal<Local, Bits<40>>,
     ab_b: Signal<Local, Bits<40>>,
     ca: Signal<Local, Bits<40>>,
@@ -347,6 +350,7 @@ impl Default for ColourSetup {
             sn_b: Default::default(),
             wn_a: Default::default(),
             wn_b: Default::default(),
+            neg_ab: Default::default(),
             ab_a: Default::default(),
             ab_b: Default::default(),
             ca: Default::default(),
@@ -906,33 +910,45 @@ impl Logic for ColourSetup {
             self.quo[6].d.next = self.step[6].quo_next.val();
         }
 
-        // Cycles 33-35: A and B of R, G, B: n (negated if det < 0) * mant on two multipliers.
-        self.n_a.next = self.na_r[8].q.val();
-        self.n_b.next = self.nb_r[7].q.val();
-        if self.tok.q.val().get_bit(33) {
+        // Cycles 32-34: the operands of A and B of R, G, B: n (negated if det < 0) and mant, into
+        // registers; the two pipelined multipliers register their partial products at the ends of
+        // 33-35 and sum them into `pab` at the ends of 34-36 (issue 15 item 5: operands, blocks and sum in
+        // one cycle were the chipset's critical path). R's operands come from station 8 (cycle 32),
+        // G's and B's from station 9.
+        self.n_a.next = self.na_r[7].q.val();
+        self.n_b.next = self.nb_r[6].q.val();
+        self.neg_ab.next = self.neg[6].q.val();
+        if self.tok.q.val().get_bit(32) {
             self.n_a.next = self.na_g[7].q.val();
             self.n_b.next = self.nb_g[7].q.val();
+            self.neg_ab.next = self.neg[7].q.val();
         }
-        if self.tok.q.val().get_bit(34) {
+        if self.tok.q.val().get_bit(33) {
             self.n_a.next = self.na_b[7].q.val();
             self.n_b.next = self.nb_b[7].q.val();
+            self.neg_ab.next = self.neg[7].q.val();
         }
         self.sn_a.next = signed_cast(self.n_a.val());
         self.sn_b.next = signed_cast(self.n_b.val());
         self.wn_a.next = signed_bit_cast_safe::<40, 38>(self.sn_a.val());
         self.wn_b.next = signed_bit_cast_safe::<40, 38>(self.sn_b.val());
-        if self.neg[7].q.val() {
+        if self.neg_ab.val() {
             self.wn_a.next = self.k0_40s.val() - signed_bit_cast_safe::<40, 38>(self.sn_a.val());
             self.wn_b.next = self.k0_40s.val() - signed_bit_cast_safe::<40, 38>(self.sn_b.val());
         }
         self.opab_n[0].d.next = self.wn_a.val();
         self.opab_n[1].d.next = self.wn_b.val();
-        self.opab_m.d.next = signed_cast(bit_cast::<26, 25>(self.quo[7].q.val()));
+        // The mantissa (final from cycle 31 in station 8) is loaded once and held for the three.
+        if self.tok.q.val().get_bit(31) {
+            self.opab_m.d.next = signed_cast(bit_cast::<26, 25>(self.quo[6].q.val()));
+        }
         self.sh_ab1.d.next = bit_cast::<7, 6>(self.shift[7].q.val());
         self.z_ab1.d.next = self.zero[7].q.val();
         self.sh_ab2.d.next = self.sh_ab1.q.val();
         self.z_ab2.d.next = self.z_ab1.q.val();
         for u in 0..2 {
+            self.mab[u].clock.next = self.clock.val();
+            self.mab[u].ce.next = true;
             self.mab[u].a.next = self.opab_n[u].q.val();
             self.mab[u].b.next = self.opab_m.q.val();
             self.pab[u].d.next = self.mab[u].p.val();
