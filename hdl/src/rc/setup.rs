@@ -17,7 +17,9 @@
 //! Each stage holds one record (docs/rc.md, "Setup"; `golden::cycle::rc` models the same schedule).
 //! A drawn triangle spends 1, 1, 4, 1, 1, 1, 4 and 4 cycles in S0..S7 when nothing waits; any other
 //! command (frame start, end of frame, a culled or empty-box triangle) one cycle in each.
-//! * S0 `Det`: det = dx10*dy20 - dx20*dy10 (two 21x21 products); the clamped bounding box
+//! * S0 `Det`: det = dx10*dy20 - dx20*dy10 (two pipelined 21x21 products, `MulPipeS`: their blocks
+//!   and rows take the deltas of the command port at the edge where S0 takes the command, so S0 only
+//!   sums the registered partial products; issue 15 item 5); the clamped bounding box
 //!   `[(min+127)>>8, (max-128)>>8]`.
 //! * S1 `Order`: zero area / cull decision from det's sign, the cull mode and the front face;
 //!   canonical order (swap vertices 1 and 2 if det < 0); all three edges' multiplier operands, fill-rule
@@ -59,7 +61,7 @@
 
 use super::fast_reciprocal::FastReciprocal;
 use super::RcCommand;
-use crate::common::{signed_bit_cast_safe, MulS, MulSplitS, StreamIn};
+use crate::common::{signed_bit_cast_safe, MulPipeS, MulS, MulSplitS, StreamIn};
 use rust_hdl::prelude::*;
 
 /// Record kinds handed to the traversal.
@@ -158,9 +160,10 @@ pub struct Setup {
 
     // Children
     recip: FastReciprocal,
-    /// S0: det's two products.
-    mul_d0: MulSplitS<21, 21, 42, 3, 3>,
-    mul_d1: MulSplitS<21, 21, 42, 3, 3>,
+    /// S0: det's two products, pipelined: their partial products are taken from the command port as
+    /// S0 takes the command, and summed while S0 holds it.
+    mul_d0: MulPipeS<21, 21, 42, 3, 3>,
+    mul_d1: MulPipeS<21, 21, 42, 3, 3>,
     /// S2: two dot units, a0*b0 - a1*b1 and c0*d0 - c1*d1.
     mul_a0: MulSplitS<25, 21, 46, 0, 3>,
     mul_a1: MulSplitS<25, 21, 46, 0, 3>,
@@ -311,6 +314,12 @@ pub struct Setup {
     v1y: Signal<Local, Signed<20>>,
     v2x: Signal<Local, Signed<20>>,
     v2y: Signal<Local, Signed<20>>,
+    c0x: Signal<Local, Signed<20>>,
+    c0y: Signal<Local, Signed<20>>,
+    c1x: Signal<Local, Signed<20>>,
+    c1y: Signal<Local, Signed<20>>,
+    c2x: Signal<Local, Signed<20>>,
+    c2y: Signal<Local, Signed<20>>,
     dx10: Signal<Local, Signed<21>>,
     dy10: Signal<Local, Signed<21>>,
     dx20: Signal<Local, Signed<21>>,
@@ -661,6 +670,12 @@ impl Setup {
             v1y: Default::default(),
             v2x: Default::default(),
             v2y: Default::default(),
+            c0x: Default::default(),
+            c0y: Default::default(),
+            c1x: Default::default(),
+            c1y: Default::default(),
+            c2x: Default::default(),
+            c2y: Default::default(),
             dx10: Default::default(),
             dy10: Default::default(),
             dx20: Default::default(),
@@ -1038,10 +1053,6 @@ impl Logic for Setup {
         self.v1y.next = self.zs20.val();
         self.v2x.next = self.zs20.val();
         self.v2y.next = self.zs20.val();
-        self.dx10.next = self.zs21.val();
-        self.dy10.next = self.zs21.val();
-        self.dx20.next = self.zs21.val();
-        self.dy20.next = self.zs21.val();
         self.det.next = self.zs44.val();
         if self.s0_v.q.val() {
             self.v0x.next = signed_cast(self.s0.q.val().x0);
@@ -1050,12 +1061,38 @@ impl Logic for Setup {
             self.v1y.next = signed_cast(self.s0.q.val().y1);
             self.v2x.next = signed_cast(self.s0.q.val().x2);
             self.v2y.next = signed_cast(self.s0.q.val().y2);
-            self.dx10.next = signed_bit_cast_safe::<21, 20>(self.v1x.val()) - signed_bit_cast_safe::<21, 20>(self.v0x.val());
-            self.dy10.next = signed_bit_cast_safe::<21, 20>(self.v1y.val()) - signed_bit_cast_safe::<21, 20>(self.v0y.val());
-            self.dx20.next = signed_bit_cast_safe::<21, 20>(self.v2x.val()) - signed_bit_cast_safe::<21, 20>(self.v0x.val());
-            self.dy20.next = signed_bit_cast_safe::<21, 20>(self.v2y.val()) - signed_bit_cast_safe::<21, 20>(self.v0y.val());
             self.det.next = signed_bit_cast_safe::<44, 42>(self.mul_d0.p.val()) - signed_bit_cast_safe::<44, 42>(self.mul_d1.p.val());
         }
+        // det's products start on the command port: the multipliers take their operands at the edge
+        // where S0 takes the command (issue 15 item 5: S0's deltas, products and difference in one cycle
+        // were the chipset's critical path), so S0 only sums the partial products. (Evaluated only while
+        // a command is offered, for the Rust simulation.)
+        self.c0x.next = self.zs20.val();
+        self.c0y.next = self.zs20.val();
+        self.c1x.next = self.zs20.val();
+        self.c1y.next = self.zs20.val();
+        self.c2x.next = self.zs20.val();
+        self.c2y.next = self.zs20.val();
+        self.dx10.next = self.zs21.val();
+        self.dy10.next = self.zs21.val();
+        self.dx20.next = self.zs21.val();
+        self.dy20.next = self.zs21.val();
+        if self.cmd.valid.val() {
+            self.c0x.next = signed_cast(self.cmd.data.val().x0);
+            self.c0y.next = signed_cast(self.cmd.data.val().y0);
+            self.c1x.next = signed_cast(self.cmd.data.val().x1);
+            self.c1y.next = signed_cast(self.cmd.data.val().y1);
+            self.c2x.next = signed_cast(self.cmd.data.val().x2);
+            self.c2y.next = signed_cast(self.cmd.data.val().y2);
+            self.dx10.next = signed_bit_cast_safe::<21, 20>(self.c1x.val()) - signed_bit_cast_safe::<21, 20>(self.c0x.val());
+            self.dy10.next = signed_bit_cast_safe::<21, 20>(self.c1y.val()) - signed_bit_cast_safe::<21, 20>(self.c0y.val());
+            self.dx20.next = signed_bit_cast_safe::<21, 20>(self.c2x.val()) - signed_bit_cast_safe::<21, 20>(self.c0x.val());
+            self.dy20.next = signed_bit_cast_safe::<21, 20>(self.c2y.val()) - signed_bit_cast_safe::<21, 20>(self.c0y.val());
+        }
+        self.mul_d0.clock.next = self.clock.val();
+        self.mul_d1.clock.next = self.clock.val();
+        self.mul_d0.ce.next = self.cmd.valid.val() & self.cmd.ready.val();
+        self.mul_d1.ce.next = self.cmd.valid.val() & self.cmd.ready.val();
         self.mul_d0.a.next = self.dx10.val();
         self.mul_d0.b.next = self.dy20.val();
         self.mul_d1.a.next = self.dx20.val();
