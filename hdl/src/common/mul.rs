@@ -165,8 +165,9 @@ pub fn pipe_product_verilog(a: usize, b: usize, p: usize, ka: usize, kb: usize) 
     }
     // The rows in logic, in registered sums of at most three: Yosys 0.23 maps a sum of five such rows
     // into 781 LUT4, of three and two into 253 (measured on 5 x 26 bits).
-    let rows = |name: &str, x: &str, sel: &str, n: usize, w: usize, shift: usize| -> (String, String, Vec<String>) {
-        let (mut d, mut r, mut t) = (String::new(), String::new(), Vec::new());
+    // `x` (declared by `decl`) times the bits of `sel` below `n`, as rows `w` bits wide.
+    let rows = |decl: String, name: &str, x: &str, sel: &str, n: usize, w: usize, shift: usize| -> (String, String, Vec<String>) {
+        let (mut d, mut r, mut t) = (decl, String::new(), Vec::new());
         for (g, lo) in (0..n).step_by(3).enumerate() {
             let sum: Vec<String> = (lo..n.min(lo + 3)).map(|i| format!("({sel}[{i}] ? ({x} <<< {i}) : {w}'sd0)")).collect();
             d += &format!("wire signed [{}:0] {name}{g} = {};\nreg signed [{}:0] {name}r{g};\n", w - 1, sum.join(" + "), w - 1);
@@ -182,13 +183,11 @@ pub fn pipe_product_verilog(a: usize, b: usize, p: usize, ka: usize, kb: usize) 
     };
     if kb > 0 {
         let w = a - ka + kb;
-        add((format!("wire signed [{}:0] ahx = $signed(a[{}:{ka}]);\n", w - 1, a - 1), String::new(), Vec::new()));
-        add(rows("hl", "ahx", "b", kb, w, ka));
+        add(rows(format!("wire signed [{}:0] ahx = $signed(a[{}:{ka}]);\n", w - 1, a - 1), "hl", "ahx", "b", kb, w, ka));
     }
     if ka > 0 {
         let w = ka + b;
-        add((format!("wire signed [{}:0] bx = b;\n", w - 1), String::new(), Vec::new()));
-        add(rows("lb", "bx", "a", ka, w, 0));
+        add(rows(format!("wire signed [{}:0] bx = b;\n", w - 1), "lb", "bx", "a", ka, w, 0));
     }
     v += &format!("always @(posedge clock) if (ce) begin\n{regs}end\nalways @(*) p = {};", terms.join(" + "));
     v
