@@ -3,18 +3,20 @@
 // `bash scripts/formal.sh rc_z_test`; see docs/verification.md.
 //
 // The Z-buffer and the I-buffer are modelled at one solver-chosen address A (any other address
-// returns arbitrary words): a synchronous read issued with each token returns, one cycle later, the
-// word held before the writes of that edge, as the external memories do. Tokens are arbitrary.
+// returns arbitrary words): a synchronous read on the stage's read port (`z_re`, `z_rd_addr`) returns,
+// one cycle later, the word held before the writes of that edge, as the external memories do. Tokens
+// are arbitrary; a token is registered in F0 (which issues its read) and decided on in F1.
 // Assumed: a token that pushes a result (a result token, or a fragment marked last) is issued only
 // while `result_free`; a fragment's triangle index is not 0 (the background index; the host's
 // triangles are numbered from 1); the result port's `ready` is arbitrary.
 // Asserted:
+//   * F0 reads exactly for a covered fragment, at its address, and the read port is 0 otherwise;
 //   * the Z-test compares a fragment at A with the depth last written to A, even when that write
 //     happened at the previous edge (the read-after-write forwarding), and with the far plane where
 //     the I-buffer holds the background index 0;
 //   * writes: a passing fragment writes its depth and index at its address, a clear token writes the
 //     far plane and index 0, nothing else writes; Z and I are written together;
-//   * results: valid held until ready and data stable while stalled, never more than three held,
+//   * results: valid held until ready and data stable while stalled, never more than four held,
 //     and the n-th result (n solver-chosen) is the n-th pushed token's index and flags, with
 //     `visible` the OR of the Z-test passes of that triangle's fragments.
 // Reach points (each must be reachable; sby's reachN tasks): the forwarding used on the same pixel
@@ -41,6 +43,8 @@ module rc_z_test_formal #(
     input wire result_ready
 );
     wire result_free;
+    wire z_re;
+    wire [19:0] z_rd_addr;
     reg [23:0] z_rd_data = 24'd0;
     reg [15:0] i_rd_data = 16'd0;
     wire z_we, i_we;
@@ -51,7 +55,7 @@ module rc_z_test_formal #(
     wire result_valid;
 
     rc$z_test dut (
-        .clock(clock), .tok(tok), .result_free(result_free),
+        .clock(clock), .tok(tok), .result_free(result_free), .z_re(z_re), .z_rd_addr(z_rd_addr),
         .z_rd_data(z_rd_data), .i_rd_data(i_rd_data),
         .z_we(z_we), .z_wr_addr(z_wr_addr), .z_wr_data(z_wr_data),
         .i_we(i_we), .i_wr_addr(i_wr_addr), .i_wr_data(i_wr_data),
@@ -74,8 +78,8 @@ module rc_z_test_formal #(
     wire [23:0] z_now = written ? z_a : z_init;
     wire [15:0] i_now = written ? i_a : i_init;
     always @(posedge clock) begin
-        z_rd_data <= tok[23:4] == A ? z_now : z_other;
-        i_rd_data <= tok[23:4] == A ? i_now : i_other;
+        z_rd_data <= z_re && z_rd_addr == A ? z_now : z_other;
+        i_rd_data <= z_re && z_rd_addr == A ? i_now : i_other;
         if (z_we && z_wr_addr == A) begin
             written <= 1'b1;
             z_a <= z_wr_data;
@@ -83,9 +87,14 @@ module rc_z_test_formal #(
         end
     end
 
-    // ---- The token in the Z-test (F1) and what the memories hold for it.
+    // ---- The token that reads (F0), the token in the Z-test (F1) and what the memories hold for it.
+    reg [86:0] f0 = 87'd0;
     reg [86:0] f1 = 87'd0;
-    always @(posedge clock) f1 <= tok;
+    always @(posedge clock) begin
+        f0 <= tok;
+        f1 <= f0;
+    end
+    wire f0_reads = f0[1:0] == FRAG && f0[2];
     wire [1:0] f1_kind = f1[1:0];
     wire f1_covered = f1[2];
     wire f1_last = f1[3];
@@ -102,8 +111,9 @@ module rc_z_test_formal #(
         if (tok[1:0] == FRAG) assume (tok[83:68] != 16'd0);
     end
 
-    // ---- The Z-test and the writes.
+    // ---- The read, the Z-test and the writes.
     always @(*) begin
+        if (REACH < 0) assert (z_re == f0_reads && z_rd_addr == (f0_reads ? f0[23:4] : 20'd0));
         if (f1_frag && f1_covered && f1_addr == A) if (REACH < 0) assert (z_we == (f1_z < true_old));
         if (z_we) begin
             if (REACH < 0) assert (z_wr_addr == f1_addr && i_we && i_wr_addr == f1_addr);
@@ -118,7 +128,7 @@ module rc_z_test_formal #(
     end
 
     // ---- Results: protocol, depth, order and content (rc_result_queue.vh).
-    `RC_RESULT_QUEUE(f1, z_we, 8'd3)
+    `RC_RESULT_QUEUE(f1, z_we, 8'd4)
 
     // ---- Reach points.
     reg prev_last = 1'b0;
@@ -127,30 +137,31 @@ module rc_z_test_formal #(
     always @(posedge clock) prev_write_a <= z_we && z_wr_addr == A;
 
     // ---- Strengthening invariants (the `prove` task's k-induction), on the stage's registers probed by
-    // their names in the generated Verilog (the .sby's `connect` lines, after `flatten`): F1 is the
-    // harness's token; the forwarding register holds the write of the previous edge, and where that
+    // their names in the generated Verilog (the .sby's `connect` lines, after `flatten`): F0 and F1
+    // are the harness's tokens; the forwarding register holds the write of the previous edge, and where that
     // was at A, A's depth; a read for the token in F1 at A returned A's words unless A was written at
     // the previous edge; A's words mean the far plane wherever its index is the background; the
     // result queue holds pushed - popped results, the k-th from the head being result popped + k,
     // and its `visible` is the harness's OR of the passes.
-    wire [86:0] p_f1;
+    wire [86:0] p_f0, p_f1;
     wire p_fwd_valid;
     wire [19:0] p_fwd_addr;
     wire [23:0] p_fwd_z;
     wire p_visible;
-    wire [19:0] p_q0, p_q1, p_q2;
+    wire [19:0] p_q0, p_q1, p_q2, p_q3;
     wire [2:0] p_len;
     generate if (INDUCT) begin : invariants
         always @(*) if (REACH < 0) begin
-            assert (p_f1 == f1 && p_visible == rq_vis);
+            assert (p_f0 == f0 && p_f1 == f1 && p_visible == rq_vis);
             if (p_fwd_valid && p_fwd_addr == A) assert (written && p_fwd_z == z_a);
             if (prev_write_a) assert (p_fwd_valid && p_fwd_addr == A);
-            if (past_valid && f1_addr == A && !prev_write_a) assert (z_rd_data == z_now && i_rd_data == i_now);
+            if (past_valid && f1_frag && f1_covered && f1_addr == A && !prev_write_a) assert (z_rd_data == z_now && i_rd_data == i_now);
             if (written && i_a == 16'd0) assert (z_a == FAR);
             assert ({5'd0, p_len} == pushed - popped);
             if (p_len > 3'd0 && popped == tracked) assert (p_q0 == tracked_result);
             if (p_len > 3'd1 && popped + 8'd1 == tracked) assert (p_q1 == tracked_result);
             if (p_len > 3'd2 && popped + 8'd2 == tracked) assert (p_q2 == tracked_result);
+            if (p_len > 3'd3 && popped + 8'd3 == tracked) assert (p_q3 == tracked_result);
         end
     end endgenerate
     wire forwarded = prev_write_a && f1_frag && f1_covered && f1_addr == A;
@@ -162,7 +173,7 @@ module rc_z_test_formal #(
         if (REACH == 1 || REACH_SET[1]) reach_1: assert (!(forwarded && prev_last));
         cover (forwarded && (z_we != (f1_z < z_rd_data)));
         if (REACH == 2 || REACH_SET[2]) reach_2: assert (!(forwarded && (z_we != (f1_z < z_rd_data))));
-        cover (pushed - popped == 8'd3);
-        if (REACH == 3 || REACH_SET[3]) reach_3: assert (!(pushed - popped == 8'd3));
+        cover (pushed - popped == 8'd4);
+        if (REACH == 3 || REACH_SET[3]) reach_3: assert (!(pushed - popped == 8'd4));
     end
 endmodule

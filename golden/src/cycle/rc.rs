@@ -51,11 +51,13 @@
 //!   triangle or a frame start, so consecutive walks follow each other with no idle cycle.
 //! * Results (a walk's last token, a culled/empty triangle, end of frame) go through the z-test stage
 //!   into a result queue of [`RESULT_QUEUE`] words. Such a token is issued only when the queue's length
-//!   plus the result in the z-test stage is below [`RESULT_QUEUE`]: otherwise the traversal waits (in the clock that would
+//!   plus the results in the z-test stages (F0, F1) is below [`RESULT_QUEUE`]: otherwise the traversal waits (in the clock that would
 //!   end the walk, or in `Idle` before taking the record). A walk's last token is its last fragment
 //!   when the clock that issues it also ends the walk, else an uncovered end token.
 //!
-//! *Z-test stage* (the cycle after a candidate was issued): `z_rd_data` and `i_rd_data` arrive; the old
+//! *Z-test stages*: F0 (the cycle after a candidate was issued; the traversal's token is registered
+//! there, off the walk's decision) issues the Z and I read of a covered fragment (`z_re`,
+//! `z_rd_addr`). F1 (the cycle after that): `z_rd_data` and `i_rd_data` arrive; the old
 //! depth is 2^24-1 where the I-buffer holds the background index (a pixel no triangle of this frame has
 //! written: its Z word is stale, not cleared), else `z_rd_data`; if the previous cycle wrote the same
 //! address, that written depth is used instead (forwarding, no stall); pass = inside and z < old.
@@ -84,8 +86,9 @@ pub const STAGE_CYCLES_DRAWN: [u8; SETUP_STAGES] = [1, 1, 4, 1, 1, 1, 4, 4];
 pub const RECIP_LATENCY: usize = 13;
 /// Records the queue between setup and traversal holds.
 pub const RECORD_QUEUE: usize = 4;
-/// Results the result queue holds (three: results leave at one per clock with `res_ready` high).
-pub const RESULT_QUEUE: usize = 3;
+/// Results the result queue holds (four: with two tokens in flight, results leave at one per clock
+/// with `res_ready` high).
+pub const RESULT_QUEUE: usize = 4;
 /// Type III: the stages of the visibility test (F1 I-buffer word, F2 TdbV record, F3 regenerated
 /// depth, F4 compare and write), and its result queue, deep enough for a result per clock with four
 /// in flight.
@@ -539,10 +542,10 @@ impl RcModel {
         }
     }
 
-    /// The visibility test's stages holding tokens: Type IV's one, Type III's four.
+    /// The visibility test's stages holding tokens: Type IV's two (F0 reads, F1 decides), Type III's four.
     fn in_flight(&self) -> &[Token] {
         match self.ty {
-            RcType::IV => &self.vis_pipe[..1],
+            RcType::IV => &self.vis_pipe[..2],
             RcType::III => &self.vis_pipe[..],
         }
     }
@@ -563,7 +566,12 @@ impl RcModel {
     /// token's read cannot have seen (forwarding), else the memory's: Type IV the Z word (far where
     /// the I-buffer word read with it is the background), Type III the depth regenerated in F3.
     fn z_test(&self, z_rd_data: u32, i_rd_data: u32) -> (Option<(u32, u32, u32)>, bool) {
-        let missed = &self.hist[..self.in_flight().len()];
+        // The writes the deciding token's read cannot have seen: Type IV's read went out one cycle
+        // before the decision, Type III's four.
+        let missed = match self.ty {
+            RcType::IV => &self.hist[..1],
+            RcType::III => &self.hist[..],
+        };
         match self.deciding() {
             Token::Clear { addr } => (Some((addr, DEPTH_MAX, INDEX_BACKGROUND)), false),
             Token::Frag { inside: true, addr, z, index, .. } => {
@@ -613,7 +621,13 @@ impl RcModel {
             out.res_valid = true;
             out.res = r;
         }
-        if let Token::Frag { inside: true, addr, .. } = tok {
+        // The read: Type IV's from F0 (the token issued in the previous cycle), Type III's I-buffer read
+        // with the token issued now.
+        let reading = match self.ty {
+            RcType::IV => self.vis_pipe[0],
+            RcType::III => tok,
+        };
+        if let Token::Frag { inside: true, addr, .. } = reading {
             out.z_re = true;
             out.z_rd_addr = addr;
         }
@@ -777,9 +791,10 @@ mod tests {
         let (res, _) = run(&mut m, &[t], &mut z, &mut i);
         // Accepted in cycle 0, record ready in cycle SETUP_CYCLES_DRAWN and taken there. The walk:
         // one clock per fragment (3 + 2 + 1), the last of a row ending the row because the window
-        // reaches the box's edge, and one clock for the empty last row: 7 clocks. The last token's
-        // z-test one cycle later, the result in the result queue the cycle after that.
-        assert_eq!(res[0], (SETUP_CYCLES_DRAWN + 7 + 2, RcResult { index: 7, visible: true, ..Default::default() }));
+        // reaches the box's edge, and one clock for the empty last row: 7 clocks. The last token in F0
+        // one cycle later, its z-test in F1 the cycle after, the result in the result queue the cycle
+        // after that.
+        assert_eq!(res[0], (SETUP_CYCLES_DRAWN + 7 + 3, RcResult { index: 7, visible: true, ..Default::default() }));
         assert_eq!(i.iter().filter(|&&x| x == 7).count(), 6);
     }
 
@@ -850,8 +865,8 @@ mod tests {
         assert_eq!(res.len(), 1);
         assert!(res[0].1.eof);
         // Frame accepted in 0, offered to the traversal SETUP_CYCLES_SHORT cycles later, then one clear
-        // token per pixel (32), then the end of frame's result through the z-test and the result queue.
-        assert!(cycles >= 32 + SETUP_CYCLES_SHORT && cycles <= 32 + SETUP_CYCLES_SHORT + 4, "cycles {cycles}");
+        // token per pixel (32), then the end of frame's result through F0, F1 and the result queue.
+        assert!(cycles >= 32 + SETUP_CYCLES_SHORT && cycles <= 32 + SETUP_CYCLES_SHORT + 5, "cycles {cycles}");
     }
 
     #[test]

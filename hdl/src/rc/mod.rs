@@ -38,7 +38,6 @@ pub mod z_test;
 use crate::common::{StreamIn, StreamOut};
 use rust_hdl::prelude::*;
 use front::RcFront;
-use traversal::TOK_FRAG;
 use z_test::ZTest;
 
 /// Command kinds (`RcCommand::kind`); 3 is reserved and acts as a frame start without clear.
@@ -121,8 +120,6 @@ pub struct Rc {
 
     front: RcFront,
     z_test: ZTest,
-    tok_frag: Constant<Bits<2>>,
-    k0_20: Constant<Bits<20>>,
 }
 
 impl Rc {
@@ -147,8 +144,6 @@ impl Rc {
             i_rd_data: Default::default(),
             front: RcFront::new(width, height),
             z_test: ZTest::default(),
-            tok_frag: Constant::new(TOK_FRAG.into()),
-            k0_20: Constant::new(0.into()),
         })
     }
 }
@@ -164,11 +159,8 @@ impl Logic for Rc {
         self.front.result_free.next = self.z_test.result_free.val();
 
         // Memory ports.
-        self.z_re.next = (self.front.tok.val().kind == self.tok_frag.val()) & self.front.tok.val().covered;
-        self.z_rd_addr.next = self.k0_20.val();
-        if self.z_re.val() {
-            self.z_rd_addr.next = self.front.tok.val().addr;
-        }
+        self.z_re.next = self.z_test.z_re.val();
+        self.z_rd_addr.next = self.z_test.z_rd_addr.val();
         self.z_test.z_rd_data.next = self.z_rd_data.val();
         self.z_test.i_rd_data.next = self.i_rd_data.val();
         self.z_we.next = self.z_test.z_we.val();
