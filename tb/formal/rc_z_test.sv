@@ -95,6 +95,7 @@ module rc_z_test_formal #(
         f1 <= f0;
     end
     wire f0_reads = f0[1:0] == FRAG && f0[2];
+    wire f0_pushes = f0[1:0] == RESULT || (f0[1:0] == FRAG && f0[3]);
     wire [1:0] f1_kind = f1[1:0];
     wire f1_covered = f1[2];
     wire f1_last = f1[3];
@@ -138,7 +139,7 @@ module rc_z_test_formal #(
 
     // ---- Strengthening invariants (the `prove` task's k-induction), on the stage's registers probed by
     // their names in the generated Verilog (the .sby's `connect` lines, after `flatten`): F0 and F1
-    // are the harness's tokens; the forwarding register holds the write of the previous edge, and where that
+    // are the harness's tokens, with indices not 0 and their results fitting the queue; the forwarding register holds the write of the previous edge, and where that
     // was at A, A's depth; a read for the token in F1 at A returned A's words unless A was written at
     // the previous edge; A's words mean the far plane wherever its index is the background; the
     // result queue holds pushed - popped results, the k-th from the head being result popped + k,
@@ -153,6 +154,11 @@ module rc_z_test_formal #(
     generate if (INDUCT) begin : invariants
         always @(*) if (REACH < 0) begin
             assert (p_f0 == f0 && p_f1 == f1 && p_visible == rq_vis);
+            // The tokens in F0 and F1 came in under the assumptions: fragments' indices are not 0, and
+            // the results in flight fit the queue.
+            if (f0[1:0] == FRAG) assert (f0[83:68] != 16'd0);
+            if (f1_frag) assert (f1_index != 16'd0);
+            assert ({5'd0, p_len} + (f0_pushes ? 8'd1 : 8'd0) + (rq_pushes ? 8'd1 : 8'd0) <= 8'd4);
             if (p_fwd_valid && p_fwd_addr == A) assert (written && p_fwd_z == z_a);
             if (prev_write_a) assert (p_fwd_valid && p_fwd_addr == A);
             if (past_valid && f1_frag && f1_covered && f1_addr == A && !prev_write_a) assert (z_rd_data == z_now && i_rd_data == i_now);
