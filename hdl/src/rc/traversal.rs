@@ -134,19 +134,16 @@ pub struct Traversal {
     sx3_0: DFF<Signed<44>>,
     sx4_0: DFF<Signed<44>>,
     sx15_0: DFF<Signed<44>>,
-    sx16_0: DFF<Signed<44>>,
     sx1_1: DFF<Signed<44>>,
     sx2_1: DFF<Signed<44>>,
     sx3_1: DFF<Signed<44>>,
     sx4_1: DFF<Signed<44>>,
     sx15_1: DFF<Signed<44>>,
-    sx16_1: DFF<Signed<44>>,
     sx1_2: DFF<Signed<44>>,
     sx2_2: DFF<Signed<44>>,
     sx3_2: DFF<Signed<44>>,
     sx4_2: DFF<Signed<44>>,
     sx15_2: DFF<Signed<44>>,
-    sx16_2: DFF<Signed<44>>,
     sy0: DFF<Signed<44>>,
     sy1: DFF<Signed<44>>,
     sy2: DFF<Signed<44>>,
@@ -328,19 +325,16 @@ impl Traversal {
             sx3_0: Default::default(),
             sx4_0: Default::default(),
             sx15_0: Default::default(),
-            sx16_0: Default::default(),
             sx1_1: Default::default(),
             sx2_1: Default::default(),
             sx3_1: Default::default(),
             sx4_1: Default::default(),
             sx15_1: Default::default(),
-            sx16_1: Default::default(),
             sx1_2: Default::default(),
             sx2_2: Default::default(),
             sx3_2: Default::default(),
             sx4_2: Default::default(),
             sx15_2: Default::default(),
-            sx16_2: Default::default(),
             sy0: Default::default(),
             sy1: Default::default(),
             sy2: Default::default(),
@@ -469,7 +463,7 @@ impl Logic for Traversal {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx16_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx16_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sx16_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
+            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
         );
         if self.state.q.val() == TravState::Walk {
             // ---- The window at (x, y) ----
@@ -763,9 +757,9 @@ impl Logic for Traversal {
                         self.rg2.d.next = self.rm.q.val() > self.k18_10.val();
                         self.rg3.d.next = self.rm.q.val() > self.k19_10.val();
                         self.rg15.d.next = self.rm.q.val() > self.k31_10.val();
-                        self.e0.d.next = self.e0.q.val() + self.sx16_0.q.val();
-                        self.e1.d.next = self.e1.q.val() + self.sx16_1.q.val();
-                        self.e2.d.next = self.e2.q.val() + self.sx16_2.q.val();
+                        self.e0.d.next = self.ew15_0.val() + self.sx1_0.q.val();
+                        self.e1.d.next = self.ew15_1.val() + self.sx1_1.q.val();
+                        self.e2.d.next = self.ew15_2.val() + self.sx1_2.q.val();
                         self.rawh.d.next = self.rawh.q.val() + self.ga16.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k16_20.val();
                     } else {
@@ -821,7 +815,6 @@ impl Logic for Traversal {
             self.sx3_0.d.next = self.rsx2_0.val() + self.rsx1_0.val();
             self.sx4_0.d.next = self.rsx4_0.val();
             self.sx15_0.d.next = self.rsx4_0.val() + self.rsx4_0.val() + self.rsx4_0.val() + self.rsx2_0.val() + self.rsx1_0.val();
-            self.sx16_0.d.next = self.rsx4_0.val() + self.rsx4_0.val() + self.rsx4_0.val() + self.rsx4_0.val();
             self.sy0.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy0.val());
             self.nonpos0.d.next = self.rec_sx0.val().get_bit(29) | (self.rsx1_0.val() == self.ks0_44.val());
             self.e1.d.next = self.rec_e1.val();
@@ -831,7 +824,6 @@ impl Logic for Traversal {
             self.sx3_1.d.next = self.rsx2_1.val() + self.rsx1_1.val();
             self.sx4_1.d.next = self.rsx4_1.val();
             self.sx15_1.d.next = self.rsx4_1.val() + self.rsx4_1.val() + self.rsx4_1.val() + self.rsx2_1.val() + self.rsx1_1.val();
-            self.sx16_1.d.next = self.rsx4_1.val() + self.rsx4_1.val() + self.rsx4_1.val() + self.rsx4_1.val();
             self.sy1.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy1.val());
             self.nonpos1.d.next = self.rec_sx1.val().get_bit(29) | (self.rsx1_1.val() == self.ks0_44.val());
             self.e2.d.next = self.rec_e2.val();
@@ -841,7 +833,6 @@ impl Logic for Traversal {
             self.sx3_2.d.next = self.rsx2_2.val() + self.rsx1_2.val();
             self.sx4_2.d.next = self.rsx4_2.val();
             self.sx15_2.d.next = self.rsx4_2.val() + self.rsx4_2.val() + self.rsx4_2.val() + self.rsx2_2.val() + self.rsx1_2.val();
-            self.sx16_2.d.next = self.rsx4_2.val() + self.rsx4_2.val() + self.rsx4_2.val() + self.rsx4_2.val();
             self.sy2.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy2.val());
             self.nonpos2.d.next = self.rec_sx2.val().get_bit(29) | (self.rsx1_2.val() == self.ks0_44.val());
             self.rawh.d.next = self.rec_raw.val() + self.half.val();
