@@ -47,7 +47,15 @@ while [ $# -gt 0 ]; do
   esac
 done
 if [ ${#harnesses[@]} -eq 0 ]; then
-  for f in tb/formal/*.sby; do harnesses+=("$(basename "$f" .sby)"); done
+  # The longest first, so that the short ones fill the other core (on the 2-core VM, 2026-12-03: rc3
+  # 767 s alone; two at a time colour_setup 499 s, rc 328 s, chipset_tex 225 s, chipset3 177 s).
+  for h in rc3 colour_setup rc chipset_tex chipset3 chipset proof_filter proof_filter2x2 cs_tex; do
+    [ -f "tb/formal/$h.sby" ] && harnesses+=("$h")
+  done
+  for f in tb/formal/*.sby; do
+    h=$(basename "$f" .sby)
+    [[ " ${harnesses[*]} " == *" $h "* ]] || harnesses+=("$h")
+  done
 fi
 
 if [ ! -x /usr/bin/yosys-abc ]; then
@@ -107,8 +115,11 @@ else
   cargo run --release --quiet -- verilog --size 4x3 --out "$out/verilog-4x3" >/dev/null
 fi
 
-failed=()
-for spec in "${harnesses[@]}"; do
+# One harness (HARNESS or HARNESS:TASK): runs sby, prints a line per task and reach point, and writes
+# the tasks that ended otherwise than expected to $out/<harness>.failed (empty when none did).
+run_harness() {
+  local spec=$1 h task_arg rc start dir task status expected verdict trace which mask want have n
+  local label frame point where failed=()
   h=${spec%%:*}
   task_arg=(); [ "$spec" = "$h" ] || task_arg=("${spec#*:}")
   rm -rf "$out/${h}"_*/
@@ -149,7 +160,7 @@ for spec in "${harnesses[@]}"; do
     if [ "$task" = reachall ]; then
       mask=$(sed -n 's/^reachall: chparam .*-set REACH_SET \([0-9]*\) .*/\1/p' "tb/formal/$h.sby")
       want=""; for n in $(seq 0 31); do [ $(( (mask >> n) & 1 )) -eq 0 ] || want+="reach_$n "; done
-      have=$(cut -d' ' -f1 "$dir/engine_0/reach.txt" 2>/dev/null | sort -V | tr '\n' ' ')
+      have=$({ cut -d' ' -f1 "$dir/engine_0/reach.txt" 2>/dev/null || true; } | sort -V | tr '\n' ' ')
       if [ -z "$mask" ] || [ "$have" != "$want" ]; then
         echo "$h reachall: the model's reach points are [${have% }], the task names [${want% }] (REACH_SET ${mask:-missing})"
         failed+=("$h/$task (reach points)")
@@ -173,7 +184,45 @@ for spec in "${harnesses[@]}"; do
   done
   [ $rc -eq 0 ] || [ ${#failed[@]} -gt 0 ] || failed+=("$h (sby exit $rc, see ${out#"$root/"}/$h.log)")
   echo "$h: $((SECONDS - start)) s, log ${out#"$root/"}/$h.log"
+  : > "$out/$h.failed"
+  for n in "${failed[@]}"; do echo "$n" >> "$out/$h.failed"; done
+}
+
+# The harnesses run FORMAL_JOBS at a time (default: one per core). sby runs a harness's tasks side
+# by side, but each is one single-threaded ABC or smtbmc process and the longest often runs alone, so
+# one harness at a time left a core idle for most of a CI run's tail, after the tests. A harness's lines are printed together when it ends. The same
+# harness named twice (two tasks) runs one at a time: its runs share target/formal/<harness>_*.
+jobs_max=${FORMAL_JOBS:-$(nproc)}
+[ "$jobs_max" -ge 1 ] 2>/dev/null || { echo "formal.sh: FORMAL_JOBS must be a positive number, not '$jobs_max'" >&2; exit 2; }
+names=$(for spec in "${harnesses[@]}"; do echo "${spec%%:*}"; done)
+[ "$(echo "$names" | sort | uniq -d)" = "" ] || jobs_max=1
+failed=()
+pid_of=()   # per position in the harness list: its job, then "" once its report is printed
+report() {  # prints the reports of the harnesses that have ended, in the order they were named
+  local i h n
+  for i in "${!pid_of[@]}"; do
+    [ -n "${pid_of[$i]}" ] && ! kill -0 "${pid_of[$i]}" 2>/dev/null || continue
+    wait "${pid_of[$i]}" 2>/dev/null || true
+    pid_of[$i]=""
+    h=${harnesses[$i]%%:*}
+    cat "$out/$h.report"
+    if [ -f "$out/$h.failed" ]; then
+      while read -r n; do failed+=("$n"); done < "$out/$h.failed"
+    else
+      failed+=("$h (formal.sh's run of it ended early, see ${out#"$root/"}/$h.report)")
+    fi
+  done
+}
+for i in "${!harnesses[@]}"; do
+  h=${harnesses[$i]%%:*}
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n || true; report; done
+  rm -f "$out/$h.failed"
+  run_harness "${harnesses[$i]}" > "$out/$h.report" 2>&1 &
+  pid_of[$i]=$!
+  [ "$jobs_max" -gt 1 ] || { wait "${pid_of[$i]}" || true; report; }
 done
+while [ "$(jobs -rp | wc -l)" -gt 0 ]; do wait -n || true; report; done
+report
 
 if [ ${#failed[@]} -gt 0 ]; then
   echo "formal.sh: ${#failed[@]} task(s) ended otherwise than expected: ${failed[*]}" >&2
