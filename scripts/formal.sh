@@ -195,8 +195,9 @@ run_harness() {
 
 # The harnesses run FORMAL_JOBS at a time (default: one per core). sby runs a harness's tasks side
 # by side, but each is one single-threaded ABC or smtbmc process and the longest often runs alone, so
-# one harness at a time left a core idle for most of a CI run's tail, after the tests. A harness's lines are printed together when it ends. The same
-# harness named twice (two tasks) runs one at a time: its runs share target/formal/<harness>_*.
+# one harness at a time left a core idle for most of a CI run's tail, after the tests. A harness's
+# lines are printed together when it ends. The same harness named twice (two tasks) runs one at a
+# time: its runs share target/formal/<harness>_<task>.
 jobs_max=${FORMAL_JOBS:-$(nproc)}
 [ "$jobs_max" -ge 1 ] 2>/dev/null || { echo "formal.sh: FORMAL_JOBS must be a positive number, not '$jobs_max'" >&2; exit 2; }
 names=$(for spec in "${harnesses[@]}"; do echo "${spec%%:*}"; done)
@@ -224,7 +225,6 @@ for i in "${!harnesses[@]}"; do
   rm -f "$out/$h.failed"
   run_harness "${harnesses[$i]}" > "$out/$h.report" 2>&1 &
   pid_of[$i]=$!
-  [ "$jobs_max" -gt 1 ] || { wait "${pid_of[$i]}" || true; report; }
 done
 while [ "$(jobs -rp | wc -l)" -gt 0 ]; do wait -n || true; report; done
 report
