@@ -139,23 +139,15 @@ module rc_z_test_formal #(
 
     // ---- Strengthening invariants (the `prove` task's k-induction), on the stage's registers probed by
     // their names in the generated Verilog (the .sby's `connect` lines, after `flatten`): F0 and F1
-    // are the harness's tokens, with indices not 0 and their results fitting the queue; the forwarding
-    // flags are the previous edge's write seen from F1 (same address; F1's depth below the depth
-    // written; below the far plane), and a write at A at the previous edge wrote A's depth; a read for the token in F1 at A returned A's words unless A was written at
+    // are the harness's tokens, with indices not 0 and their results fitting the queue; the forwarding register holds the write of the previous edge, and where that
+    // was at A, A's depth; a read for the token in F1 at A returned A's words unless A was written at
     // the previous edge; A's words mean the far plane wherever its index is the background; the
     // result queue holds pushed - popped results, the k-th from the head being result popped + k,
     // and its `visible` is the harness's OR of the passes.
     wire [86:0] p_f0, p_f1;
-    wire p_fwd_hit, p_lt_fwd, p_lt_far;
-    // The write of the previous edge, as the harness saw it on the ports.
-    reg prev_we = 1'b0;
-    reg [19:0] prev_waddr = 20'd0;
-    reg [23:0] prev_wdata = 24'd0;
-    always @(posedge clock) begin
-        prev_we <= z_we;
-        prev_waddr <= z_wr_addr;
-        prev_wdata <= z_wr_data;
-    end
+    wire p_fwd_valid;
+    wire [19:0] p_fwd_addr;
+    wire [23:0] p_fwd_z;
     wire p_visible;
     wire [19:0] p_q0, p_q1, p_q2, p_q3;
     wire [2:0] p_len;
@@ -167,11 +159,8 @@ module rc_z_test_formal #(
             if (f0[1:0] == FRAG) assert (f0[83:68] != 16'd0);
             if (f1_frag) assert (f1_index != 16'd0);
             assert ({5'd0, p_len} + (f0_pushes ? 8'd1 : 8'd0) + (rq_pushes ? 8'd1 : 8'd0) <= 8'd4);
-            if (prev_we && prev_waddr == A) assert (written && prev_wdata == z_a);
-            assert (prev_write_a == (prev_we && prev_waddr == A));
-            assert (p_fwd_hit == (prev_we && prev_waddr == f1_addr));
-            if (prev_we) assert (p_lt_fwd == (f1_z < prev_wdata));
-            if (past_valid) assert (p_lt_far == (f1_z < FAR));
+            if (p_fwd_valid && p_fwd_addr == A) assert (written && p_fwd_z == z_a);
+            if (prev_write_a) assert (p_fwd_valid && p_fwd_addr == A);
             if (past_valid && f1_frag && f1_covered && f1_addr == A && !prev_write_a) assert (z_rd_data == z_now && i_rd_data == i_now);
             if (written && i_a == 16'd0) assert (z_a == FAR);
             assert ({5'd0, p_len} == pushed - popped);

@@ -5,10 +5,10 @@
 //!                 +-----------------------------------+
 //!  tok_* -------->| F0 token register                 |--> z_re, z_rd_addr (covered fragments)
 //!                 | F1 token register                 |--> z_we, z_wr_addr, z_wr_data
-//!  z_rd_data ---->| lt = forwarded ? z < last write   |--> i_we, i_wr_addr, i_wr_data
-//!  i_rd_data ---->|   : i_rd_data == 0 ? z < 2^24-1   |--> result (valid/ready/data)
-//!                 |   : z < z_rd_data                 |
-//!                 | pass = covered & lt               |--> result_free
+//!  z_rd_data ---->| old = forwarded ? last write      |--> i_we, i_wr_addr, i_wr_data
+//!  i_rd_data ---->|   : i_rd_data == 0 ? 2^24-1       |--> result (valid/ready/data)
+//!                 |   : z_rd_data                     |
+//!                 | pass = covered & z < old          |--> result_free
 //!  clock -------->| visible |= pass; result queue (4) |
 //!                 +-----------------------------------+
 //! ```
@@ -18,10 +18,9 @@
 //! traversal's walk decision, which was the `rc` top's critical path while the read went out with the
 //! token (issue 15, item 5). A read returns the memory's contents *before* the write of the same edge,
 //! so the only write a fragment can miss is the one performed at the end of the cycle of its read, i.e.
-//! by the token in F1 then. Its outcome for the fragment behind it is decided at that edge, from F0
-//! and F1 (same address, F0's depth below the depth written), and used instead of the compare with
-//! `z_rd_data` when the addresses matched: a fragment of the next triangle on the same pixel sees the
-//! new depth without a stall, and the Z compare starts from `z_rd_data` alone. The I-buffer word read with the depth tells whether the depth
+//! by the token in F1 then. That write (address, data) is kept in a forwarding register and used
+//! instead of `z_rd_data` when the addresses match: a fragment of the next triangle on the same pixel
+//! sees the new depth without a stall. The I-buffer word read with the depth tells whether the depth
 //! is of this frame: where it is the background index (0) the depth counts as 2^24-1, so the Z-buffer
 //! needs no clear when the I-buffer was cleared (by the RC's clear or behind the Color Shader's
 //! scan-out). On a pass, Z and I are written in the same cycle (combinationally from `z_rd_data`). A
@@ -69,16 +68,12 @@ pub struct ZTest {
     /// its read data are here).
     f0: DFF<RcToken>,
     f1: DFF<RcToken>,
-    /// The forwarding, decided a cycle early from F0 and F1 (issue 15 item 5: the address compare and
-    /// the choice of the old depth were in front of the Z compare): `fwd_hit`, the token in F1 is at
-    /// the pixel written at the last edge; `lt_fwd`, its depth is below the depth written there;
-    /// `lt_far`, its depth is below the far plane (for a pixel whose I-buffer word is the background).
-    fwd_hit: DFF<Bit>,
-    lt_fwd: DFF<Bit>,
-    lt_far: DFF<Bit>,
+    fwd_valid: DFF<Bit>,
+    fwd_addr: DFF<Bits<20>>,
+    fwd_z: DFF<Bits<24>>,
     queue: ResultQueue,
 
-    lt: Signal<Local, Bit>,
+    old_z: Signal<Local, Bits<24>>,
     pass: Signal<Local, Bit>,
     push0: Signal<Local, Bits<3>>,
     push1: Signal<Local, Bits<3>>,
@@ -115,15 +110,15 @@ impl Default for ZTest {
             result: Default::default(),
             f0: Default::default(),
             f1: Default::default(),
-            fwd_hit: Default::default(),
-            lt_fwd: Default::default(),
-            lt_far: Default::default(),
+            fwd_valid: Default::default(),
+            fwd_addr: Default::default(),
+            fwd_z: Default::default(),
             queue: ResultQueue::new(),
             k0_3: Constant::new(0.into()),
             k1_3: Constant::new(1.into()),
             depth_3: Constant::new(RESULT_QUEUE.into()),
             tok_result: Constant::new(TOK_RESULT.into()),
-            lt: Default::default(),
+            old_z: Default::default(),
             pass: Default::default(),
             push0: Default::default(),
             push1: Default::default(),
@@ -142,8 +137,8 @@ impl Logic for ZTest {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, f0, f1, fwd_hit,
-            lt_fwd, lt_far
+            self, clock, f0, f1, fwd_valid,
+            fwd_addr, fwd_z
         );
         // F0 takes every token and reads Z and I for a covered fragment; F1 takes F0's token.
         self.f0.d.next = self.tok.val();
@@ -156,14 +151,14 @@ impl Logic for ZTest {
 
         // The Z-test with forwarding of last cycle's write. A pixel whose I-buffer word is the
         // background index has no depth of this frame: its Z word is stale and counts as far.
-        self.lt.next = self.f1.q.val().z < self.z_rd_data.val();
+        self.old_z.next = self.z_rd_data.val();
         if self.i_rd_data.val() == self.k0_16.val() {
-            self.lt.next = self.lt_far.q.val();
+            self.old_z.next = self.depth_max.val();
         }
-        if self.fwd_hit.q.val() {
-            self.lt.next = self.lt_fwd.q.val();
+        if self.fwd_valid.q.val() & (self.fwd_addr.q.val() == self.f1.q.val().addr) {
+            self.old_z.next = self.fwd_z.q.val();
         }
-        self.pass.next = (self.f1.q.val().kind == self.tok_frag.val()) & self.f1.q.val().covered & self.lt.val();
+        self.pass.next = (self.f1.q.val().kind == self.tok_frag.val()) & self.f1.q.val().covered & (self.f1.q.val().z < self.old_z.val());
         self.z_we.next = false;
         self.z_wr_addr.next = self.k0_20.val();
         self.z_wr_data.next = self.k0_24.val();
@@ -181,14 +176,9 @@ impl Logic for ZTest {
         }
         self.i_we.next = self.z_we.val();
         self.i_wr_addr.next = self.z_wr_addr.val();
-        // F0's token is in F1 after this edge; a write now (z_we: F1's token, at F1's address, of F1's
-        // depth or the far plane for a clear) is the one its read misses.
-        self.fwd_hit.d.next = self.z_we.val() & (self.f1.q.val().addr == self.f0.q.val().addr);
-        self.lt_fwd.d.next = self.f0.q.val().z < self.f1.q.val().z;
-        if self.f1.q.val().kind == self.tok_clear.val() {
-            self.lt_fwd.d.next = self.f0.q.val().z < self.depth_max.val();
-        }
-        self.lt_far.d.next = self.f0.q.val().z < self.depth_max.val();
+        self.fwd_valid.d.next = self.z_we.val();
+        self.fwd_addr.d.next = self.z_wr_addr.val();
+        self.fwd_z.d.next = self.z_wr_data.val();
 
         // Results: the last fragment of a triangle, or a result token.
         // Room for a result token issued now: the queue's length plus the results in F0 and F1 below
