@@ -130,22 +130,19 @@ pub struct Traversal {
     er1: DFF<Signed<44>>,
     er2: DFF<Signed<44>>,
     sx1_0: DFF<Signed<44>>,
-    sx2_0: Signal<Local, Signed<44>>,
+    sx2_0: DFF<Signed<44>>,
     sx3_0: DFF<Signed<44>>,
-    sx4_0: Signal<Local, Signed<44>>,
-    sx16_0: Signal<Local, Signed<44>>,
+    sx4_0: DFF<Signed<44>>,
     sx15_0: DFF<Signed<44>>,
     sx1_1: DFF<Signed<44>>,
-    sx2_1: Signal<Local, Signed<44>>,
+    sx2_1: DFF<Signed<44>>,
     sx3_1: DFF<Signed<44>>,
-    sx4_1: Signal<Local, Signed<44>>,
-    sx16_1: Signal<Local, Signed<44>>,
+    sx4_1: DFF<Signed<44>>,
     sx15_1: DFF<Signed<44>>,
     sx1_2: DFF<Signed<44>>,
-    sx2_2: Signal<Local, Signed<44>>,
+    sx2_2: DFF<Signed<44>>,
     sx3_2: DFF<Signed<44>>,
-    sx4_2: Signal<Local, Signed<44>>,
-    sx16_2: Signal<Local, Signed<44>>,
+    sx4_2: DFF<Signed<44>>,
     sx15_2: DFF<Signed<44>>,
     sy0: DFF<Signed<44>>,
     sy1: DFF<Signed<44>>,
@@ -174,21 +171,11 @@ pub struct Traversal {
     wg3: DFF<Bit>,
     wg15: DFF<Bit>,
     ga1: DFF<Signed<56>>,
-    ga2: Signal<Local, Signed<56>>,
+    ga2: DFF<Signed<56>>,
     ga3: DFF<Signed<56>>,
-    ga4: Signal<Local, Signed<56>>,
-    ga16: Signal<Local, Signed<56>>,
+    ga4: DFF<Signed<56>>,
+    ga16: DFF<Signed<56>>,
     grad_b: DFF<Signed<56>>,
-    // sx2/sx4/sx16 and ga2/ga4/ga16 are wiring shifts of sx1 and ga1, not registers, so they add no
-    // flip-flops to the record-take enable, and the long skip adds 16 sx1 to the edges in one carry
-    // chain instead of two (issue 15 item 5). usx1_K and uga1 are the shifts' inputs.
-    usx1_0: Signal<Local, Bits<44>>,
-    usx1_1: Signal<Local, Bits<44>>,
-    usx1_2: Signal<Local, Bits<44>>,
-    uga1: Signal<Local, Bits<56>>,
-    k1_6: Constant<Bits<6>>,
-    k2_6: Constant<Bits<6>>,
-    k4_6: Constant<Bits<6>>,
 
     // The window: ewJ_K is edge K at x+J, rwJ the raw depth at x+J; cov J: candidate x+J is covered
     // and inside the box; fsel the first covered one, nsel the next candidate after this clock.
@@ -237,6 +224,7 @@ pub struct Traversal {
     rsx4_2: Signal<Local, Signed<44>>,
     ra1: Signal<Local, Signed<56>>,
     ra2: Signal<Local, Signed<56>>,
+    ra4: Signal<Local, Signed<56>>,
 
     width: Constant<Bits<20>>,
     last_addr: Constant<Bits<20>>,
@@ -336,19 +324,16 @@ impl Traversal {
             sx2_0: Default::default(),
             sx3_0: Default::default(),
             sx4_0: Default::default(),
-            sx16_0: Default::default(),
             sx15_0: Default::default(),
             sx1_1: Default::default(),
             sx2_1: Default::default(),
             sx3_1: Default::default(),
             sx4_1: Default::default(),
-            sx16_1: Default::default(),
             sx15_1: Default::default(),
             sx1_2: Default::default(),
             sx2_2: Default::default(),
             sx3_2: Default::default(),
             sx4_2: Default::default(),
-            sx16_2: Default::default(),
             sx15_2: Default::default(),
             sy0: Default::default(),
             sy1: Default::default(),
@@ -376,13 +361,6 @@ impl Traversal {
             ga4: Default::default(),
             ga16: Default::default(),
             grad_b: Default::default(),
-            usx1_0: Default::default(),
-            usx1_1: Default::default(),
-            usx1_2: Default::default(),
-            uga1: Default::default(),
-            k1_6: Constant::new(1.into()),
-            k2_6: Constant::new(2.into()),
-            k4_6: Constant::new(4.into()),
             ew1_0: Default::default(),
             ew2_0: Default::default(),
             ew3_0: Default::default(),
@@ -428,6 +406,7 @@ impl Traversal {
             rsx4_2: Default::default(),
             ra1: Default::default(),
             ra2: Default::default(),
+            ra4: Default::default(),
             width: Constant::new((width as u64).into()),
             last_addr: Constant::new(((width * height - 1) as u64).into()),
             half: Constant::new((1i64 << 15).into()),
@@ -484,36 +463,20 @@ impl Logic for Traversal {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx3_0, sx15_0, sx1_1, sx3_1, sx15_1, sx1_2, sx3_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga3, grad_b
+            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
         );
-        self.usx1_0.next = unsigned_cast(self.sx1_0.q.val());
-        self.usx1_1.next = unsigned_cast(self.sx1_1.q.val());
-        self.usx1_2.next = unsigned_cast(self.sx1_2.q.val());
-        self.sx2_0.next = signed_cast(self.usx1_0.val() << self.k1_6.val());
-        self.sx2_1.next = signed_cast(self.usx1_1.val() << self.k1_6.val());
-        self.sx2_2.next = signed_cast(self.usx1_2.val() << self.k1_6.val());
-        self.sx4_0.next = signed_cast(self.usx1_0.val() << self.k2_6.val());
-        self.sx16_0.next = signed_cast(self.usx1_0.val() << self.k4_6.val());
-        self.sx4_1.next = signed_cast(self.usx1_1.val() << self.k2_6.val());
-        self.sx16_1.next = signed_cast(self.usx1_1.val() << self.k4_6.val());
-        self.sx4_2.next = signed_cast(self.usx1_2.val() << self.k2_6.val());
-        self.sx16_2.next = signed_cast(self.usx1_2.val() << self.k4_6.val());
-        self.uga1.next = unsigned_cast(self.ga1.q.val());
-        self.ga2.next = signed_cast(self.uga1.val() << self.k1_6.val());
-        self.ga4.next = signed_cast(self.uga1.val() << self.k2_6.val());
-        self.ga16.next = signed_cast(self.uga1.val() << self.k4_6.val());
         if self.state.q.val() == TravState::Walk {
             // ---- The window at (x, y) ----
             self.ew1_0.next = self.e0.q.val() + self.sx1_0.q.val();
-            self.ew2_0.next = self.e0.q.val() + self.sx2_0.val();
+            self.ew2_0.next = self.e0.q.val() + self.sx2_0.q.val();
             self.ew3_0.next = self.e0.q.val() + self.sx3_0.q.val();
             self.ew15_0.next = self.e0.q.val() + self.sx15_0.q.val();
             self.ew1_1.next = self.e1.q.val() + self.sx1_1.q.val();
-            self.ew2_1.next = self.e1.q.val() + self.sx2_1.val();
+            self.ew2_1.next = self.e1.q.val() + self.sx2_1.q.val();
             self.ew3_1.next = self.e1.q.val() + self.sx3_1.q.val();
             self.ew15_1.next = self.e1.q.val() + self.sx15_1.q.val();
             self.ew1_2.next = self.e2.q.val() + self.sx1_2.q.val();
-            self.ew2_2.next = self.e2.q.val() + self.sx2_2.val();
+            self.ew2_2.next = self.e2.q.val() + self.sx2_2.q.val();
             self.ew3_2.next = self.e2.q.val() + self.sx3_2.q.val();
             self.ew15_2.next = self.e2.q.val() + self.sx15_2.q.val();
             self.cov0.next = !self.e0.q.val().get_bit(43) & !self.e1.q.val().get_bit(43) & !self.e2.q.val().get_bit(43);
@@ -591,7 +554,7 @@ impl Logic for Traversal {
                 self.faddr.next = self.addr.q.val() + self.k1_20.val();
             }
             if self.fsel.val() == self.k2_2.val() {
-                self.fraw.next = self.rawh.q.val() + self.ga2.val();
+                self.fraw.next = self.rawh.q.val() + self.ga2.q.val();
                 self.faddr.next = self.addr.q.val() + self.k2_20.val();
             }
             if self.fsel.val() == self.k3_2.val() {
@@ -651,6 +614,7 @@ impl Logic for Traversal {
             self.rsx4_2.next = self.rsx2_2.val() + self.rsx2_2.val();
             self.ra1.next = signed_bit_cast_safe::<56, 40>(self.rec_a.val());
             self.ra2.next = self.ra1.val() + self.ra1.val();
+            self.ra4.next = self.ra2.val() + self.ra2.val();
 
         } else {
             self.rsx1_0.next = self.ks0_44.val();
@@ -664,6 +628,7 @@ impl Logic for Traversal {
             self.rsx4_2.next = self.ks0_44.val();
             self.ra1.next = self.ks0_56.val();
             self.ra2.next = self.ks0_56.val();
+            self.ra4.next = self.ks0_56.val();
         }
         self.rec_ready.next = false;
         self.load_walk.next = false;
@@ -769,7 +734,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.ew2_0.val();
                         self.e1.d.next = self.ew2_1.val();
                         self.e2.d.next = self.ew2_2.val();
-                        self.rawh.d.next = self.rawh.q.val() + self.ga2.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga2.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k2_20.val();
                     } else if self.nsel.val() == self.k3_3.val() {
                         self.x.d.next = self.x.q.val() + self.k3_10.val();
@@ -792,10 +757,10 @@ impl Logic for Traversal {
                         self.rg2.d.next = self.rm.q.val() > self.k18_10.val();
                         self.rg3.d.next = self.rm.q.val() > self.k19_10.val();
                         self.rg15.d.next = self.rm.q.val() > self.k31_10.val();
-                        self.e0.d.next = self.e0.q.val() + self.sx16_0.val();
-                        self.e1.d.next = self.e1.q.val() + self.sx16_1.val();
-                        self.e2.d.next = self.e2.q.val() + self.sx16_2.val();
-                        self.rawh.d.next = self.rawh.q.val() + self.ga16.val();
+                        self.e0.d.next = self.ew15_0.val() + self.sx1_0.q.val();
+                        self.e1.d.next = self.ew15_1.val() + self.sx1_1.q.val();
+                        self.e2.d.next = self.ew15_2.val() + self.sx1_2.q.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga16.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k16_20.val();
                     } else {
                         self.x.d.next = self.x.q.val() + self.k4_10.val();
@@ -805,10 +770,10 @@ impl Logic for Traversal {
                         self.rg2.d.next = self.rm.q.val() > self.k6_10.val();
                         self.rg3.d.next = self.rm.q.val() > self.k7_10.val();
                         self.rg15.d.next = self.rm.q.val() > self.k19_10.val();
-                        self.e0.d.next = self.e0.q.val() + self.sx4_0.val();
-                        self.e1.d.next = self.e1.q.val() + self.sx4_1.val();
-                        self.e2.d.next = self.e2.q.val() + self.sx4_2.val();
-                        self.rawh.d.next = self.rawh.q.val() + self.ga4.val();
+                        self.e0.d.next = self.e0.q.val() + self.sx4_0.q.val();
+                        self.e1.d.next = self.e1.q.val() + self.sx4_1.q.val();
+                        self.e2.d.next = self.e2.q.val() + self.sx4_2.q.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga4.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k4_20.val();
                     }
                 }
@@ -846,28 +811,37 @@ impl Logic for Traversal {
             self.e0.d.next = self.rec_e0.val();
             self.er0.d.next = self.rec_e0.val();
             self.sx1_0.d.next = self.rsx1_0.val();
+            self.sx2_0.d.next = self.rsx2_0.val();
             self.sx3_0.d.next = self.rsx2_0.val() + self.rsx1_0.val();
+            self.sx4_0.d.next = self.rsx4_0.val();
             self.sx15_0.d.next = self.rsx4_0.val() + self.rsx4_0.val() + self.rsx4_0.val() + self.rsx2_0.val() + self.rsx1_0.val();
             self.sy0.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy0.val());
             self.nonpos0.d.next = self.rec_sx0.val().get_bit(29) | (self.rsx1_0.val() == self.ks0_44.val());
             self.e1.d.next = self.rec_e1.val();
             self.er1.d.next = self.rec_e1.val();
             self.sx1_1.d.next = self.rsx1_1.val();
+            self.sx2_1.d.next = self.rsx2_1.val();
             self.sx3_1.d.next = self.rsx2_1.val() + self.rsx1_1.val();
+            self.sx4_1.d.next = self.rsx4_1.val();
             self.sx15_1.d.next = self.rsx4_1.val() + self.rsx4_1.val() + self.rsx4_1.val() + self.rsx2_1.val() + self.rsx1_1.val();
             self.sy1.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy1.val());
             self.nonpos1.d.next = self.rec_sx1.val().get_bit(29) | (self.rsx1_1.val() == self.ks0_44.val());
             self.e2.d.next = self.rec_e2.val();
             self.er2.d.next = self.rec_e2.val();
             self.sx1_2.d.next = self.rsx1_2.val();
+            self.sx2_2.d.next = self.rsx2_2.val();
             self.sx3_2.d.next = self.rsx2_2.val() + self.rsx1_2.val();
+            self.sx4_2.d.next = self.rsx4_2.val();
             self.sx15_2.d.next = self.rsx4_2.val() + self.rsx4_2.val() + self.rsx4_2.val() + self.rsx2_2.val() + self.rsx1_2.val();
             self.sy2.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy2.val());
             self.nonpos2.d.next = self.rec_sx2.val().get_bit(29) | (self.rsx1_2.val() == self.ks0_44.val());
             self.rawh.d.next = self.rec_raw.val() + self.half.val();
             self.rawh_row.d.next = self.rec_raw.val() + self.half.val();
             self.ga1.d.next = self.ra1.val();
+            self.ga2.d.next = self.ra2.val();
             self.ga3.d.next = self.ra2.val() + self.ra1.val();
+            self.ga4.d.next = self.ra4.val();
+            self.ga16.d.next = self.ra4.val() + self.ra4.val() + self.ra4.val() + self.ra4.val();
             self.grad_b.d.next = signed_bit_cast_safe::<56, 40>(self.rec_b.val());
             self.state.d.next = TravState::Walk;
         }
