@@ -65,6 +65,14 @@ impl Device {
             Device::Ecp5_85k => ["--85k", "--package", "CABGA381"],
         }
     }
+    /// nextpnr's speed-grade arguments: `--speed` for the ECP5, none for the iCE40 (one grade each).
+    fn speed_args(self, speed: u8) -> Vec<String> {
+        if self.ecp5() {
+            vec!["--speed".to_string(), speed.to_string()]
+        } else {
+            Vec::new()
+        }
+    }
     fn ecp5(self) -> bool {
         matches!(self, Device::Ecp5_45k | Device::Ecp5_85k)
     }
@@ -174,6 +182,10 @@ pub struct FpgaArgs {
     /// Clock target given to nextpnr, MHz (timing-driven placement aims at it; Fmax is what it reaches).
     #[arg(long, default_value_t = 100.0)]
     pub freq: f64,
+    /// ECP5 speed grade (6, 7 or 8; nextpnr-ecp5's `--speed`): 6 is the slowest part and nextpnr's
+    /// default, the grade every figure in the docs is for; the iCE40 rows do not depend on it.
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(6..=8))]
+    pub speed: u8,
     /// Limit per tool run (yosys or nextpnr), seconds.
     #[arg(long, default_value_t = 3600)]
     pub timeout: u64,
@@ -483,6 +495,7 @@ fn report_top(top: &str, devices: &[Device], tools: &PnrTools, args: &FpgaArgs, 
             Command::new(&pnr_tool)
                 .current_dir(dir)
                 .args(dev.nextpnr_args())
+                .args(dev.speed_args(args.speed))
                 .args(["--json", &json, "--seed", &args.seed.to_string(), "--freq", &args.freq.to_string(), "--timing-allow-fail", "--log", &plog]),
             &format!("{pnr_name} on {top} ({d})"),
             limit,
@@ -513,11 +526,12 @@ fn markdown(rows: &[Row], tools: &PnrTools, args: &FpgaArgs, wall: f64) -> Strin
     let _ = writeln!(s, "# FPGA utilisation and timing of the RTL tops (iCE40, ECP5)\n");
     let _ = writeln!(
         s,
-        "Written by `idxrender fpga-report` ({}; {}), nextpnr seed {}, clock target {} MHz; wall time {:.0} s on this machine ({} CPUs).\n",
+        "Written by `idxrender fpga-report` ({}; {}), nextpnr seed {}, clock target {} MHz, ECP5 speed grade {}; wall time {:.0} s on this machine ({} CPUs).\n",
         tool_version("yosys", "-V"),
         tools.versions(rows),
         args.seed,
         args.freq,
+        args.speed,
         wall,
         std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1)
     );
@@ -726,6 +740,13 @@ Warning: Max frequency for clock '$glbnet$clock$TRELLIS_IO_IN': 23.49 MHz (FAIL 
             p.starts_with("from `core.colour_setup.ch.q_TRELLIS_FF_Q.Q` to `core.colour_setup.plane_r_a.q_TRELLIS_FF_Q_39.M`; nets `core.colour_setup.ch.q[1]` .. `core.colour_setup.plane_r_a.d[0]`; 14.48 ns logic"),
             "{p}"
         );
+    }
+
+    #[test]
+    fn the_speed_grade_goes_to_nextpnr_ecp5_only() {
+        assert_eq!(Device::Ecp5_45k.speed_args(8), vec!["--speed", "8"]);
+        assert_eq!(Device::Ecp5_85k.speed_args(6), vec!["--speed", "6"]);
+        assert!(Device::Up5k.speed_args(8).is_empty() && Device::Hx8k.speed_args(7).is_empty());
     }
 
     #[test]

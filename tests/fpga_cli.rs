@@ -76,6 +76,18 @@ fn fpga_report_takes_an_opp_size_only_for_the_opp_and_never_zero() {
     }
 }
 
+/// The ECP5 speed grade is 6, 7 or 8; anything else is refused by name before any tool runs.
+#[test]
+fn fpga_report_refuses_an_ecp5_speed_grade_the_part_does_not_come_in() {
+    let dir = scratch("fpga_report_speed");
+    for bad in ["5", "9", "fast"] {
+        let o = Command::new(env!("CARGO_BIN_EXE_idxrender")).args(["fpga-report", "--block", "rc", "--speed", bad, "--out"]).arg(dir.join("r.md")).output().unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success() && err.contains("--speed") && err.contains(bad), "--speed {bad}: {err}");
+    }
+    assert!(!dir.join("r.md").exists());
+}
+
 /// `--out` is checked before any synthesis (issue 18: `--out report.json` used to write the JSON over the
 /// Markdown name, and a bad folder was found only after the tools had run).
 #[test]
