@@ -4,7 +4,7 @@
 //! and the netlist has no multiplier block. The Rust side of each leaf is checked by the texel filter's
 //! and the texture unit's benches against golden.
 
-use hdl::common::{verilog_named, LerpDeltaLogic, MulLogicU, MulPipeS, MulSplitS};
+use hdl::common::{verilog_named, LerpDeltaLogic, MulLogicU, MulPipeS, MulSplitS, SquareLogicS, SquareLogicU};
 use rust_hdl::prelude::*;
 use std::path::Path;
 use std::process::Command;
@@ -203,9 +203,10 @@ fn the_split_products_of_setup_equal_verilogs_multiply_and_keep_the_blocks_of_th
         check_blocks(&name, &v, &[random_testbench(A, B, P, 1000)], &root.join(format!("s{A}x{B}_{KA}_{KB}")), blocks);
     }
     one::<21, 21, 42, 3, 3>(&root, "det and edge operands", 1);
-    one::<25, 21, 46, 0, 3>(&root, "the RC's dot units", 2);
-    one::<40, 21, 61, 0, 3>(&root, "plane C of the RC and texture setup", 3);
-    one::<40, 21, 64, 0, 3>(&root, "colour setup's plane C", 3);
+    one::<25, 21, 46, 7, 3>(&root, "the RC's dot units", 1);
+    one::<40, 21, 61, 5, 3>(&root, "plane C of the RC", 2);
+    one::<40, 21, 61, 0, 3>(&root, "plane C of texture setup", 3);
+    one::<40, 21, 64, 5, 3>(&root, "colour setup's plane C", 2);
     one::<40, 26, 64, 4, 0>(&root, "colour setup's A and B", 4);
     one::<34, 21, 55, 0, 3>(&root, "texture setup's numerators", 2);
     one::<55, 26, 80, 3, 0>(&root, "texture setup's A and B", 6);
@@ -246,6 +247,28 @@ fn the_pipelined_products_equal_verilogs_multiply_one_edge_later_on_one_block_pe
         let name = format!("MulPipeS<{A}, {B}, {P}, {KA}, {KB}> ({what})");
         check_blocks(&name, &v, &[operand_testbench(A, B, P, 1000, true)], &root.join(format!("p{A}x{B}_{KA}_{KB}")), blocks);
     }
-    one::<40, 26, 64, 5, 0>(&root, "colour setup's A and B", 4);
+    one::<40, 26, 64, 5, 8>(&root, "colour setup's A and B", 2);
     one::<21, 21, 42, 3, 3>(&root, "the RC's det", 1);
+}
+
+/// The squares in logic (`SquareLogicU`, `SquareLogicS`: half the partial products of a general
+/// product; issue 15 item 5, the 45F's multiplier count): the Color Shader's gloss squarer (15 bits
+/// unsigned) and the normalizer's `n_k^2` (16 bits signed, the most negative value included) equal
+/// Verilog's `a * a` for every input, in the generated Verilog and in Yosys's ECP5 netlist, which has no
+/// multiplier block.
+#[test]
+fn the_squares_in_logic_equal_verilogs_multiply_for_every_input_and_use_no_dsp_block() {
+    if !require_tools("the_squares_in_logic_equal_verilogs_multiply_for_every_input_and_use_no_dsp_block", &["iverilog", "vvp", "yosys"]) {
+        return;
+    }
+    let root = workspace_target().join("hdl").join("logic_squares");
+    let _ = std::fs::remove_dir_all(&root);
+    let mut m = SquareLogicU::<15, 30>::default();
+    m.connect_all();
+    let v = verilog_named(&m, "lp").unwrap();
+    check("SquareLogicU<15, 30> (gloss squarer)", &v, &[testbench(&[("a", 15)], 30, false, "a * a")], &root.join("u15"));
+    let mut m = SquareLogicS::<16, 32>::default();
+    m.connect_all();
+    let v = verilog_named(&m, "lp").unwrap();
+    check("SquareLogicS<16, 32> (normalizer)", &v, &[testbench(&[("a", 16)], 32, true, "$signed(a) * $signed(a)")], &root.join("s16"));
 }

@@ -19,7 +19,7 @@ pub use div_step::{DivStep, DivStep45, DivStepN};
 pub use fast_ram::FastRAM;
 pub use leading_one::{LeadingOne, LeadingOne36, LeadingOne44};
 pub use merge_modules::merge_identical_modules;
-pub use mul::{pipe_product_verilog, split_product_verilog, LerpDeltaLogic, MulLogicU, MulPipeS, MulS, MulSplitS, MulU};
+pub use mul::{pipe_product_verilog, split_product_verilog, square_logic_verilog, LerpDeltaLogic, MulLogicU, MulPipeS, MulS, MulSplitS, MulU, SquareLogicS, SquareLogicU};
 pub use normalize::{LeftAlign, Normalize18};
 pub use stream::{StreamIn, StreamOut};
 

@@ -154,8 +154,11 @@ pub struct ColourSetup {
     pc: [DFF<Signed<64>>; 2],
     lead: LeadingOne44,
     mn: [MulSplitS<21, 21, 42, 3, 3>; 4],
-    mab: [MulPipeS<40, 26, 64, 5, 0>; 2],
-    mc: [MulSplitS<40, 21, 64, 0, 3>; 2],
+    /// A's and B's products, two MULT18X18D each (the low 8 bits of the mantissa and 5 of the numerator
+    /// in logic; four with 5 + 0), and C's, two each (5 + 3; three with 0 + 3): issue 15 item 5, the
+    /// chipset on the LFE5U-45F's 72 blocks.
+    mab: [MulPipeS<40, 26, 64, 5, 8>; 2],
+    mc: [MulSplitS<40, 21, 64, 5, 3>; 2],
     round: [PlaneRound; 2],
     /// One division step per station 2..=8 (`step[k]` steps station k + 2).
     step: [DivStep45; 7],

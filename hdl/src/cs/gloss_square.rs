@@ -5,7 +5,7 @@
 //!
 //! ```text
 //!               +------------------------------------------+
-//!  sp_in ------>| 15x15 square, + 2^13, >> 14              |--> sp_out   (registered)
+//!  sp_in ------>| square (in logic), + 2^13, >> 14         |--> sp_out   (registered)
 //!  gloss_in --->| gloss_in > stage ? square : sp_in        |--> gloss_out
 //!  stage ------>|                                          |
 //!  nl_in ------>|                                          |--> nl_out
@@ -14,8 +14,10 @@
 //! ```
 //!
 //! `sp` is Q1.14 in [0, 1] (at most 2^14), so the square is at most 2^28 and the result stays in [0, 1].
+//! The square is in LUTs ([`SquareLogicU`], 569 LUT4 on the ECP5), not on a MULT18X18D: the chipset's
+//! eight squarers did not leave it room on the LFE5U-45F's 72 blocks (issue 15 item 5).
 
-use crate::common::MulU;
+use crate::common::SquareLogicU;
 use rust_hdl::prelude::*;
 
 #[derive(LogicBlock)]
@@ -35,7 +37,7 @@ pub struct GlossSquare {
     pub nl_out: Signal<Out, Bits<15>>,
     pub gloss_out: Signal<Out, Bits<3>>,
 
-    sq: MulU<15, 15, 30>,
+    sq: SquareLogicU<15, 30>,
     sp: DFF<Bits<15>>,
     nl: DFF<Bits<15>>,
     gloss: DFF<Bits<3>>,
@@ -69,7 +71,6 @@ impl Logic for GlossSquare {
     fn update(&mut self) {
         dff_setup!(self, clock, sp, nl, gloss);
         self.sq.a.next = self.sp_in.val();
-        self.sq.b.next = self.sp_in.val();
         self.rounded.next = self.sq.p.val() + self.khalf_30.val();
         self.sp.d.next = self.sp_in.val();
         if self.gloss_in.val() > self.stage.val() {

@@ -5,7 +5,7 @@
 //!
 //! ```text
 //!                +-----------------------------------------------------------------+
-//!  n_x, n_y, --->| N1  n_k^2 (3 products 16x16)                                    |
+//!  n_x, n_y, --->| N1  n_k^2 (3 squares 16 b, in logic)                            |
 //!  n_z (Q1.14,   | N2  len2 = sum (32 b)                                           |
 //!  16 b signed)  | N3  k = lz(len2)/2, m = len2 << 2k in [2^30, 2^32), zero flag   |
 //!                | N4  seed table address m[31:24] (seed_rom, 256 x 34 ROM: y0, t) |
@@ -25,9 +25,11 @@
 //! even left shift brings `|n|^2` into `[1, 4)` (as `m / 2^30`), where a 192-entry table (index
 //! `m[31:24]`) is good to 2^-8 and one Newton-Raphson step `y (3 - x y^2) / 2` to 1.9 units of 2^-16
 //! over every input (`golden::format::tests`); the shift comes back as a left shift by k of the product.
-//! All products fit 18x18 multipliers; `y0^2` is stored beside `y0` in the ROM.
+//! All products fit 18x18 multipliers; `y0^2` is stored beside `y0` in the ROM. The three squares of N1
+//! are in LUTs (`SquareLogicS`, 610 LUT4 each on the ECP5), so that the chipset fits the LFE5U-45F's 72
+//! MULT18X18D (issue 15 item 5).
 
-use crate::common::{signed_bit_cast_safe, MulS, MulU};
+use crate::common::{signed_bit_cast_safe, MulS, MulU, SquareLogicS};
 use rust_hdl::prelude::*;
 
 /// Clocks from `n` on the inputs to `u` on the outputs.
@@ -65,9 +67,9 @@ pub struct Normalizer {
     pub u_z: Signal<Out, Signed<16>>,
 
     seed_rom: SyncROM<Bits<34>, 8>,
-    sq_x: MulS<16, 16, 32>,
-    sq_y: MulS<16, 16, 32>,
-    sq_z: MulS<16, 16, 32>,
+    sq_x: SquareLogicS<16, 32>,
+    sq_y: SquareLogicS<16, 32>,
+    sq_z: SquareLogicS<16, 32>,
     mul_p: MulU<18, 18, 36>,
     mul_y1: MulU<16, 18, 34>,
     q_x: MulS<16, 18, 34>,
@@ -270,11 +272,8 @@ impl Logic for Normalizer {
 
         // N1: squares (each <= 2^30).
         self.sq_x.a.next = self.n_x.val();
-        self.sq_x.b.next = self.n_x.val();
         self.sq_y.a.next = self.n_y.val();
-        self.sq_y.b.next = self.n_y.val();
         self.sq_z.a.next = self.n_z.val();
-        self.sq_z.b.next = self.n_z.val();
         self.sq_x_u.next = unsigned_cast(self.sq_x.p.val());
         self.s1_x.d.next = self.sq_x_u.val().get_bits::<31>(0);
         self.sq_y_u.next = unsigned_cast(self.sq_y.p.val());

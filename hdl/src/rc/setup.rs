@@ -164,16 +164,18 @@ pub struct Setup {
     /// S0 takes the command, and summed while S0 holds it.
     mul_d0: MulPipeS<21, 21, 42, 3, 3>,
     mul_d1: MulPipeS<21, 21, 42, 3, 3>,
-    /// S2: two dot units, a0*b0 - a1*b1 and c0*d0 - c1*d1.
-    mul_a0: MulSplitS<25, 21, 46, 0, 3>,
-    mul_a1: MulSplitS<25, 21, 46, 0, 3>,
-    mul_b0: MulSplitS<25, 21, 46, 0, 3>,
-    mul_b1: MulSplitS<25, 21, 46, 0, 3>,
+    /// S2: two dot units, a0*b0 - a1*b1 and c0*d0 - c1*d1. One MULT18X18D each (7 + 3 low bits in
+    /// logic; two with 0 + 3): with the chipset's other blocks the 45F's 72 were too few (issue 15 item 5).
+    mul_a0: MulSplitS<25, 21, 46, 7, 3>,
+    mul_a1: MulSplitS<25, 21, 46, 7, 3>,
+    mul_b0: MulSplitS<25, 21, 46, 7, 3>,
+    mul_b1: MulSplitS<25, 21, 46, 7, 3>,
     /// S6: the gradients.
     mul_g: MulS<47, 26, 73>,
-    /// S7: the plane's two products per cycle.
-    mul_p: MulSplitS<40, 21, 61, 0, 3>,
-    mul_q: MulSplitS<40, 21, 61, 0, 3>,
+    /// S7: the plane's two products per cycle, two MULT18X18D each (5 + 3 low bits in logic; three
+    /// with 0 + 3).
+    mul_p: MulSplitS<40, 21, 61, 5, 3>,
+    mul_q: MulSplitS<40, 21, 61, 5, 3>,
 
     // S0 `Det`: the command.
     s0_v: DFF<Bit>,
