@@ -320,25 +320,8 @@ pub fn square_logic_verilog(a_bits: usize, p_bits: usize, signed: bool) -> Strin
         };
         v += &format!("wire [{}:0] r{i} = m[{i}] ? ({row}) : {w}'d0;\n", w - 1);
     }
-    // The rows summed as a balanced tree (pairs, then pairs of pairs): log2(A) adders deep, where
-    // `r0 + r1 + ...` is A - 1 carry chains in series (yosys keeps the order written).
-    let mut level: Vec<String> = (0..a_bits).map(|i| format!("r{i}")).collect();
-    let mut depth = 0;
-    while level.len() > 1 {
-        let mut next = Vec::new();
-        for (k, pair) in level.chunks(2).enumerate() {
-            if pair.len() == 2 {
-                let name = format!("t{depth}_{k}");
-                v += &format!("wire [{}:0] {name} = {} + {};\n", w - 1, pair[0], pair[1]);
-                next.push(name);
-            } else {
-                next.push(pair[0].clone());
-            }
-        }
-        level = next;
-        depth += 1;
-    }
-    v += &format!("always @(*) p = {}[{}:0];", level[0], p_bits.min(w) - 1);
+    let rows: Vec<String> = (0..a_bits).map(|i| format!("r{i}")).collect();
+    v += &format!("wire [{}:0] row_sum = {};\nalways @(*) p = row_sum[{}:0];", w - 1, rows.join(" + "), p_bits.min(w) - 1);
     v
 }
 
