@@ -190,8 +190,7 @@ pub struct FpgaArgs {
     pub speed: u8,
     /// ECP5 synthesis with yosys's `-abc9` LUT mapper (`synth_ecp5 -abc9`): measured on the chipset, a
     /// fifth fewer LUT4 sites, which fits it on the LFE5U-45F, and on `rc` alone a lower Fmax
-    /// (docs/known-problems.md); the iCE40 rows do not
-    /// depend on it.
+    /// (docs/known-problems.md); the iCE40 rows do not depend on it.
     #[arg(long)]
     pub abc9: bool,
     /// Limit per tool run (yosys or nextpnr), seconds.
