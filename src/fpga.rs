@@ -203,6 +203,11 @@ pub struct FpgaArgs {
     /// and Fmax grow with the chain. Only with `--block opp`.
     #[arg(long)]
     pub opp_ops: Option<usize>,
+    /// Read the top's Verilog from this file instead of generating it (one `--block`; for example a
+    /// copy edited by hand or by `scripts/clock-cuts.py`, whose what-if cuts the report's header names
+    /// as not the generated design).
+    #[arg(long)]
+    pub verilog: Option<PathBuf>,
 }
 
 /// Cell counts of one module in yosys's `stat`.
@@ -458,8 +463,9 @@ fn tool_version(tool: &str, arg: &str) -> String {
 const SCREEN_WORDS: u64 = 16384;
 
 fn report_top(top: &str, devices: &[Device], tools: &PnrTools, args: &FpgaArgs, dir: &Path) -> Result<Vec<Row>, String> {
-    let v = match (top, args.opp_ops) {
-        ("opp", Some(n)) => hdl::proof::verilog_opp("opp", n, 1)?,
+    let v = match (top, args.opp_ops, &args.verilog) {
+        (_, _, Some(path)) => std::fs::read_to_string(path).map_err(|e| format!("--verilog {}: {e}", path.display()))?,
+        ("opp", Some(n), None) => hdl::proof::verilog_opp("opp", n, 1)?,
         _ => hdl::verilog_top(top)?,
     };
     let ports = parse_ports(&v, top)?;
@@ -527,6 +533,17 @@ fn report_top(top: &str, devices: &[Device], tools: &PnrTools, args: &FpgaArgs, 
     Ok(rows)
 }
 
+/// The report's line on where the top's Verilog came from, when it was not generated.
+fn verilog_note(args: &FpgaArgs) -> String {
+    match &args.verilog {
+        Some(p) => format!(
+            "**The Verilog was read from `{}`, not generated from the RustHDL sources** (`--verilog`): these figures are for that file, which may not do what the design does.\n\n",
+            p.display()
+        ),
+        None => String::new(),
+    }
+}
+
 /// The Markdown report.
 fn markdown(rows: &[Row], tools: &PnrTools, args: &FpgaArgs, wall: f64) -> String {
     let mut s = String::new();
@@ -543,6 +560,7 @@ fn markdown(rows: &[Row], tools: &PnrTools, args: &FpgaArgs, wall: f64) -> Strin
         wall,
         std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1)
     );
+    s.push_str(&verilog_note(args));
     let _ = writeln!(s, "Method: `yosys synth_ice40 -dsp` for the UP5K (SG48) and `synth_ice40` for the HX8K (CT256), which has no DSP blocks, then `nextpnr-ice40`; `yosys synth_ecp5` for the ECP5 LFE5U-45F (CABGA381), then `nextpnr-ecp5`. On the ECP5, CARRY counts CCU2C cells (2 bits each), BRAM DP16KD and DSP MULT18X18D, and the device column counts TRELLIS_COMB (LUT4 sites). LUT4/FF/CARRY/BRAM/DSP are the top's own cells (yosys `stat` of its module). The top's ports do not fit any package's pins, so it is placed inside a 10-pin wrapper (a shift register drives every input bit, the outputs are XOR-folded into 8 registered pins), which keeps all of its logic; the wrapper's cells are in the \"wrapper\" column and in the device's LC count, so a top that misses a device by fewer LCs than its wrapper uses would fit without it. The top is synthesized as its own module (`keep_hierarchy`) inside the wrapper; a standalone `synth_ice40 -top <top>` can differ by a few percent in LUT4/CARRY (measured on rc with yosys 0.23: under 2% LUT4, 4% CARRY, FF and DSP equal). The Z-, I-buffer and TdbS memories are outside every top (top-level memory ports), so BRAM counts only internal tables.\n");
     let _ = writeln!(s, "| top | device | LUT4 | FF | CARRY | BRAM | DSP | Fmax (MHz) | wrapper LUT4/FF | device logic cells | time (s) |\n|---|---|---|---|---|---|---|---|---|---|---|");
     for r in rows {
@@ -609,6 +627,9 @@ pub fn run(args: &FpgaArgs) -> Result<(), String> {
     let tops = selected_tops(args.block.as_deref())?;
     if args.opp_ops.is_some() && args.block.as_deref() != Some("opp") {
         return Err("--opp-ops applies to --block opp".into());
+    }
+    if args.verilog.is_some() && (args.block.is_none() || args.opp_ops.is_some()) {
+        return Err("--verilog needs one --block (the top the file holds) and no --opp-ops".into());
     }
     if args.opp_ops == Some(0) {
         return Err("--opp-ops 0: the OPP needs at least one object processor".into());
@@ -756,6 +777,25 @@ Warning: Max frequency for clock '$glbnet$clock$TRELLIS_IO_IN': 23.49 MHz (FAIL 
         assert_eq!(Device::Ecp5_85k.synth(false), "synth_ecp5");
         assert_eq!(Device::Up5k.synth(true), Device::Up5k.synth(false));
         assert_eq!(Device::Hx8k.synth(true), "synth_ice40");
+    }
+
+    fn fpga_args(argv: &[&str]) -> FpgaArgs {
+        #[derive(clap::Parser)]
+        struct Cli {
+            #[command(flatten)]
+            fpga: FpgaArgs,
+        }
+        <Cli as clap::Parser>::try_parse_from(std::iter::once("fpga-report").chain(argv.iter().copied())).unwrap().fpga
+    }
+
+    #[test]
+    fn a_verilog_file_needs_one_block_and_is_named_in_the_report() {
+        let e = run(&fpga_args(&["--verilog", "cut.v"])).unwrap_err();
+        assert!(e.contains("--verilog needs one --block"), "{e}");
+        let e = run(&fpga_args(&["--verilog", "cut.v", "--block", "opp", "--opp-ops", "4"])).unwrap_err();
+        assert!(e.contains("--verilog needs one --block"), "{e}");
+        assert!(verilog_note(&fpga_args(&["--verilog", "cut.v", "--block", "rc"])).contains("read from `cut.v`, not generated"));
+        assert_eq!(verilog_note(&fpga_args(&["--block", "rc"])), "");
     }
 
     #[test]
