@@ -105,3 +105,31 @@ fn fpga_report_checks_its_output_path_before_any_synthesis() {
     let (ok, err) = run(&file.join("r.md"));
     assert!(!ok && err.contains("--out") && err.contains("cannot create"), "{err}");
 }
+
+/// `scripts/clock-cuts.py` (the what-if cuts of docs/rc.md, "How far each cut goes") still finds
+/// every path it cuts in the Verilog generated today, and yosys elaborates what it writes; a cut
+/// asked of a top without that path is an error, not a silent no-op.
+#[test]
+fn the_clock_cuts_apply_to_the_generated_verilog_and_yosys_elaborates_the_result() {
+    if !require_tools("the_clock_cuts_apply_to_the_generated_verilog_and_yosys_elaborates_the_result", &["python3", "yosys"]) {
+        return;
+    }
+    let dir = scratch("clock_cuts");
+    let script = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scripts").join("clock-cuts.py");
+    for (top, cuts, added) in [("rc", &["walk", "grad", "setup"][..], "walk_end_r <= walk_end"), ("cs", &["norm"][..], "a <= a_in")] {
+        let src = dir.join(format!("{top}.v"));
+        let cut = dir.join(format!("{top}_cut.v"));
+        std::fs::write(&src, hdl::verilog_top(top).unwrap()).unwrap();
+        let o = Command::new("python3").arg(&script).arg(&src).arg(&cut).args(cuts).output().unwrap();
+        assert!(o.status.success(), "clock-cuts.py {top} {cuts:?}: {}", String::from_utf8_lossy(&o.stderr));
+        let text = std::fs::read_to_string(&cut).unwrap();
+        assert!(text.contains(added), "{top}: the cut's register is not in the output");
+        let clocks = text.matches(".clock(clock),").count() - std::fs::read_to_string(&src).unwrap().matches(".clock(clock),").count();
+        assert_eq!(clocks, if top == "rc" { 7 } else { 3 }, "{top}: leaves given a clock by the cuts");
+        let y = Command::new("yosys").args(["-q", "-p"]).arg(format!("read_verilog {}; hierarchy -check -top {top}; proc", cut.display())).output().unwrap();
+        assert!(y.status.success(), "yosys does not elaborate the cut {top}:\n{}", String::from_utf8_lossy(&y.stderr));
+    }
+    let o = Command::new("python3").arg(&script).arg(dir.join("cs.v")).arg(dir.join("bad.v")).arg("walk").output().unwrap();
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("modules end in `$front$traversal`"), "a cut of a missing path must fail");
+    assert!(!dir.join("bad.v").exists(), "a failed cut wrote its output");
+}
