@@ -5,9 +5,9 @@
 //!
 //! ```text
 //!                +-----------------------------------------------------------------+
-//!  raw_x, y, z ->| N1  n_k^2 of raw (3 squares, in logic), constant if clipped     |
-//!  (Q1.14, 16 b  | N2  len2 = sum (32 b)                                           |
-//!  + clip_x,y,z) | N3  k = lz(len2)/2, m = len2 << 2k in [2^30, 2^32), zero flag   |
+//!  n_x, n_y, --->| N1  n_k^2 (3 squares 16 b, in logic)                            |
+//!  n_z (Q1.14,   | N2  len2 = sum (32 b)                                           |
+//!  16 b signed)  | N3  k = lz(len2)/2, m = len2 << 2k in [2^30, 2^32), zero flag   |
 //!                | N4  seed table address m[31:24] (seed_rom, 256 x 34 ROM: y0, t) |
 //!                | N5  y0, t = round(y0^2 / 2^14) from the ROM                     |
 //!                | N6  p = (m >> 14) * t            (18 x 18)                      |
@@ -56,17 +56,10 @@ pub fn seed_rom_word(i: u64) -> u64 {
 pub struct Normalizer {
     pub clock: Signal<In, Clock>,
     // From the plane evaluation
-    /// The interpolated normal, Q1.14, not unit, before it is clipped to 16 bits: its 16 bits (bits 31:16
-    /// of the plane sum) and the clip, bit 0 for above `i16::MAX`, bit 1 for below `i16::MIN`. The
-    /// normal is `n = 32767` (bit 0), `-32768` (bit 1) or `raw`. The squares start on `raw` while the
-    /// clip is decided beside them (issue 15 item 5: the clip's compares were in front of the squares
-    /// on the `cs` top's critical path).
-    pub raw_x: Signal<In, Signed<16>>,
-    pub raw_y: Signal<In, Signed<16>>,
-    pub raw_z: Signal<In, Signed<16>>,
-    pub clip_x: Signal<In, Bits<2>>,
-    pub clip_y: Signal<In, Bits<2>>,
-    pub clip_z: Signal<In, Bits<2>>,
+    /// The interpolated normal, Q1.14, not unit.
+    pub n_x: Signal<In, Signed<16>>,
+    pub n_y: Signal<In, Signed<16>>,
+    pub n_z: Signal<In, Signed<16>>,
     // To the light units
     /// The unit normal, Q1.14, [`NORMALIZER_LATENCY`] clocks after `n`.
     pub u_x: Signal<Out, Signed<16>>,
@@ -118,9 +111,6 @@ pub struct Normalizer {
     u12_y: DFF<Signed<16>>,
     u12_z: DFF<Signed<16>>,
     // Combinational
-    n_x: Signal<Local, Signed<16>>,
-    n_y: Signal<Local, Signed<16>>,
-    n_z: Signal<Local, Signed<16>>,
     ext_x: Signal<Local, Bits<32>>,
     ext_y: Signal<Local, Bits<32>>,
     ext_z: Signal<Local, Bits<32>>,
@@ -159,8 +149,6 @@ pub struct Normalizer {
     kmax_16: Constant<Signed<16>>,
     kmin_16: Constant<Signed<16>>,
     kzero_16: Constant<Signed<16>>,
-    ksq_max_31: Constant<Bits<31>>,
-    ksq_min_31: Constant<Bits<31>>,
     kk: [Constant<Bits<4>>; 16],
 }
 
@@ -168,12 +156,9 @@ impl Default for Normalizer {
     fn default() -> Self {
         Self {
             clock: Default::default(),
-            raw_x: Default::default(),
-            raw_y: Default::default(),
-            raw_z: Default::default(),
-            clip_x: Default::default(),
-            clip_y: Default::default(),
-            clip_z: Default::default(),
+            n_x: Default::default(),
+            n_y: Default::default(),
+            n_z: Default::default(),
             u_x: Default::default(),
             u_y: Default::default(),
             u_z: Default::default(),
@@ -215,9 +200,6 @@ impl Default for Normalizer {
             u12_x: Default::default(),
             u12_y: Default::default(),
             u12_z: Default::default(),
-            n_x: Default::default(),
-            n_y: Default::default(),
-            n_z: Default::default(),
             ext_x: Default::default(),
             ext_y: Default::default(),
             ext_z: Default::default(),
@@ -256,8 +238,6 @@ impl Default for Normalizer {
             kmax_16: Constant::new(Signed::<16>::from(i16::MAX as i64)),
             kmin_16: Constant::new(Signed::<16>::from(i16::MIN as i64)),
             kzero_16: Constant::new(Signed::<16>::from(0i64)),
-            ksq_max_31: Constant::new(((i16::MAX as u64) * (i16::MAX as u64)).into()),
-            ksq_min_31: Constant::new((1u64 << 30).into()),
             kk: std::array::from_fn(|i| Constant::new((i as u64).into())),
         }
     }
@@ -280,28 +260,7 @@ impl Logic for Normalizer {
         for i in 0..8 {
             self.kd[i].clock.next = self.clock.val();
         }
-        // The clipped normal travels with its pipeline stage.
-        self.n_x.next = self.raw_x.val();
-        if self.clip_x.val().get_bit(0) {
-            self.n_x.next = self.kmax_16.val();
-        }
-        if self.clip_x.val().get_bit(1) {
-            self.n_x.next = self.kmin_16.val();
-        }
-        self.n_y.next = self.raw_y.val();
-        if self.clip_y.val().get_bit(0) {
-            self.n_y.next = self.kmax_16.val();
-        }
-        if self.clip_y.val().get_bit(1) {
-            self.n_y.next = self.kmin_16.val();
-        }
-        self.n_z.next = self.raw_z.val();
-        if self.clip_z.val().get_bit(0) {
-            self.n_z.next = self.kmax_16.val();
-        }
-        if self.clip_z.val().get_bit(1) {
-            self.n_z.next = self.kmin_16.val();
-        }
+        // The normal travels with its pipeline stage.
         self.n_xd[0].d.next = self.n_x.val();
         self.n_yd[0].d.next = self.n_y.val();
         self.n_zd[0].d.next = self.n_z.val();
@@ -311,34 +270,16 @@ impl Logic for Normalizer {
             self.n_zd[i].d.next = self.n_zd[i - 1].q.val();
         }
 
-        // N1: squares (each <= 2^30) of the raw bits; a clipped normal's square is a constant.
-        self.sq_x.a.next = self.raw_x.val();
-        self.sq_y.a.next = self.raw_y.val();
-        self.sq_z.a.next = self.raw_z.val();
+        // N1: squares (each <= 2^30).
+        self.sq_x.a.next = self.n_x.val();
+        self.sq_y.a.next = self.n_y.val();
+        self.sq_z.a.next = self.n_z.val();
         self.sq_x_u.next = unsigned_cast(self.sq_x.p.val());
         self.s1_x.d.next = self.sq_x_u.val().get_bits::<31>(0);
-        if self.clip_x.val().get_bit(0) {
-            self.s1_x.d.next = self.ksq_max_31.val();
-        }
-        if self.clip_x.val().get_bit(1) {
-            self.s1_x.d.next = self.ksq_min_31.val();
-        }
         self.sq_y_u.next = unsigned_cast(self.sq_y.p.val());
         self.s1_y.d.next = self.sq_y_u.val().get_bits::<31>(0);
-        if self.clip_y.val().get_bit(0) {
-            self.s1_y.d.next = self.ksq_max_31.val();
-        }
-        if self.clip_y.val().get_bit(1) {
-            self.s1_y.d.next = self.ksq_min_31.val();
-        }
         self.sq_z_u.next = unsigned_cast(self.sq_z.p.val());
         self.s1_z.d.next = self.sq_z_u.val().get_bits::<31>(0);
-        if self.clip_z.val().get_bit(0) {
-            self.s1_z.d.next = self.ksq_max_31.val();
-        }
-        if self.clip_z.val().get_bit(1) {
-            self.s1_z.d.next = self.ksq_min_31.val();
-        }
 
         // N2: |n|^2 < 3 * 2^30 fits 32 bits.
         self.ext_x.next = bit_cast::<32, 31>(self.s1_x.q.val());

@@ -172,12 +172,9 @@ pub struct ScanPipe {
     eol_bit: Signal<Local, Bits<26>>,
     hi_g: Signal<Local, Bits<33>>,
     hi_b: Signal<Local, Bits<33>>,
-    raw_r: Signal<Local, Signed<16>>,
-    raw_g: Signal<Local, Signed<16>>,
-    raw_b: Signal<Local, Signed<16>>,
-    clip_r: Signal<Local, Bits<2>>,
-    clip_g: Signal<Local, Bits<2>>,
-    clip_b: Signal<Local, Bits<2>>,
+    n_r: Signal<Local, Signed<16>>,
+    n_g: Signal<Local, Signed<16>>,
+    n_b: Signal<Local, Signed<16>>,
     mw3: Signal<Local, Bits<16>>,
     rec_material: Signal<Local, Bits<16>>,
     us_r: Signal<Local, Bits<58>>,
@@ -213,9 +210,8 @@ pub struct ScanPipe {
     k0_3: Constant<Bits<3>>,
     k0_27: Constant<Bits<27>>,
     kones_27: Constant<Bits<27>>,
-    k0_2: Constant<Bits<2>>,
-    kclip_max_2: Constant<Bits<2>>,
-    kclip_min_2: Constant<Bits<2>>,
+    kmax_16: Constant<Signed<16>>,
+    kmin_16: Constant<Signed<16>>,
     khalf_34: Constant<Bits<34>>,
     k255_12: Constant<Bits<12>>,
     k0_28: Constant<Bits<28>>,
@@ -358,12 +354,9 @@ impl Default for ScanPipe {
             eol_bit: Default::default(),
             hi_g: Default::default(),
             hi_b: Default::default(),
-            raw_r: Default::default(),
-            raw_g: Default::default(),
-            raw_b: Default::default(),
-            clip_r: Default::default(),
-            clip_g: Default::default(),
-            clip_b: Default::default(),
+            n_r: Default::default(),
+            n_g: Default::default(),
+            n_b: Default::default(),
             mw3: Default::default(),
             rec_material: Default::default(),
             us_r: Default::default(),
@@ -399,9 +392,8 @@ impl Default for ScanPipe {
             k0_3: Constant::new(0.into()),
             k0_27: Constant::new(0.into()),
             kones_27: Constant::new(((1u64 << 27) - 1).into()),
-            k0_2: Constant::new(0.into()),
-            kclip_max_2: Constant::new(1.into()),
-            kclip_min_2: Constant::new(2.into()),
+            kmax_16: Constant::new(Signed::<16>::from(i16::MAX as i64)),
+            kmin_16: Constant::new(Signed::<16>::from(i16::MIN as i64)),
             khalf_34: Constant::new((1u64 << 21).into()),
             k255_12: Constant::new(255.into()),
             k0_28: Constant::new(0.into()),
@@ -578,44 +570,37 @@ impl Logic for ScanPipe {
         // UG934 RGB order: R 23:16, B 15:8, G 7:0.
         self.g_rgb.next = (bit_cast::<24, 8>(self.ch_r.val()) << 16) | (bit_cast::<24, 8>(self.ch_b.val()) << 8) | bit_cast::<24, 8>(self.ch_g.val());
 
-        // t+5: the same sums as a normal (Phong): >> 16 saturated to 16 bits (bits 57:31 all the sign), as
-        // the raw bits and a clip code (bit 0 above the range, bit 1 below), which the normalizer applies.
+        // t+5: the same sums as a normal (Phong): >> 16 saturated to 16 bits (bits 57:31 all the sign).
         self.us_r.next = unsigned_cast(self.s5_sum_r.q.val());
         self.top_r.next = self.us_r.val().get_bits::<27>(31);
         self.us_g.next = unsigned_cast(self.s5_sum_g.q.val());
         self.top_g.next = self.us_g.val().get_bits::<27>(31);
         self.us_b.next = unsigned_cast(self.s5_sum_b.q.val());
         self.top_b.next = self.us_b.val().get_bits::<27>(31);
-        self.raw_r.next = signed_cast(self.us_r.val().get_bits::<16>(16));
-        self.clip_r.next = self.k0_2.val();
+        self.n_r.next = signed_cast(self.us_r.val().get_bits::<16>(16));
         if self.s5_sum_r.q.val().get_bit(57) & (self.top_r.val() != self.kones_27.val()) {
-            self.clip_r.next = self.kclip_min_2.val();
+            self.n_r.next = self.kmin_16.val();
         }
         if !self.s5_sum_r.q.val().get_bit(57) & (self.top_r.val() != self.k0_27.val()) {
-            self.clip_r.next = self.kclip_max_2.val();
+            self.n_r.next = self.kmax_16.val();
         }
-        self.raw_g.next = signed_cast(self.us_g.val().get_bits::<16>(16));
-        self.clip_g.next = self.k0_2.val();
+        self.n_g.next = signed_cast(self.us_g.val().get_bits::<16>(16));
         if self.s5_sum_g.q.val().get_bit(57) & (self.top_g.val() != self.kones_27.val()) {
-            self.clip_g.next = self.kclip_min_2.val();
+            self.n_g.next = self.kmin_16.val();
         }
         if !self.s5_sum_g.q.val().get_bit(57) & (self.top_g.val() != self.k0_27.val()) {
-            self.clip_g.next = self.kclip_max_2.val();
+            self.n_g.next = self.kmax_16.val();
         }
-        self.raw_b.next = signed_cast(self.us_b.val().get_bits::<16>(16));
-        self.clip_b.next = self.k0_2.val();
+        self.n_b.next = signed_cast(self.us_b.val().get_bits::<16>(16));
         if self.s5_sum_b.q.val().get_bit(57) & (self.top_b.val() != self.kones_27.val()) {
-            self.clip_b.next = self.kclip_min_2.val();
+            self.n_b.next = self.kmin_16.val();
         }
         if !self.s5_sum_b.q.val().get_bit(57) & (self.top_b.val() != self.k0_27.val()) {
-            self.clip_b.next = self.kclip_max_2.val();
+            self.n_b.next = self.kmax_16.val();
         }
-        self.normalizer.raw_x.next = self.raw_r.val();
-        self.normalizer.clip_x.next = self.clip_r.val();
-        self.normalizer.raw_y.next = self.raw_g.val();
-        self.normalizer.clip_y.next = self.clip_g.val();
-        self.normalizer.raw_z.next = self.raw_b.val();
-        self.normalizer.clip_z.next = self.clip_b.val();
+        self.normalizer.n_x.next = self.n_r.val();
+        self.normalizer.n_y.next = self.n_g.val();
+        self.normalizer.n_z.next = self.n_b.val();
 
         // The pixel's tags and flat / Gouraud colour wait for the Phong path (t+5 .. t+26).
         self.t_valid.next = self.k0_28.val();
