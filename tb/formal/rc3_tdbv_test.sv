@@ -68,13 +68,8 @@ module rc3_tdbv_test_formal #(
     wire [19:0] result_data;
     wire result_valid;
 
-    // The traversal hands a token's depth a cycle after the token (`tok_z`): here the depth field of
-    // the previous cycle's token.
-    reg [23:0] tok_z = 24'd0;
-    always @(posedge clock) tok_z <= tok[67:44];
-
     rc3$vis dut (
-        .clock(clock), .tok(tok), .tok_z(tok_z), .result_free(result_free), .i_rd_data(i_rd_data),
+        .clock(clock), .tok(tok), .result_free(result_free), .i_rd_data(i_rd_data),
         .tdbv_re(tdbv_re), .tdbv_rd_addr(tdbv_rd_addr),
         .tdbv_rd_a(tdbv_rd_a), .tdbv_rd_b(tdbv_rd_b), .tdbv_rd_c(tdbv_rd_c),
         .i_we(i_we), .i_wr_addr(i_wr_addr), .i_wr_data(i_wr_data),

@@ -21,8 +21,6 @@ pub struct RcFront {
     pub cmd: StreamIn<RcCommand>,
     /// The traversal's token of this cycle.
     pub tok: Signal<Out, RcToken>,
-    /// The depth of the previous cycle's token (`Traversal::tok_z`).
-    pub tok_z: Signal<Out, Bits<24>>,
     /// A result token issued now will find room behind the visibility test.
     pub result_free: Signal<In, Bit>,
     /// TdbV write (Type III; `rc` leaves it unconnected): the depth plane of the triangle the traversal
@@ -47,7 +45,6 @@ impl RcFront {
             clock: Default::default(),
             cmd: Default::default(),
             tok: Default::default(),
-            tok_z: Default::default(),
             result_free: Default::default(),
             tdbv_we: Default::default(),
             tdbv_wr_addr: Default::default(),
@@ -94,7 +91,6 @@ impl Logic for RcFront {
         self.traversal.rec_a.next = self.setup.rec_a.val();
         self.traversal.rec_b.next = self.setup.rec_b.val();
         self.tok.next = self.traversal.tok.val();
-        self.tok_z.next = self.traversal.tok_z.val();
         self.traversal.result_free.next = self.result_free.val();
 
         self.tdbv_we.next = self.setup.rec_valid.val() & self.traversal.rec_ready.val() & (self.setup.rec_kind.val() == self.rec_walk.val());

@@ -156,7 +156,6 @@ impl Logic for Rc {
         StreamOut::<RcResult>::link(&mut self.result, &mut self.z_test.result);
 
         self.z_test.tok.next = self.front.tok.val();
-        self.z_test.tok_z.next = self.front.tok_z.val();
         self.front.result_free.next = self.z_test.result_free.val();
 
         // Memory ports.

@@ -112,7 +112,6 @@ impl Logic for Rc3 {
         StreamOut::<RcResult>::link(&mut self.result, &mut self.vis.result);
 
         self.vis.tok.next = self.front.tok.val();
-        self.vis.tok_z.next = self.front.tok_z.val();
         self.front.result_free.next = self.vis.result_free.val();
         self.tdbv_we.next = self.front.tdbv_we.val();
         self.tdbv_wr_addr.next = self.front.tdbv_wr_addr.val();

@@ -17,8 +17,7 @@
 //! free and its old depth is far). In t+2 the record arrives in F2, which forms the products A*X and
 //! B*Y. In t+3 F3 regenerates the old depth `clamp(round((C + A*X + B*Y) / 2^16))`, exactly the value
 //! the traversal stepped to when the owner was drawn (the same integers: `raw = C + A*X + B*Y`), so
-//! Type III decides as Type IV does. In t+4 F4 compares and writes. The token's own depth arrives a
-//! cycle after the token (`tok_z`) and enters with it into F2.
+//! Type III decides as Type IV does. In t+4 F4 compares and writes.
 //!
 //! Hazards: the I-buffer read of cycle t returns the word before the writes of t, t+1, t+2 and t+3
 //! (all made by F4). F4 keeps those four writes (address, depth written) and takes the newest one to
@@ -43,8 +42,6 @@ pub struct TdbvTest {
     pub clock: Signal<In, Clock>,
     // From the traversal
     pub tok: Signal<In, RcToken>,
-    /// The depth of the token issued in the previous cycle (the one now in F1): F2 takes it.
-    pub tok_z: Signal<In, Bits<24>>,
     // To the traversal
     /// A result token issued this cycle will find room in the result queue.
     pub result_free: Signal<Out, Bit>,
@@ -130,7 +127,6 @@ impl Default for TdbvTest {
         Self {
             clock: Default::default(),
             tok: Default::default(),
-            tok_z: Default::default(),
             result_free: Default::default(),
             i_rd_data: Default::default(),
             tdbv_re: Default::default(),
@@ -219,7 +215,6 @@ impl Logic for TdbvTest {
 
         // ---- F2: the record arrives; the products A*X and B*Y ----
         self.f2.d.next = self.f1.q.val();
-        self.f2.d.next.z = self.tok_z.val();
         self.f2_owned.d.next = self.tdbv_re.val();
         self.x11.next = bit_cast::<11, 10>(self.f2.q.val().x);
         self.y11.next = bit_cast::<11, 10>(self.f2.q.val().y);

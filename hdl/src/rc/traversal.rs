@@ -61,8 +61,6 @@ pub struct RcToken {
     /// The pixel (Type III regenerates the old depth there; Type IV does not read them).
     pub x: Bits<10>,
     pub y: Bits<10>,
-    /// The fragment's depth: 0 as the traversal issues the token; the visibility test fills it in
-    /// from `Traversal::tok_z` a cycle later.
     pub z: Bits<24>,
     pub index: Bits<16>,
     /// A result token: end of frame, culled, zero area.
@@ -114,10 +112,6 @@ pub struct Traversal {
     // To the z-test stage (and the Z read port)
     /// The token issued this cycle (`TOK_NONE` when nothing is issued).
     pub tok: Signal<Out, RcToken>,
-    /// The depth of the token issued in the previous cycle (0 unless that token was a covered
-    /// fragment; `tok.z` is always 0): the depth is formed a cycle after the walk's decision, off its
-    /// loop (issue 15 item 5). The visibility test takes it into its second token register.
-    pub tok_z: Signal<Out, Bits<24>>,
 
     // Registers: the walk's position and increments; sxJ_K is J times edge K's x step, gaJ J times A;
     // nonpos K: edge K's x step is <= 0 (it never grows to the right).
@@ -176,17 +170,6 @@ pub struct Traversal {
     wg2: DFF<Bit>,
     wg3: DFF<Bit>,
     wg15: DFF<Bit>,
-    // The depth follower: rawh/rawh_row/gaJ/grad_b are updated a cycle after the walk's registers,
-    // from the step the walk took (`step_r`: 0 none, 1-3 to the next covered candidate, 4 the window,
-    // 5 the long skip, 6 a new row, 7 a load) and the record's fields registered in the cycle it was
-    // taken (`raw_ld`, `ra_r`, `rb_r`). So the decision drives a 3-bit register instead of some 450
-    // bits of depth registers, and the fragment's depth (`fsel_r`, `zv_r`) is formed off the loop.
-    step_r: DFF<Bits<3>>,
-    fsel_r: DFF<Bits<2>>,
-    zv_r: DFF<Bit>,
-    raw_ld: DFF<Signed<56>>,
-    ra_r: DFF<Signed<40>>,
-    rb_r: DFF<Signed<40>>,
     ga1: DFF<Signed<56>>,
     ga2: DFF<Signed<56>>,
     ga3: DFF<Signed<56>>,
@@ -284,9 +267,6 @@ pub struct Traversal {
     k2_3: Constant<Bits<3>>,
     k3_3: Constant<Bits<3>>,
     k4_3: Constant<Bits<3>>,
-    k5_3: Constant<Bits<3>>,
-    k6_3: Constant<Bits<3>>,
-    k7_3: Constant<Bits<3>>,
     tok_none: Constant<Bits<2>>,
     tok_clear: Constant<Bits<2>>,
     tok_frag: Constant<Bits<2>>,
@@ -326,13 +306,6 @@ impl Traversal {
             rec_ready: Default::default(),
             result_free: Default::default(),
             tok: Default::default(),
-            tok_z: Default::default(),
-            step_r: Default::default(),
-            fsel_r: Default::default(),
-            zv_r: Default::default(),
-            raw_ld: Default::default(),
-            ra_r: Default::default(),
-            rb_r: Default::default(),
             state: Default::default(),
             x: Default::default(),
             y: Default::default(),
@@ -475,9 +448,6 @@ impl Traversal {
             k2_3: Constant::new(2.into()),
             k3_3: Constant::new(3.into()),
             k4_3: Constant::new(4.into()),
-            k5_3: Constant::new(5.into()),
-            k6_3: Constant::new(6.into()),
-            k7_3: Constant::new(7.into()),
             tok_none: Constant::new(TOK_NONE.into()),
             tok_clear: Constant::new(TOK_CLEAR.into()),
             tok_frag: Constant::new(TOK_FRAG.into()),
@@ -493,7 +463,7 @@ impl Logic for Traversal {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, step_r, fsel_r, zv_r, raw_ld, ra_r, rb_r, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
+            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, er0, er1, er2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
         );
         if self.state.q.val() == TravState::Walk {
             // ---- The window at (x, y) ----
@@ -575,17 +545,29 @@ impl Logic for Traversal {
             }
             self.at_last_row.next = self.y.q.val() == self.by1.q.val();
             self.walk_end.next = self.row_done.val() & self.at_last_row.val();
-            // The fragment's address (its depth follows a cycle later, below).
+            // The fragment: its raw depth, address and depth.
+            self.fraw.next = self.rawh.q.val();
             self.faddr.next = self.addr.q.val();
             // (The additions sit in the branches: the RustHDL simulation then does only the one taken.)
             if self.fsel.val() == self.k1_2.val() {
+                self.fraw.next = self.rawh.q.val() + self.ga1.q.val();
                 self.faddr.next = self.addr.q.val() + self.k1_20.val();
             }
             if self.fsel.val() == self.k2_2.val() {
+                self.fraw.next = self.rawh.q.val() + self.ga2.q.val();
                 self.faddr.next = self.addr.q.val() + self.k2_20.val();
             }
             if self.fsel.val() == self.k3_2.val() {
+                self.fraw.next = self.rawh.q.val() + self.ga3.q.val();
                 self.faddr.next = self.addr.q.val() + self.k3_20.val();
+            }
+            self.rounded_u.next = unsigned_cast(self.fraw.val());
+            self.depth.next = self.rounded_u.val().get_bits::<24>(16);
+            if self.rounded_u.val().get_bits::<15>(40) != self.k0_15.val() {
+                self.depth.next = self.depth_max.val();
+            }
+            if self.fraw.val().get_bit(55) {
+                self.depth.next = self.k0_24.val();
             }
         } else {
             self.ew1_0.next = self.ks0_44.val();
@@ -614,7 +596,10 @@ impl Logic for Traversal {
             self.row_done.next = false;
             self.at_last_row.next = false;
             self.walk_end.next = false;
+            self.fraw.next = self.ks0_56.val();
             self.faddr.next = self.kz20.val();
+            self.rounded_u.next = self.kz56.val();
+            self.depth.next = self.kz24.val();
         }
         if self.rec_valid.val() {
             // The multiples of a record's steps (the rest are summed in the load branch).
@@ -627,6 +612,10 @@ impl Logic for Traversal {
             self.rsx1_2.next = signed_bit_cast_safe::<44, 30>(self.rec_sx2.val());
             self.rsx2_2.next = self.rsx1_2.val() + self.rsx1_2.val();
             self.rsx4_2.next = self.rsx2_2.val() + self.rsx2_2.val();
+            self.ra1.next = signed_bit_cast_safe::<56, 40>(self.rec_a.val());
+            self.ra2.next = self.ra1.val() + self.ra1.val();
+            self.ra4.next = self.ra2.val() + self.ra2.val();
+
         } else {
             self.rsx1_0.next = self.ks0_44.val();
             self.rsx2_0.next = self.ks0_44.val();
@@ -637,11 +626,11 @@ impl Logic for Traversal {
             self.rsx1_2.next = self.ks0_44.val();
             self.rsx2_2.next = self.ks0_44.val();
             self.rsx4_2.next = self.ks0_44.val();
+            self.ra1.next = self.ks0_56.val();
+            self.ra2.next = self.ks0_56.val();
+            self.ra4.next = self.ks0_56.val();
         }
         self.rec_ready.next = false;
-        self.step_r.d.next = self.kz3.val();
-        self.zv_r.d.next = false;
-        self.fsel_r.d.next = self.fsel.val();
         self.load_walk.next = false;
         self.load_clear.next = false;
         self.tok.next.kind = self.tok_none.val();
@@ -691,7 +680,9 @@ impl Logic for Traversal {
                         self.tok.next.x = self.x.q.val() + self.fsel10.val();
                         self.tok.next.y = self.y.q.val();
                     }
-                    self.zv_r.d.next = self.has_frag.val();
+                    if self.has_frag.val() {
+                        self.tok.next.z = self.depth.val();
+                    }
                     if self.walk_end.val() {
                         self.state.d.next = TravState::Idle;
                         // The next triangle or frame start is taken in this cycle.
@@ -715,7 +706,8 @@ impl Logic for Traversal {
                         self.e1.d.next = self.er1.q.val() + self.sy1.q.val();
                         self.er2.d.next = self.er2.q.val() + self.sy2.q.val();
                         self.e2.d.next = self.er2.q.val() + self.sy2.q.val();
-                        self.step_r.d.next = self.k6_3.val();
+                        self.rawh_row.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
+                        self.rawh.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
                         self.addr_row.d.next = self.addr_row.q.val() + self.width.val();
                         self.addr.d.next = self.addr_row.q.val() + self.width.val();
                     } else if self.nsel.val() == self.k1_3.val() {
@@ -729,7 +721,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.ew1_0.val();
                         self.e1.d.next = self.ew1_1.val();
                         self.e2.d.next = self.ew1_2.val();
-                        self.step_r.d.next = self.k1_3.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga1.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k1_20.val();
                     } else if self.nsel.val() == self.k2_3.val() {
                         self.x.d.next = self.x.q.val() + self.k2_10.val();
@@ -742,7 +734,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.ew2_0.val();
                         self.e1.d.next = self.ew2_1.val();
                         self.e2.d.next = self.ew2_2.val();
-                        self.step_r.d.next = self.k2_3.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga2.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k2_20.val();
                     } else if self.nsel.val() == self.k3_3.val() {
                         self.x.d.next = self.x.q.val() + self.k3_10.val();
@@ -755,7 +747,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.ew3_0.val();
                         self.e1.d.next = self.ew3_1.val();
                         self.e2.d.next = self.ew3_2.val();
-                        self.step_r.d.next = self.k3_3.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga3.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k3_20.val();
                     } else if self.long.val() {
                         self.x.d.next = self.x.q.val() + self.k16_10.val();
@@ -768,7 +760,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.ew15_0.val() + self.sx1_0.q.val();
                         self.e1.d.next = self.ew15_1.val() + self.sx1_1.q.val();
                         self.e2.d.next = self.ew15_2.val() + self.sx1_2.q.val();
-                        self.step_r.d.next = self.k5_3.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga16.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k16_20.val();
                     } else {
                         self.x.d.next = self.x.q.val() + self.k4_10.val();
@@ -781,7 +773,7 @@ impl Logic for Traversal {
                         self.e0.d.next = self.e0.q.val() + self.sx4_0.q.val();
                         self.e1.d.next = self.e1.q.val() + self.sx4_1.q.val();
                         self.e2.d.next = self.e2.q.val() + self.sx4_2.q.val();
-                        self.step_r.d.next = self.k4_3.val();
+                        self.rawh.d.next = self.rawh.q.val() + self.ga4.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k4_20.val();
                     }
                 }
@@ -843,74 +835,15 @@ impl Logic for Traversal {
             self.sx15_2.d.next = self.rsx4_2.val() + self.rsx4_2.val() + self.rsx4_2.val() + self.rsx2_2.val() + self.rsx1_2.val();
             self.sy2.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy2.val());
             self.nonpos2.d.next = self.rec_sx2.val().get_bit(29) | (self.rsx1_2.val() == self.ks0_44.val());
-            self.step_r.d.next = self.k7_3.val();
-            self.state.d.next = TravState::Walk;
-        }
-
-        // ---- The depth follower: one cycle behind the walk ----
-        // The record's depth plane, registered in every cycle; used after a load (`step_r` = 7).
-        self.raw_ld.d.next = self.rec_raw.val() + self.half.val();
-        self.ra_r.d.next = self.rec_a.val();
-        self.rb_r.d.next = self.rec_b.val();
-        // The depth of the token issued in the previous cycle: the raw value at its window's start
-        // plus fsel_r times A, rounded (a shift) and clamped.
-        self.fraw.next = self.rawh.q.val();
-        if self.fsel_r.q.val() == self.k1_2.val() {
-            self.fraw.next = self.rawh.q.val() + self.ga1.q.val();
-        }
-        if self.fsel_r.q.val() == self.k2_2.val() {
-            self.fraw.next = self.rawh.q.val() + self.ga2.q.val();
-        }
-        if self.fsel_r.q.val() == self.k3_2.val() {
-            self.fraw.next = self.rawh.q.val() + self.ga3.q.val();
-        }
-        self.rounded_u.next = unsigned_cast(self.fraw.val());
-        self.depth.next = self.rounded_u.val().get_bits::<24>(16);
-        if self.rounded_u.val().get_bits::<15>(40) != self.k0_15.val() {
-            self.depth.next = self.depth_max.val();
-        }
-        if self.fraw.val().get_bit(55) {
-            self.depth.next = self.k0_24.val();
-        }
-        self.tok_z.next = self.k0_24.val();
-        if self.zv_r.q.val() {
-            self.tok_z.next = self.depth.val();
-        }
-        // The step the walk took in the previous cycle, now taken by the depth registers.
-        self.ra1.next = self.ks0_56.val();
-        self.ra2.next = self.ks0_56.val();
-        self.ra4.next = self.ks0_56.val();
-        if self.step_r.q.val() == self.k1_3.val() {
-            self.rawh.d.next = self.rawh.q.val() + self.ga1.q.val();
-        }
-        if self.step_r.q.val() == self.k2_3.val() {
-            self.rawh.d.next = self.rawh.q.val() + self.ga2.q.val();
-        }
-        if self.step_r.q.val() == self.k3_3.val() {
-            self.rawh.d.next = self.rawh.q.val() + self.ga3.q.val();
-        }
-        if self.step_r.q.val() == self.k4_3.val() {
-            self.rawh.d.next = self.rawh.q.val() + self.ga4.q.val();
-        }
-        if self.step_r.q.val() == self.k5_3.val() {
-            self.rawh.d.next = self.rawh.q.val() + self.ga16.q.val();
-        }
-        if self.step_r.q.val() == self.k6_3.val() {
-            self.rawh_row.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
-            self.rawh.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
-        }
-        if self.step_r.q.val() == self.k7_3.val() {
-            self.ra1.next = signed_bit_cast_safe::<56, 40>(self.ra_r.q.val());
-            self.ra2.next = self.ra1.val() + self.ra1.val();
-            self.ra4.next = self.ra2.val() + self.ra2.val();
-            self.rawh.d.next = self.raw_ld.q.val();
-            self.rawh_row.d.next = self.raw_ld.q.val();
+            self.rawh.d.next = self.rec_raw.val() + self.half.val();
+            self.rawh_row.d.next = self.rec_raw.val() + self.half.val();
             self.ga1.d.next = self.ra1.val();
             self.ga2.d.next = self.ra2.val();
             self.ga3.d.next = self.ra2.val() + self.ra1.val();
             self.ga4.d.next = self.ra4.val();
             self.ga16.d.next = self.ra4.val() + self.ra4.val() + self.ra4.val() + self.ra4.val();
-            self.grad_b.d.next = signed_bit_cast_safe::<56, 40>(self.rb_r.q.val());
+            self.grad_b.d.next = signed_bit_cast_safe::<56, 40>(self.rec_b.val());
+            self.state.d.next = TravState::Walk;
         }
     }
 }

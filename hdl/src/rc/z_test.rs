@@ -16,8 +16,7 @@
 //! A token issued by the traversal in cycle t is registered in F0 in cycle t+1, which issues its Z and
 //! I read; it is in F1 in cycle t+2, when the read data arrive. F0 keeps the memory ports off the
 //! traversal's walk decision, which was the `rc` top's critical path while the read went out with the
-//! token (issue 15, item 5). The token's depth comes a cycle after the token (`tok_z`, formed off the
-//! walk's loop) and goes straight into F1, where it is first used. A read returns the memory's contents *before* the write of the same edge,
+//! token (issue 15, item 5). A read returns the memory's contents *before* the write of the same edge,
 //! so the only write a fragment can miss is the one performed at the end of the cycle of its read, i.e.
 //! by the token in F1 then. That write (address, data) is kept in a forwarding register and used
 //! instead of `z_rd_data` when the addresses match: a fragment of the next triangle on the same pixel
@@ -43,8 +42,6 @@ pub struct ZTest {
     pub clock: Signal<In, Clock>,
     // From the traversal
     pub tok: Signal<In, RcToken>,
-    /// The depth of the token issued in the previous cycle (the one now in F0): F1 takes it.
-    pub tok_z: Signal<In, Bits<24>>,
     // To the traversal
     /// A result token issued this cycle will find room in the result queue.
     pub result_free: Signal<Out, Bit>,
@@ -99,7 +96,6 @@ impl Default for ZTest {
         Self {
             clock: Default::default(),
             tok: Default::default(),
-            tok_z: Default::default(),
             result_free: Default::default(),
             z_re: Default::default(),
             z_rd_addr: Default::default(),
@@ -147,7 +143,6 @@ impl Logic for ZTest {
         // F0 takes every token and reads Z and I for a covered fragment; F1 takes F0's token.
         self.f0.d.next = self.tok.val();
         self.f1.d.next = self.f0.q.val();
-        self.f1.d.next.z = self.tok_z.val();
         self.z_re.next = (self.f0.q.val().kind == self.tok_frag.val()) & self.f0.q.val().covered;
         self.z_rd_addr.next = self.k0_20.val();
         if self.z_re.val() {
