@@ -189,6 +189,9 @@ pub struct Setup {
     s1_by0: DFF<Bits<10>>,
     s1_by1: DFF<Bits<10>>,
     s1_box_empty: DFF<Bit>,
+    /// det = 0, registered with det (issue 15 item 5: det's 44-bit zero test in front of S1's culling
+    /// decision and the leave chain was the RC's critical path once the walk looked ahead).
+    s1_det_zero: DFF<Bit>,
     // S2 `Edges`: the record, its phase and the dot units' operands (edge k: la*lb - ra*rb). The
     // multipliers read `*0` (unit a) and `*1` (unit b) straight from these registers, which move on
     // with the phases (issue 15 item 5: the phase's choice in front of the products was the RC's
@@ -327,6 +330,7 @@ pub struct Setup {
     dx20: Signal<Local, Signed<21>>,
     dy20: Signal<Local, Signed<21>>,
     det: Signal<Local, Signed<44>>,
+    det_eq: Signal<Local, Bit>,
     xmin: Signal<Local, Signed<20>>,
     xmax: Signal<Local, Signed<20>>,
     ymin: Signal<Local, Signed<20>>,
@@ -574,6 +578,7 @@ impl Setup {
             s1_by0: Default::default(),
             s1_by1: Default::default(),
             s1_box_empty: Default::default(),
+            s1_det_zero: Default::default(),
             s2_v: Default::default(),
             s2_phase: Default::default(),
             s2: Default::default(),
@@ -683,6 +688,7 @@ impl Setup {
             dx20: Default::default(),
             dy20: Default::default(),
             det: Default::default(),
+            det_eq: Default::default(),
             xmin: Default::default(),
             xmax: Default::default(),
             ymin: Default::default(),
@@ -873,7 +879,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, gb_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s1_det_zero, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, gb_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -935,7 +941,7 @@ impl Logic for Setup {
         if self.s1_v.q.val() {
             self.is_tri.next = self.s1.q.val().kind == self.kind_tri.val();
             self.det_neg.next = self.s1_det.q.val().get_bit(43);
-            self.det_zero.next = self.s1_det.q.val() == self.k0_44.val();
+            self.det_zero.next = self.s1_det_zero.q.val();
             self.is_front.next = self.det_neg.val();
             if self.s1.q.val().front_cw {
                 self.is_front.next = !self.det_neg.val();
@@ -1056,6 +1062,7 @@ impl Logic for Setup {
         self.v2x.next = self.zs20.val();
         self.v2y.next = self.zs20.val();
         self.det.next = self.zs44.val();
+        self.det_eq.next = false;
         if self.s0_v.q.val() {
             self.v0x.next = signed_cast(self.s0.q.val().x0);
             self.v0y.next = signed_cast(self.s0.q.val().y0);
@@ -1064,6 +1071,8 @@ impl Logic for Setup {
             self.v2x.next = signed_cast(self.s0.q.val().x2);
             self.v2y.next = signed_cast(self.s0.q.val().y2);
             self.det.next = signed_bit_cast_safe::<44, 42>(self.mul_d0.p.val()) - signed_bit_cast_safe::<44, 42>(self.mul_d1.p.val());
+            // det = 0 exactly when the two products are equal: a compare beside the subtraction.
+            self.det_eq.next = self.mul_d0.p.val() == self.mul_d1.p.val();
         }
         // det's products start on the command port: the multipliers take their operands at the edge
         // where S0 takes the command (issue 15 item 5: S0's deltas, products and difference in one cycle
@@ -1579,6 +1588,7 @@ impl Logic for Setup {
             self.s1_by0.d.next = self.box_y0_u.val().get_bits::<10>(0);
             self.s1_by1.d.next = self.box_y1_u.val().get_bits::<10>(0);
             self.s1_box_empty.d.next = self.box_empty.val();
+            self.s1_det_zero.d.next = self.det_eq.val();
         }
         if self.leave0.val() {
             self.s0_v.d.next = false;
