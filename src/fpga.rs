@@ -85,12 +85,14 @@ impl Device {
         }
     }
     /// yosys's synthesis command for the device (iCE40: SB_MAC16 only on the UltraPlus parts); `abc9`
-    /// adds `-abc9` on the ECP5 only.
+    /// adds `-abc9` on the ECP5 only, after `proc; splitnets`: without the split, yosys's ABC9
+    /// reintegration can stop on ``Assert `count_id(cell->name) == 0' `` (YosysHQ/yosys#4451; the
+    /// chipset with the look-ahead walk hit it under yosys 0.23).
     fn synth(self, abc9: bool) -> &'static str {
         match self {
             Device::Up5k => "synth_ice40 -dsp",
             Device::Hx8k => "synth_ice40",
-            Device::Ecp5_45k | Device::Ecp5_85k if abc9 => "synth_ecp5 -abc9",
+            Device::Ecp5_45k | Device::Ecp5_85k if abc9 => "proc; splitnets; synth_ecp5 -abc9",
             Device::Ecp5_45k | Device::Ecp5_85k => "synth_ecp5",
         }
     }
@@ -773,7 +775,7 @@ Warning: Max frequency for clock '$glbnet$clock$TRELLIS_IO_IN': 23.49 MHz (FAIL 
 
     #[test]
     fn abc9_changes_the_ecp5_synthesis_only() {
-        assert_eq!(Device::Ecp5_45k.synth(true), "synth_ecp5 -abc9");
+        assert_eq!(Device::Ecp5_45k.synth(true), "proc; splitnets; synth_ecp5 -abc9");
         assert_eq!(Device::Ecp5_85k.synth(false), "synth_ecp5");
         assert_eq!(Device::Up5k.synth(true), Device::Up5k.synth(false));
         assert_eq!(Device::Hx8k.synth(true), "synth_ice40");
