@@ -20,11 +20,14 @@
 //! * `Walk` at candidate x looks at x..=x+3 (not past the box): covered candidates by the signs of
 //!   the edge values there. Those signs are **registered a cycle ahead** (look-ahead, issue 15 item
 //!   5): with x the traversal holds, per edge, E at x and the signs of `E + j*step` for j = 1, 2, 3,
-//!   15. In the cycle at x it forms the edge values for every step it may take (x+1, +2, +3, +4,
-//!   +16, the next row's start, a load) and the signs at the window after each (offsets 2..7,
-//!   16..19, 31 from x; the next row's start `ern` is a register, its window four sums), and the
-//!   decision, made from flip-flops only, selects among them. The multiples j = 1..7, 15..19, 31
-//!   of the steps are registered when the triangle is loaded. It issues the first covered one as a
+//!   15. In the cycle at x the decision, made from flip-flops only, picks the step (x+1, +2, +3,
+//!   +4, +16, the next row's start, a load); the step's branch forms the new E and the signs at the
+//!   window after it (offsets 2..7, 16..19, 31 from x). The sums are independent of the decision,
+//!   which only selects among them. Offsets 1..4, 15, 16 add a registered multiple of the step to
+//!   E; offsets 5..7 add one to `E + 4*step`, 17..19 and 31 to `E + 16*step` (two adders in series,
+//!   off the decision's path). So six multiples (j = 1, 2, 3, 4, 15, 16) per edge are registered
+//!   when the triangle is loaded. The next row's start `ern` is a register, with its own window of
+//!   four sums. It issues the first covered one as a
 //!   fragment and goes on at the next covered one; with none left it skips past the window, or past 16 candidates (`long`) when none
 //!   is covered and an edge is negative at x and at x+15. It ends the row instead when the skip
 //!   reaches the box's edge, or an edge is negative at the skip's last candidate with a step that
@@ -148,30 +151,9 @@ pub struct Traversal {
     sx3_2: DFF<Signed<44>>,
     sx4_2: DFF<Signed<44>>,
     sx15_2: DFF<Signed<44>>,
-    sx5_0: DFF<Signed<44>>,
-    sx6_0: DFF<Signed<44>>,
-    sx7_0: DFF<Signed<44>>,
     sx16_0: DFF<Signed<44>>,
-    sx17_0: DFF<Signed<44>>,
-    sx18_0: DFF<Signed<44>>,
-    sx19_0: DFF<Signed<44>>,
-    sx31_0: DFF<Signed<44>>,
-    sx5_1: DFF<Signed<44>>,
-    sx6_1: DFF<Signed<44>>,
-    sx7_1: DFF<Signed<44>>,
     sx16_1: DFF<Signed<44>>,
-    sx17_1: DFF<Signed<44>>,
-    sx18_1: DFF<Signed<44>>,
-    sx19_1: DFF<Signed<44>>,
-    sx31_1: DFF<Signed<44>>,
-    sx5_2: DFF<Signed<44>>,
-    sx6_2: DFF<Signed<44>>,
-    sx7_2: DFF<Signed<44>>,
     sx16_2: DFF<Signed<44>>,
-    sx17_2: DFF<Signed<44>>,
-    sx18_2: DFF<Signed<44>>,
-    sx19_2: DFF<Signed<44>>,
-    sx31_2: DFF<Signed<44>>,
     // The look-ahead (issue 15 item 5): sJ_K is edge K negative at x+J, registered with the step
     // that leads to x, so the walk's decision starts from flip-flops, not from carry chains.
     s1_0: DFF<Bit>,
@@ -219,60 +201,9 @@ pub struct Traversal {
     ga16: DFF<Signed<56>>,
     grad_b: DFF<Signed<56>>,
 
-    // The candidates: cJ_K is edge K at x+J, rJ_K at the next row's start + J, rn_K the row after
-    // it; cov J: candidate x+J is covered and inside the box; fsel the first covered one, nsel the
-    // next candidate after this clock.
-    c1_0: Signal<Local, Signed<44>>,
-    c2_0: Signal<Local, Signed<44>>,
-    c3_0: Signal<Local, Signed<44>>,
-    c4_0: Signal<Local, Signed<44>>,
-    c5_0: Signal<Local, Signed<44>>,
-    c6_0: Signal<Local, Signed<44>>,
-    c7_0: Signal<Local, Signed<44>>,
-    c16_0: Signal<Local, Signed<44>>,
-    c17_0: Signal<Local, Signed<44>>,
-    c18_0: Signal<Local, Signed<44>>,
-    c19_0: Signal<Local, Signed<44>>,
-    c31_0: Signal<Local, Signed<44>>,
-    c1_1: Signal<Local, Signed<44>>,
-    c2_1: Signal<Local, Signed<44>>,
-    c3_1: Signal<Local, Signed<44>>,
-    c4_1: Signal<Local, Signed<44>>,
-    c5_1: Signal<Local, Signed<44>>,
-    c6_1: Signal<Local, Signed<44>>,
-    c7_1: Signal<Local, Signed<44>>,
-    c16_1: Signal<Local, Signed<44>>,
-    c17_1: Signal<Local, Signed<44>>,
-    c18_1: Signal<Local, Signed<44>>,
-    c19_1: Signal<Local, Signed<44>>,
-    c31_1: Signal<Local, Signed<44>>,
-    c1_2: Signal<Local, Signed<44>>,
-    c2_2: Signal<Local, Signed<44>>,
-    c3_2: Signal<Local, Signed<44>>,
-    c4_2: Signal<Local, Signed<44>>,
-    c5_2: Signal<Local, Signed<44>>,
-    c6_2: Signal<Local, Signed<44>>,
-    c7_2: Signal<Local, Signed<44>>,
-    c16_2: Signal<Local, Signed<44>>,
-    c17_2: Signal<Local, Signed<44>>,
-    c18_2: Signal<Local, Signed<44>>,
-    c19_2: Signal<Local, Signed<44>>,
-    c31_2: Signal<Local, Signed<44>>,
-    r1_0: Signal<Local, Signed<44>>,
-    r2_0: Signal<Local, Signed<44>>,
-    r3_0: Signal<Local, Signed<44>>,
-    r15_0: Signal<Local, Signed<44>>,
-    r1_1: Signal<Local, Signed<44>>,
-    r2_1: Signal<Local, Signed<44>>,
-    r3_1: Signal<Local, Signed<44>>,
-    r15_1: Signal<Local, Signed<44>>,
-    r1_2: Signal<Local, Signed<44>>,
-    r2_2: Signal<Local, Signed<44>>,
-    r3_2: Signal<Local, Signed<44>>,
-    r15_2: Signal<Local, Signed<44>>,
-    rn_0: Signal<Local, Signed<44>>,
-    rn_1: Signal<Local, Signed<44>>,
-    rn_2: Signal<Local, Signed<44>>,
+    // The candidates: tJ_K is edge K at the window after the step taken, + J (J = 1, 2, 3, 15), whose
+    // sign the step's branch registers in sJ_K; cov J: candidate x+J is covered and inside the box;
+    // fsel the first covered one, nsel the next candidate after this clock.
     lw: Signal<Local, Bits<10>>,
     cov0: Signal<Local, Bit>,
     cov1: Signal<Local, Bit>,
@@ -305,56 +236,35 @@ pub struct Traversal {
     rsx4_1: Signal<Local, Signed<44>>,
     rsx4_2: Signal<Local, Signed<44>>,
     rsx3_0: Signal<Local, Signed<44>>,
-    rsx8_0: Signal<Local, Signed<44>>,
     rsx15_0: Signal<Local, Signed<44>>,
     rsx16_0: Signal<Local, Signed<44>>,
-    rsx32_0: Signal<Local, Signed<44>>,
-    rsx5_0: Signal<Local, Signed<44>>,
-    rsx6_0: Signal<Local, Signed<44>>,
-    rsx7_0: Signal<Local, Signed<44>>,
-    rsx17_0: Signal<Local, Signed<44>>,
-    rsx18_0: Signal<Local, Signed<44>>,
-    rsx19_0: Signal<Local, Signed<44>>,
-    rsx31_0: Signal<Local, Signed<44>>,
     rsx3_1: Signal<Local, Signed<44>>,
-    rsx8_1: Signal<Local, Signed<44>>,
     rsx15_1: Signal<Local, Signed<44>>,
     rsx16_1: Signal<Local, Signed<44>>,
-    rsx32_1: Signal<Local, Signed<44>>,
-    rsx5_1: Signal<Local, Signed<44>>,
-    rsx6_1: Signal<Local, Signed<44>>,
-    rsx7_1: Signal<Local, Signed<44>>,
-    rsx17_1: Signal<Local, Signed<44>>,
-    rsx18_1: Signal<Local, Signed<44>>,
-    rsx19_1: Signal<Local, Signed<44>>,
-    rsx31_1: Signal<Local, Signed<44>>,
     rsx3_2: Signal<Local, Signed<44>>,
-    rsx8_2: Signal<Local, Signed<44>>,
     rsx15_2: Signal<Local, Signed<44>>,
     rsx16_2: Signal<Local, Signed<44>>,
-    rsx32_2: Signal<Local, Signed<44>>,
-    rsx5_2: Signal<Local, Signed<44>>,
-    rsx6_2: Signal<Local, Signed<44>>,
-    rsx7_2: Signal<Local, Signed<44>>,
-    rsx17_2: Signal<Local, Signed<44>>,
-    rsx18_2: Signal<Local, Signed<44>>,
-    rsx19_2: Signal<Local, Signed<44>>,
-    rsx31_2: Signal<Local, Signed<44>>,
+    c4_0: Signal<Local, Signed<44>>,
+    c16_0: Signal<Local, Signed<44>>,
+    c4_1: Signal<Local, Signed<44>>,
+    c16_1: Signal<Local, Signed<44>>,
+    c4_2: Signal<Local, Signed<44>>,
+    c16_2: Signal<Local, Signed<44>>,
+    t1_0: Signal<Local, Signed<44>>,
+    t2_0: Signal<Local, Signed<44>>,
+    t3_0: Signal<Local, Signed<44>>,
+    t15_0: Signal<Local, Signed<44>>,
+    t1_1: Signal<Local, Signed<44>>,
+    t2_1: Signal<Local, Signed<44>>,
+    t3_1: Signal<Local, Signed<44>>,
+    t15_1: Signal<Local, Signed<44>>,
+    t1_2: Signal<Local, Signed<44>>,
+    t2_2: Signal<Local, Signed<44>>,
+    t3_2: Signal<Local, Signed<44>>,
+    t15_2: Signal<Local, Signed<44>>,
     ub0: Signal<Local, Bits<44>>,
     ub1: Signal<Local, Bits<44>>,
     ub2: Signal<Local, Bits<44>>,
-    ls1_0: Signal<Local, Signed<44>>,
-    ls2_0: Signal<Local, Signed<44>>,
-    ls3_0: Signal<Local, Signed<44>>,
-    ls15_0: Signal<Local, Signed<44>>,
-    ls1_1: Signal<Local, Signed<44>>,
-    ls2_1: Signal<Local, Signed<44>>,
-    ls3_1: Signal<Local, Signed<44>>,
-    ls15_1: Signal<Local, Signed<44>>,
-    ls1_2: Signal<Local, Signed<44>>,
-    ls2_2: Signal<Local, Signed<44>>,
-    ls3_2: Signal<Local, Signed<44>>,
-    ls15_2: Signal<Local, Signed<44>>,
     lrn_0: Signal<Local, Signed<44>>,
     lrn_1: Signal<Local, Signed<44>>,
     lrn_2: Signal<Local, Signed<44>>,
@@ -399,9 +309,7 @@ pub struct Traversal {
     k0_2: Constant<Bits<2>>,
     k1_6: Constant<Bits<6>>,
     k2_6: Constant<Bits<6>>,
-    k3_6: Constant<Bits<6>>,
     k4_6: Constant<Bits<6>>,
-    k5_6: Constant<Bits<6>>,
     k1_2: Constant<Bits<2>>,
     k2_2: Constant<Bits<2>>,
     k3_2: Constant<Bits<2>>,
@@ -477,30 +385,9 @@ impl Traversal {
             sx3_2: Default::default(),
             sx4_2: Default::default(),
             sx15_2: Default::default(),
-            sx5_0: Default::default(),
-            sx6_0: Default::default(),
-            sx7_0: Default::default(),
             sx16_0: Default::default(),
-            sx17_0: Default::default(),
-            sx18_0: Default::default(),
-            sx19_0: Default::default(),
-            sx31_0: Default::default(),
-            sx5_1: Default::default(),
-            sx6_1: Default::default(),
-            sx7_1: Default::default(),
             sx16_1: Default::default(),
-            sx17_1: Default::default(),
-            sx18_1: Default::default(),
-            sx19_1: Default::default(),
-            sx31_1: Default::default(),
-            sx5_2: Default::default(),
-            sx6_2: Default::default(),
-            sx7_2: Default::default(),
             sx16_2: Default::default(),
-            sx17_2: Default::default(),
-            sx18_2: Default::default(),
-            sx19_2: Default::default(),
-            sx31_2: Default::default(),
             s1_0: Default::default(),
             s2_0: Default::default(),
             s3_0: Default::default(),
@@ -539,57 +426,6 @@ impl Traversal {
             ga4: Default::default(),
             ga16: Default::default(),
             grad_b: Default::default(),
-            c1_0: Default::default(),
-            c2_0: Default::default(),
-            c3_0: Default::default(),
-            c4_0: Default::default(),
-            c5_0: Default::default(),
-            c6_0: Default::default(),
-            c7_0: Default::default(),
-            c16_0: Default::default(),
-            c17_0: Default::default(),
-            c18_0: Default::default(),
-            c19_0: Default::default(),
-            c31_0: Default::default(),
-            c1_1: Default::default(),
-            c2_1: Default::default(),
-            c3_1: Default::default(),
-            c4_1: Default::default(),
-            c5_1: Default::default(),
-            c6_1: Default::default(),
-            c7_1: Default::default(),
-            c16_1: Default::default(),
-            c17_1: Default::default(),
-            c18_1: Default::default(),
-            c19_1: Default::default(),
-            c31_1: Default::default(),
-            c1_2: Default::default(),
-            c2_2: Default::default(),
-            c3_2: Default::default(),
-            c4_2: Default::default(),
-            c5_2: Default::default(),
-            c6_2: Default::default(),
-            c7_2: Default::default(),
-            c16_2: Default::default(),
-            c17_2: Default::default(),
-            c18_2: Default::default(),
-            c19_2: Default::default(),
-            c31_2: Default::default(),
-            r1_0: Default::default(),
-            r2_0: Default::default(),
-            r3_0: Default::default(),
-            r15_0: Default::default(),
-            r1_1: Default::default(),
-            r2_1: Default::default(),
-            r3_1: Default::default(),
-            r15_1: Default::default(),
-            r1_2: Default::default(),
-            r2_2: Default::default(),
-            r3_2: Default::default(),
-            r15_2: Default::default(),
-            rn_0: Default::default(),
-            rn_1: Default::default(),
-            rn_2: Default::default(),
             lw: Default::default(),
             cov0: Default::default(),
             cov1: Default::default(),
@@ -622,56 +458,35 @@ impl Traversal {
             rsx4_1: Default::default(),
             rsx4_2: Default::default(),
             rsx3_0: Default::default(),
-            rsx8_0: Default::default(),
             rsx15_0: Default::default(),
             rsx16_0: Default::default(),
-            rsx32_0: Default::default(),
-            rsx5_0: Default::default(),
-            rsx6_0: Default::default(),
-            rsx7_0: Default::default(),
-            rsx17_0: Default::default(),
-            rsx18_0: Default::default(),
-            rsx19_0: Default::default(),
-            rsx31_0: Default::default(),
             rsx3_1: Default::default(),
-            rsx8_1: Default::default(),
             rsx15_1: Default::default(),
             rsx16_1: Default::default(),
-            rsx32_1: Default::default(),
-            rsx5_1: Default::default(),
-            rsx6_1: Default::default(),
-            rsx7_1: Default::default(),
-            rsx17_1: Default::default(),
-            rsx18_1: Default::default(),
-            rsx19_1: Default::default(),
-            rsx31_1: Default::default(),
             rsx3_2: Default::default(),
-            rsx8_2: Default::default(),
             rsx15_2: Default::default(),
             rsx16_2: Default::default(),
-            rsx32_2: Default::default(),
-            rsx5_2: Default::default(),
-            rsx6_2: Default::default(),
-            rsx7_2: Default::default(),
-            rsx17_2: Default::default(),
-            rsx18_2: Default::default(),
-            rsx19_2: Default::default(),
-            rsx31_2: Default::default(),
+            c4_0: Default::default(),
+            c16_0: Default::default(),
+            c4_1: Default::default(),
+            c16_1: Default::default(),
+            c4_2: Default::default(),
+            c16_2: Default::default(),
+            t1_0: Default::default(),
+            t2_0: Default::default(),
+            t3_0: Default::default(),
+            t15_0: Default::default(),
+            t1_1: Default::default(),
+            t2_1: Default::default(),
+            t3_1: Default::default(),
+            t15_1: Default::default(),
+            t1_2: Default::default(),
+            t2_2: Default::default(),
+            t3_2: Default::default(),
+            t15_2: Default::default(),
             ub0: Default::default(),
             ub1: Default::default(),
             ub2: Default::default(),
-            ls1_0: Default::default(),
-            ls2_0: Default::default(),
-            ls3_0: Default::default(),
-            ls15_0: Default::default(),
-            ls1_1: Default::default(),
-            ls2_1: Default::default(),
-            ls3_1: Default::default(),
-            ls15_1: Default::default(),
-            ls1_2: Default::default(),
-            ls2_2: Default::default(),
-            ls3_2: Default::default(),
-            ls15_2: Default::default(),
             lrn_0: Default::default(),
             lrn_1: Default::default(),
             lrn_2: Default::default(),
@@ -715,9 +530,7 @@ impl Traversal {
             k0_2: Constant::new(0.into()),
             k1_6: Constant::new(1.into()),
             k2_6: Constant::new(2.into()),
-            k3_6: Constant::new(3.into()),
             k4_6: Constant::new(4.into()),
-            k5_6: Constant::new(5.into()),
             k1_2: Constant::new(1.into()),
             k2_2: Constant::new(2.into()),
             k3_2: Constant::new(3.into()),
@@ -740,63 +553,33 @@ impl Logic for Traversal {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, ern0, ern1, ern2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sx5_0, sx6_0, sx7_0, sx16_0, sx17_0, sx18_0, sx19_0, sx31_0, sx5_1, sx6_1, sx7_1, sx16_1, sx17_1, sx18_1, sx19_1, sx31_1, sx5_2, sx6_2, sx7_2, sx16_2, sx17_2, sx18_2, sx19_2, sx31_2, s1_0, s2_0, s3_0, s15_0, s1_1, s2_1, s3_1, s15_1, s1_2, s2_2, s3_2, s15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
+            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, ern0, ern1, ern2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sx16_0, sx16_1, sx16_2, s1_0, s2_0, s3_0, s15_0, s1_1, s2_1, s3_1, s15_1, s1_2, s2_2, s3_2, s15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
         );
+        // The sums behind the look-ahead signs of the step taken (set in its branch below).
+        self.t1_0.next = self.ks0_44.val();
+        self.t2_0.next = self.ks0_44.val();
+        self.t3_0.next = self.ks0_44.val();
+        self.t15_0.next = self.ks0_44.val();
+        self.t1_1.next = self.ks0_44.val();
+        self.t2_1.next = self.ks0_44.val();
+        self.t3_1.next = self.ks0_44.val();
+        self.t15_1.next = self.ks0_44.val();
+        self.t1_2.next = self.ks0_44.val();
+        self.t2_2.next = self.ks0_44.val();
+        self.t3_2.next = self.ks0_44.val();
+        self.t15_2.next = self.ks0_44.val();
         if self.state.q.val() == TravState::Walk {
             // ---- The window at (x, y) ----
-            // The candidates' edge values for every step the decision may take (x+1..x+4, x+16, the next
-            // row), and the look-ahead signs at the window after each: formed whatever the decision.
-            self.c1_0.next = self.e0.q.val() + self.sx1_0.q.val();
-            self.c2_0.next = self.e0.q.val() + self.sx2_0.q.val();
-            self.c3_0.next = self.e0.q.val() + self.sx3_0.q.val();
+            // The covered candidates, from the look-ahead signs only. The edge values of the step taken
+            // and the signs at the window after it are summed in the step's branch below (every step's
+            // sums are independent of the decision, which only selects among them; written per branch,
+            // the RustHDL simulation forms only the taken step's sums).
             self.c4_0.next = self.e0.q.val() + self.sx4_0.q.val();
-            self.c5_0.next = self.e0.q.val() + self.sx5_0.q.val();
-            self.c6_0.next = self.e0.q.val() + self.sx6_0.q.val();
-            self.c7_0.next = self.e0.q.val() + self.sx7_0.q.val();
             self.c16_0.next = self.e0.q.val() + self.sx16_0.q.val();
-            self.c17_0.next = self.e0.q.val() + self.sx17_0.q.val();
-            self.c18_0.next = self.e0.q.val() + self.sx18_0.q.val();
-            self.c19_0.next = self.e0.q.val() + self.sx19_0.q.val();
-            self.c31_0.next = self.e0.q.val() + self.sx31_0.q.val();
-            self.c1_1.next = self.e1.q.val() + self.sx1_1.q.val();
-            self.c2_1.next = self.e1.q.val() + self.sx2_1.q.val();
-            self.c3_1.next = self.e1.q.val() + self.sx3_1.q.val();
             self.c4_1.next = self.e1.q.val() + self.sx4_1.q.val();
-            self.c5_1.next = self.e1.q.val() + self.sx5_1.q.val();
-            self.c6_1.next = self.e1.q.val() + self.sx6_1.q.val();
-            self.c7_1.next = self.e1.q.val() + self.sx7_1.q.val();
             self.c16_1.next = self.e1.q.val() + self.sx16_1.q.val();
-            self.c17_1.next = self.e1.q.val() + self.sx17_1.q.val();
-            self.c18_1.next = self.e1.q.val() + self.sx18_1.q.val();
-            self.c19_1.next = self.e1.q.val() + self.sx19_1.q.val();
-            self.c31_1.next = self.e1.q.val() + self.sx31_1.q.val();
-            self.c1_2.next = self.e2.q.val() + self.sx1_2.q.val();
-            self.c2_2.next = self.e2.q.val() + self.sx2_2.q.val();
-            self.c3_2.next = self.e2.q.val() + self.sx3_2.q.val();
             self.c4_2.next = self.e2.q.val() + self.sx4_2.q.val();
-            self.c5_2.next = self.e2.q.val() + self.sx5_2.q.val();
-            self.c6_2.next = self.e2.q.val() + self.sx6_2.q.val();
-            self.c7_2.next = self.e2.q.val() + self.sx7_2.q.val();
             self.c16_2.next = self.e2.q.val() + self.sx16_2.q.val();
-            self.c17_2.next = self.e2.q.val() + self.sx17_2.q.val();
-            self.c18_2.next = self.e2.q.val() + self.sx18_2.q.val();
-            self.c19_2.next = self.e2.q.val() + self.sx19_2.q.val();
-            self.c31_2.next = self.e2.q.val() + self.sx31_2.q.val();
-            self.r1_0.next = self.ern0.q.val() + self.sx1_0.q.val();
-            self.r2_0.next = self.ern0.q.val() + self.sx2_0.q.val();
-            self.r3_0.next = self.ern0.q.val() + self.sx3_0.q.val();
-            self.r15_0.next = self.ern0.q.val() + self.sx15_0.q.val();
-            self.r1_1.next = self.ern1.q.val() + self.sx1_1.q.val();
-            self.r2_1.next = self.ern1.q.val() + self.sx2_1.q.val();
-            self.r3_1.next = self.ern1.q.val() + self.sx3_1.q.val();
-            self.r15_1.next = self.ern1.q.val() + self.sx15_1.q.val();
-            self.r1_2.next = self.ern2.q.val() + self.sx1_2.q.val();
-            self.r2_2.next = self.ern2.q.val() + self.sx2_2.q.val();
-            self.r3_2.next = self.ern2.q.val() + self.sx3_2.q.val();
-            self.r15_2.next = self.ern2.q.val() + self.sx15_2.q.val();
-            self.rn_0.next = self.ern0.q.val() + self.sy0.q.val();
-            self.rn_1.next = self.ern1.q.val() + self.sy1.q.val();
-            self.rn_2.next = self.ern2.q.val() + self.sy2.q.val();
             self.cov0.next = !self.e0.q.val().get_bit(43) & !self.e1.q.val().get_bit(43) & !self.e2.q.val().get_bit(43);
             self.cov1.next = !self.s1_0.q.val() & !self.s1_1.q.val() & !self.s1_2.q.val() & self.rg0.q.val();
             self.cov2.next = !self.s2_0.q.val() & !self.s2_1.q.val() & !self.s2_2.q.val() & self.rg1.q.val();
@@ -888,57 +671,12 @@ impl Logic for Traversal {
                 self.depth.next = self.k0_24.val();
             }
         } else {
-            self.c1_0.next = self.ks0_44.val();
-            self.c2_0.next = self.ks0_44.val();
-            self.c3_0.next = self.ks0_44.val();
             self.c4_0.next = self.ks0_44.val();
-            self.c5_0.next = self.ks0_44.val();
-            self.c6_0.next = self.ks0_44.val();
-            self.c7_0.next = self.ks0_44.val();
             self.c16_0.next = self.ks0_44.val();
-            self.c17_0.next = self.ks0_44.val();
-            self.c18_0.next = self.ks0_44.val();
-            self.c19_0.next = self.ks0_44.val();
-            self.c31_0.next = self.ks0_44.val();
-            self.c1_1.next = self.ks0_44.val();
-            self.c2_1.next = self.ks0_44.val();
-            self.c3_1.next = self.ks0_44.val();
             self.c4_1.next = self.ks0_44.val();
-            self.c5_1.next = self.ks0_44.val();
-            self.c6_1.next = self.ks0_44.val();
-            self.c7_1.next = self.ks0_44.val();
             self.c16_1.next = self.ks0_44.val();
-            self.c17_1.next = self.ks0_44.val();
-            self.c18_1.next = self.ks0_44.val();
-            self.c19_1.next = self.ks0_44.val();
-            self.c31_1.next = self.ks0_44.val();
-            self.c1_2.next = self.ks0_44.val();
-            self.c2_2.next = self.ks0_44.val();
-            self.c3_2.next = self.ks0_44.val();
             self.c4_2.next = self.ks0_44.val();
-            self.c5_2.next = self.ks0_44.val();
-            self.c6_2.next = self.ks0_44.val();
-            self.c7_2.next = self.ks0_44.val();
             self.c16_2.next = self.ks0_44.val();
-            self.c17_2.next = self.ks0_44.val();
-            self.c18_2.next = self.ks0_44.val();
-            self.c19_2.next = self.ks0_44.val();
-            self.c31_2.next = self.ks0_44.val();
-            self.r1_0.next = self.ks0_44.val();
-            self.r2_0.next = self.ks0_44.val();
-            self.r3_0.next = self.ks0_44.val();
-            self.r15_0.next = self.ks0_44.val();
-            self.r1_1.next = self.ks0_44.val();
-            self.r2_1.next = self.ks0_44.val();
-            self.r3_1.next = self.ks0_44.val();
-            self.r15_1.next = self.ks0_44.val();
-            self.r1_2.next = self.ks0_44.val();
-            self.r2_2.next = self.ks0_44.val();
-            self.r3_2.next = self.ks0_44.val();
-            self.r15_2.next = self.ks0_44.val();
-            self.rn_0.next = self.ks0_44.val();
-            self.rn_1.next = self.ks0_44.val();
-            self.rn_2.next = self.ks0_44.val();
             self.cov0.next = false;
             self.cov1.next = false;
             self.cov2.next = false;
@@ -964,64 +702,25 @@ impl Logic for Traversal {
             self.ub0.next = unsigned_cast(self.rsx1_0.val());
             self.rsx2_0.next = signed_cast(self.ub0.val() << self.k1_6.val());
             self.rsx4_0.next = signed_cast(self.ub0.val() << self.k2_6.val());
-            self.rsx8_0.next = signed_cast(self.ub0.val() << self.k3_6.val());
             self.rsx16_0.next = signed_cast(self.ub0.val() << self.k4_6.val());
-            self.rsx32_0.next = signed_cast(self.ub0.val() << self.k5_6.val());
             self.rsx3_0.next = self.rsx2_0.val() + self.rsx1_0.val();
-            self.rsx5_0.next = self.rsx4_0.val() + self.rsx1_0.val();
-            self.rsx6_0.next = self.rsx4_0.val() + self.rsx2_0.val();
-            self.rsx7_0.next = self.rsx8_0.val() - self.rsx1_0.val();
             self.rsx15_0.next = self.rsx16_0.val() - self.rsx1_0.val();
-            self.rsx17_0.next = self.rsx16_0.val() + self.rsx1_0.val();
-            self.rsx18_0.next = self.rsx16_0.val() + self.rsx2_0.val();
-            self.rsx19_0.next = self.rsx16_0.val() + self.rsx3_0.val();
-            self.rsx31_0.next = self.rsx32_0.val() - self.rsx1_0.val();
-            self.ls1_0.next = self.rec_e0.val() + self.rsx1_0.val();
-            self.ls2_0.next = self.rec_e0.val() + self.rsx2_0.val();
-            self.ls3_0.next = self.rec_e0.val() + self.rsx3_0.val();
-            self.ls15_0.next = self.rec_e0.val() + self.rsx15_0.val();
             self.lrn_0.next = self.rec_e0.val() + signed_bit_cast_safe::<44, 30>(self.rec_sy0.val());
             self.rsx1_1.next = signed_bit_cast_safe::<44, 30>(self.rec_sx1.val());
             self.ub1.next = unsigned_cast(self.rsx1_1.val());
             self.rsx2_1.next = signed_cast(self.ub1.val() << self.k1_6.val());
             self.rsx4_1.next = signed_cast(self.ub1.val() << self.k2_6.val());
-            self.rsx8_1.next = signed_cast(self.ub1.val() << self.k3_6.val());
             self.rsx16_1.next = signed_cast(self.ub1.val() << self.k4_6.val());
-            self.rsx32_1.next = signed_cast(self.ub1.val() << self.k5_6.val());
             self.rsx3_1.next = self.rsx2_1.val() + self.rsx1_1.val();
-            self.rsx5_1.next = self.rsx4_1.val() + self.rsx1_1.val();
-            self.rsx6_1.next = self.rsx4_1.val() + self.rsx2_1.val();
-            self.rsx7_1.next = self.rsx8_1.val() - self.rsx1_1.val();
             self.rsx15_1.next = self.rsx16_1.val() - self.rsx1_1.val();
-            self.rsx17_1.next = self.rsx16_1.val() + self.rsx1_1.val();
-            self.rsx18_1.next = self.rsx16_1.val() + self.rsx2_1.val();
-            self.rsx19_1.next = self.rsx16_1.val() + self.rsx3_1.val();
-            self.rsx31_1.next = self.rsx32_1.val() - self.rsx1_1.val();
-            self.ls1_1.next = self.rec_e1.val() + self.rsx1_1.val();
-            self.ls2_1.next = self.rec_e1.val() + self.rsx2_1.val();
-            self.ls3_1.next = self.rec_e1.val() + self.rsx3_1.val();
-            self.ls15_1.next = self.rec_e1.val() + self.rsx15_1.val();
             self.lrn_1.next = self.rec_e1.val() + signed_bit_cast_safe::<44, 30>(self.rec_sy1.val());
             self.rsx1_2.next = signed_bit_cast_safe::<44, 30>(self.rec_sx2.val());
             self.ub2.next = unsigned_cast(self.rsx1_2.val());
             self.rsx2_2.next = signed_cast(self.ub2.val() << self.k1_6.val());
             self.rsx4_2.next = signed_cast(self.ub2.val() << self.k2_6.val());
-            self.rsx8_2.next = signed_cast(self.ub2.val() << self.k3_6.val());
             self.rsx16_2.next = signed_cast(self.ub2.val() << self.k4_6.val());
-            self.rsx32_2.next = signed_cast(self.ub2.val() << self.k5_6.val());
             self.rsx3_2.next = self.rsx2_2.val() + self.rsx1_2.val();
-            self.rsx5_2.next = self.rsx4_2.val() + self.rsx1_2.val();
-            self.rsx6_2.next = self.rsx4_2.val() + self.rsx2_2.val();
-            self.rsx7_2.next = self.rsx8_2.val() - self.rsx1_2.val();
             self.rsx15_2.next = self.rsx16_2.val() - self.rsx1_2.val();
-            self.rsx17_2.next = self.rsx16_2.val() + self.rsx1_2.val();
-            self.rsx18_2.next = self.rsx16_2.val() + self.rsx2_2.val();
-            self.rsx19_2.next = self.rsx16_2.val() + self.rsx3_2.val();
-            self.rsx31_2.next = self.rsx32_2.val() - self.rsx1_2.val();
-            self.ls1_2.next = self.rec_e2.val() + self.rsx1_2.val();
-            self.ls2_2.next = self.rec_e2.val() + self.rsx2_2.val();
-            self.ls3_2.next = self.rec_e2.val() + self.rsx3_2.val();
-            self.ls15_2.next = self.rec_e2.val() + self.rsx15_2.val();
             self.lrn_2.next = self.rec_e2.val() + signed_bit_cast_safe::<44, 30>(self.rec_sy2.val());
             self.ra1.next = signed_bit_cast_safe::<56, 40>(self.rec_a.val());
             self.ra2.next = self.ra1.val() + self.ra1.val();
@@ -1033,63 +732,24 @@ impl Logic for Traversal {
             self.rsx4_0.next = self.ks0_44.val();
             self.ub0.next = self.kz44.val();
             self.rsx3_0.next = self.ks0_44.val();
-            self.rsx8_0.next = self.ks0_44.val();
             self.rsx15_0.next = self.ks0_44.val();
             self.rsx16_0.next = self.ks0_44.val();
-            self.rsx32_0.next = self.ks0_44.val();
-            self.rsx5_0.next = self.ks0_44.val();
-            self.rsx6_0.next = self.ks0_44.val();
-            self.rsx7_0.next = self.ks0_44.val();
-            self.rsx17_0.next = self.ks0_44.val();
-            self.rsx18_0.next = self.ks0_44.val();
-            self.rsx19_0.next = self.ks0_44.val();
-            self.rsx31_0.next = self.ks0_44.val();
-            self.ls1_0.next = self.ks0_44.val();
-            self.ls2_0.next = self.ks0_44.val();
-            self.ls3_0.next = self.ks0_44.val();
-            self.ls15_0.next = self.ks0_44.val();
             self.lrn_0.next = self.ks0_44.val();
             self.rsx1_1.next = self.ks0_44.val();
             self.rsx2_1.next = self.ks0_44.val();
             self.rsx4_1.next = self.ks0_44.val();
             self.ub1.next = self.kz44.val();
             self.rsx3_1.next = self.ks0_44.val();
-            self.rsx8_1.next = self.ks0_44.val();
             self.rsx15_1.next = self.ks0_44.val();
             self.rsx16_1.next = self.ks0_44.val();
-            self.rsx32_1.next = self.ks0_44.val();
-            self.rsx5_1.next = self.ks0_44.val();
-            self.rsx6_1.next = self.ks0_44.val();
-            self.rsx7_1.next = self.ks0_44.val();
-            self.rsx17_1.next = self.ks0_44.val();
-            self.rsx18_1.next = self.ks0_44.val();
-            self.rsx19_1.next = self.ks0_44.val();
-            self.rsx31_1.next = self.ks0_44.val();
-            self.ls1_1.next = self.ks0_44.val();
-            self.ls2_1.next = self.ks0_44.val();
-            self.ls3_1.next = self.ks0_44.val();
-            self.ls15_1.next = self.ks0_44.val();
             self.lrn_1.next = self.ks0_44.val();
             self.rsx1_2.next = self.ks0_44.val();
             self.rsx2_2.next = self.ks0_44.val();
             self.rsx4_2.next = self.ks0_44.val();
             self.ub2.next = self.kz44.val();
             self.rsx3_2.next = self.ks0_44.val();
-            self.rsx8_2.next = self.ks0_44.val();
             self.rsx15_2.next = self.ks0_44.val();
             self.rsx16_2.next = self.ks0_44.val();
-            self.rsx32_2.next = self.ks0_44.val();
-            self.rsx5_2.next = self.ks0_44.val();
-            self.rsx6_2.next = self.ks0_44.val();
-            self.rsx7_2.next = self.ks0_44.val();
-            self.rsx17_2.next = self.ks0_44.val();
-            self.rsx18_2.next = self.ks0_44.val();
-            self.rsx19_2.next = self.ks0_44.val();
-            self.rsx31_2.next = self.ks0_44.val();
-            self.ls1_2.next = self.ks0_44.val();
-            self.ls2_2.next = self.ks0_44.val();
-            self.ls3_2.next = self.ks0_44.val();
-            self.ls15_2.next = self.ks0_44.val();
             self.lrn_2.next = self.ks0_44.val();
             self.ra1.next = self.ks0_56.val();
             self.ra2.next = self.ks0_56.val();
@@ -1165,24 +825,36 @@ impl Logic for Traversal {
                         self.rg2.d.next = self.wg2.q.val();
                         self.rg3.d.next = self.wg3.q.val();
                         self.rg15.d.next = self.wg15.q.val();
-                        self.ern0.d.next = self.rn_0.val();
+                        self.ern0.d.next = self.ern0.q.val() + self.sy0.q.val();
                         self.e0.d.next = self.ern0.q.val();
-                        self.s1_0.d.next = self.r1_0.val().get_bit(43);
-                        self.s2_0.d.next = self.r2_0.val().get_bit(43);
-                        self.s3_0.d.next = self.r3_0.val().get_bit(43);
-                        self.s15_0.d.next = self.r15_0.val().get_bit(43);
-                        self.ern1.d.next = self.rn_1.val();
+                        self.t1_0.next = self.ern0.q.val() + self.sx1_0.q.val();
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
+                        self.t2_0.next = self.ern0.q.val() + self.sx2_0.q.val();
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
+                        self.t3_0.next = self.ern0.q.val() + self.sx3_0.q.val();
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
+                        self.t15_0.next = self.ern0.q.val() + self.sx15_0.q.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
+                        self.ern1.d.next = self.ern1.q.val() + self.sy1.q.val();
                         self.e1.d.next = self.ern1.q.val();
-                        self.s1_1.d.next = self.r1_1.val().get_bit(43);
-                        self.s2_1.d.next = self.r2_1.val().get_bit(43);
-                        self.s3_1.d.next = self.r3_1.val().get_bit(43);
-                        self.s15_1.d.next = self.r15_1.val().get_bit(43);
-                        self.ern2.d.next = self.rn_2.val();
+                        self.t1_1.next = self.ern1.q.val() + self.sx1_1.q.val();
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
+                        self.t2_1.next = self.ern1.q.val() + self.sx2_1.q.val();
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
+                        self.t3_1.next = self.ern1.q.val() + self.sx3_1.q.val();
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
+                        self.t15_1.next = self.ern1.q.val() + self.sx15_1.q.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
+                        self.ern2.d.next = self.ern2.q.val() + self.sy2.q.val();
                         self.e2.d.next = self.ern2.q.val();
-                        self.s1_2.d.next = self.r1_2.val().get_bit(43);
-                        self.s2_2.d.next = self.r2_2.val().get_bit(43);
-                        self.s3_2.d.next = self.r3_2.val().get_bit(43);
-                        self.s15_2.d.next = self.r15_2.val().get_bit(43);
+                        self.t1_2.next = self.ern2.q.val() + self.sx1_2.q.val();
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
+                        self.t2_2.next = self.ern2.q.val() + self.sx2_2.q.val();
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
+                        self.t3_2.next = self.ern2.q.val() + self.sx3_2.q.val();
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
+                        self.t15_2.next = self.ern2.q.val() + self.sx15_2.q.val();
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
                         self.rawh_row.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
                         self.rawh.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
                         self.addr_row.d.next = self.addr_row.q.val() + self.width.val();
@@ -1195,21 +867,33 @@ impl Logic for Traversal {
                         self.rg2.d.next = self.rm.q.val() > self.k3_10.val();
                         self.rg3.d.next = self.rm.q.val() > self.k4_10.val();
                         self.rg15.d.next = self.rm.q.val() > self.k16_10.val();
-                        self.e0.d.next = self.c1_0.val();
-                        self.s1_0.d.next = self.c2_0.val().get_bit(43);
-                        self.s2_0.d.next = self.c3_0.val().get_bit(43);
-                        self.s3_0.d.next = self.c4_0.val().get_bit(43);
-                        self.s15_0.d.next = self.c16_0.val().get_bit(43);
-                        self.e1.d.next = self.c1_1.val();
-                        self.s1_1.d.next = self.c2_1.val().get_bit(43);
-                        self.s2_1.d.next = self.c3_1.val().get_bit(43);
-                        self.s3_1.d.next = self.c4_1.val().get_bit(43);
-                        self.s15_1.d.next = self.c16_1.val().get_bit(43);
-                        self.e2.d.next = self.c1_2.val();
-                        self.s1_2.d.next = self.c2_2.val().get_bit(43);
-                        self.s2_2.d.next = self.c3_2.val().get_bit(43);
-                        self.s3_2.d.next = self.c4_2.val().get_bit(43);
-                        self.s15_2.d.next = self.c16_2.val().get_bit(43);
+                        self.e0.d.next = self.e0.q.val() + self.sx1_0.q.val();
+                        self.t1_0.next = self.e0.q.val() + self.sx2_0.q.val();
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
+                        self.t2_0.next = self.e0.q.val() + self.sx3_0.q.val();
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
+                        self.t3_0.next = self.c4_0.val();
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
+                        self.t15_0.next = self.c16_0.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
+                        self.e1.d.next = self.e1.q.val() + self.sx1_1.q.val();
+                        self.t1_1.next = self.e1.q.val() + self.sx2_1.q.val();
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
+                        self.t2_1.next = self.e1.q.val() + self.sx3_1.q.val();
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
+                        self.t3_1.next = self.c4_1.val();
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
+                        self.t15_1.next = self.c16_1.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
+                        self.e2.d.next = self.e2.q.val() + self.sx1_2.q.val();
+                        self.t1_2.next = self.e2.q.val() + self.sx2_2.q.val();
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
+                        self.t2_2.next = self.e2.q.val() + self.sx3_2.q.val();
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
+                        self.t3_2.next = self.c4_2.val();
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
+                        self.t15_2.next = self.c16_2.val();
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
                         self.rawh.d.next = self.rawh.q.val() + self.ga1.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k1_20.val();
                     } else if self.nsel.val() == self.k2_3.val() {
@@ -1220,21 +904,33 @@ impl Logic for Traversal {
                         self.rg2.d.next = self.rm.q.val() > self.k4_10.val();
                         self.rg3.d.next = self.rm.q.val() > self.k5_10.val();
                         self.rg15.d.next = self.rm.q.val() > self.k17_10.val();
-                        self.e0.d.next = self.c2_0.val();
-                        self.s1_0.d.next = self.c3_0.val().get_bit(43);
-                        self.s2_0.d.next = self.c4_0.val().get_bit(43);
-                        self.s3_0.d.next = self.c5_0.val().get_bit(43);
-                        self.s15_0.d.next = self.c17_0.val().get_bit(43);
-                        self.e1.d.next = self.c2_1.val();
-                        self.s1_1.d.next = self.c3_1.val().get_bit(43);
-                        self.s2_1.d.next = self.c4_1.val().get_bit(43);
-                        self.s3_1.d.next = self.c5_1.val().get_bit(43);
-                        self.s15_1.d.next = self.c17_1.val().get_bit(43);
-                        self.e2.d.next = self.c2_2.val();
-                        self.s1_2.d.next = self.c3_2.val().get_bit(43);
-                        self.s2_2.d.next = self.c4_2.val().get_bit(43);
-                        self.s3_2.d.next = self.c5_2.val().get_bit(43);
-                        self.s15_2.d.next = self.c17_2.val().get_bit(43);
+                        self.e0.d.next = self.e0.q.val() + self.sx2_0.q.val();
+                        self.t1_0.next = self.e0.q.val() + self.sx3_0.q.val();
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
+                        self.t2_0.next = self.c4_0.val();
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
+                        self.t3_0.next = self.c4_0.val() + self.sx1_0.q.val();
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
+                        self.t15_0.next = self.c16_0.val() + self.sx1_0.q.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
+                        self.e1.d.next = self.e1.q.val() + self.sx2_1.q.val();
+                        self.t1_1.next = self.e1.q.val() + self.sx3_1.q.val();
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
+                        self.t2_1.next = self.c4_1.val();
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
+                        self.t3_1.next = self.c4_1.val() + self.sx1_1.q.val();
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
+                        self.t15_1.next = self.c16_1.val() + self.sx1_1.q.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
+                        self.e2.d.next = self.e2.q.val() + self.sx2_2.q.val();
+                        self.t1_2.next = self.e2.q.val() + self.sx3_2.q.val();
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
+                        self.t2_2.next = self.c4_2.val();
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
+                        self.t3_2.next = self.c4_2.val() + self.sx1_2.q.val();
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
+                        self.t15_2.next = self.c16_2.val() + self.sx1_2.q.val();
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
                         self.rawh.d.next = self.rawh.q.val() + self.ga2.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k2_20.val();
                     } else if self.nsel.val() == self.k3_3.val() {
@@ -1245,21 +941,33 @@ impl Logic for Traversal {
                         self.rg2.d.next = self.rm.q.val() > self.k5_10.val();
                         self.rg3.d.next = self.rm.q.val() > self.k6_10.val();
                         self.rg15.d.next = self.rm.q.val() > self.k18_10.val();
-                        self.e0.d.next = self.c3_0.val();
-                        self.s1_0.d.next = self.c4_0.val().get_bit(43);
-                        self.s2_0.d.next = self.c5_0.val().get_bit(43);
-                        self.s3_0.d.next = self.c6_0.val().get_bit(43);
-                        self.s15_0.d.next = self.c18_0.val().get_bit(43);
-                        self.e1.d.next = self.c3_1.val();
-                        self.s1_1.d.next = self.c4_1.val().get_bit(43);
-                        self.s2_1.d.next = self.c5_1.val().get_bit(43);
-                        self.s3_1.d.next = self.c6_1.val().get_bit(43);
-                        self.s15_1.d.next = self.c18_1.val().get_bit(43);
-                        self.e2.d.next = self.c3_2.val();
-                        self.s1_2.d.next = self.c4_2.val().get_bit(43);
-                        self.s2_2.d.next = self.c5_2.val().get_bit(43);
-                        self.s3_2.d.next = self.c6_2.val().get_bit(43);
-                        self.s15_2.d.next = self.c18_2.val().get_bit(43);
+                        self.e0.d.next = self.e0.q.val() + self.sx3_0.q.val();
+                        self.t1_0.next = self.c4_0.val();
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
+                        self.t2_0.next = self.c4_0.val() + self.sx1_0.q.val();
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
+                        self.t3_0.next = self.c4_0.val() + self.sx2_0.q.val();
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
+                        self.t15_0.next = self.c16_0.val() + self.sx2_0.q.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
+                        self.e1.d.next = self.e1.q.val() + self.sx3_1.q.val();
+                        self.t1_1.next = self.c4_1.val();
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
+                        self.t2_1.next = self.c4_1.val() + self.sx1_1.q.val();
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
+                        self.t3_1.next = self.c4_1.val() + self.sx2_1.q.val();
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
+                        self.t15_1.next = self.c16_1.val() + self.sx2_1.q.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
+                        self.e2.d.next = self.e2.q.val() + self.sx3_2.q.val();
+                        self.t1_2.next = self.c4_2.val();
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
+                        self.t2_2.next = self.c4_2.val() + self.sx1_2.q.val();
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
+                        self.t3_2.next = self.c4_2.val() + self.sx2_2.q.val();
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
+                        self.t15_2.next = self.c16_2.val() + self.sx2_2.q.val();
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
                         self.rawh.d.next = self.rawh.q.val() + self.ga3.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k3_20.val();
                     } else if self.long.val() {
@@ -1271,20 +979,32 @@ impl Logic for Traversal {
                         self.rg3.d.next = self.rm.q.val() > self.k19_10.val();
                         self.rg15.d.next = self.rm.q.val() > self.k31_10.val();
                         self.e0.d.next = self.c16_0.val();
-                        self.s1_0.d.next = self.c17_0.val().get_bit(43);
-                        self.s2_0.d.next = self.c18_0.val().get_bit(43);
-                        self.s3_0.d.next = self.c19_0.val().get_bit(43);
-                        self.s15_0.d.next = self.c31_0.val().get_bit(43);
+                        self.t1_0.next = self.c16_0.val() + self.sx1_0.q.val();
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
+                        self.t2_0.next = self.c16_0.val() + self.sx2_0.q.val();
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
+                        self.t3_0.next = self.c16_0.val() + self.sx3_0.q.val();
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
+                        self.t15_0.next = self.c16_0.val() + self.sx15_0.q.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
                         self.e1.d.next = self.c16_1.val();
-                        self.s1_1.d.next = self.c17_1.val().get_bit(43);
-                        self.s2_1.d.next = self.c18_1.val().get_bit(43);
-                        self.s3_1.d.next = self.c19_1.val().get_bit(43);
-                        self.s15_1.d.next = self.c31_1.val().get_bit(43);
+                        self.t1_1.next = self.c16_1.val() + self.sx1_1.q.val();
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
+                        self.t2_1.next = self.c16_1.val() + self.sx2_1.q.val();
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
+                        self.t3_1.next = self.c16_1.val() + self.sx3_1.q.val();
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
+                        self.t15_1.next = self.c16_1.val() + self.sx15_1.q.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
                         self.e2.d.next = self.c16_2.val();
-                        self.s1_2.d.next = self.c17_2.val().get_bit(43);
-                        self.s2_2.d.next = self.c18_2.val().get_bit(43);
-                        self.s3_2.d.next = self.c19_2.val().get_bit(43);
-                        self.s15_2.d.next = self.c31_2.val().get_bit(43);
+                        self.t1_2.next = self.c16_2.val() + self.sx1_2.q.val();
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
+                        self.t2_2.next = self.c16_2.val() + self.sx2_2.q.val();
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
+                        self.t3_2.next = self.c16_2.val() + self.sx3_2.q.val();
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
+                        self.t15_2.next = self.c16_2.val() + self.sx15_2.q.val();
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
                         self.rawh.d.next = self.rawh.q.val() + self.ga16.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k16_20.val();
                     } else {
@@ -1296,20 +1016,32 @@ impl Logic for Traversal {
                         self.rg3.d.next = self.rm.q.val() > self.k7_10.val();
                         self.rg15.d.next = self.rm.q.val() > self.k19_10.val();
                         self.e0.d.next = self.c4_0.val();
-                        self.s1_0.d.next = self.c5_0.val().get_bit(43);
-                        self.s2_0.d.next = self.c6_0.val().get_bit(43);
-                        self.s3_0.d.next = self.c7_0.val().get_bit(43);
-                        self.s15_0.d.next = self.c19_0.val().get_bit(43);
+                        self.t1_0.next = self.c4_0.val() + self.sx1_0.q.val();
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
+                        self.t2_0.next = self.c4_0.val() + self.sx2_0.q.val();
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
+                        self.t3_0.next = self.c4_0.val() + self.sx3_0.q.val();
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
+                        self.t15_0.next = self.c16_0.val() + self.sx3_0.q.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
                         self.e1.d.next = self.c4_1.val();
-                        self.s1_1.d.next = self.c5_1.val().get_bit(43);
-                        self.s2_1.d.next = self.c6_1.val().get_bit(43);
-                        self.s3_1.d.next = self.c7_1.val().get_bit(43);
-                        self.s15_1.d.next = self.c19_1.val().get_bit(43);
+                        self.t1_1.next = self.c4_1.val() + self.sx1_1.q.val();
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
+                        self.t2_1.next = self.c4_1.val() + self.sx2_1.q.val();
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
+                        self.t3_1.next = self.c4_1.val() + self.sx3_1.q.val();
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
+                        self.t15_1.next = self.c16_1.val() + self.sx3_1.q.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
                         self.e2.d.next = self.c4_2.val();
-                        self.s1_2.d.next = self.c5_2.val().get_bit(43);
-                        self.s2_2.d.next = self.c6_2.val().get_bit(43);
-                        self.s3_2.d.next = self.c7_2.val().get_bit(43);
-                        self.s15_2.d.next = self.c19_2.val().get_bit(43);
+                        self.t1_2.next = self.c4_2.val() + self.sx1_2.q.val();
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
+                        self.t2_2.next = self.c4_2.val() + self.sx2_2.q.val();
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
+                        self.t3_2.next = self.c4_2.val() + self.sx3_2.q.val();
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
+                        self.t15_2.next = self.c16_2.val() + self.sx3_2.q.val();
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
                         self.rawh.d.next = self.rawh.q.val() + self.ga4.q.val();
                         self.addr.d.next = self.addr.q.val() + self.k4_20.val();
                     }
@@ -1347,63 +1079,54 @@ impl Logic for Traversal {
             self.addr_row.d.next = self.rec_addr.val();
             self.e0.d.next = self.rec_e0.val();
             self.ern0.d.next = self.lrn_0.val();
-            self.s1_0.d.next = self.ls1_0.val().get_bit(43);
-            self.s2_0.d.next = self.ls2_0.val().get_bit(43);
-            self.s3_0.d.next = self.ls3_0.val().get_bit(43);
-            self.s15_0.d.next = self.ls15_0.val().get_bit(43);
+            self.t1_0.next = self.rec_e0.val() + self.rsx1_0.val();
+            self.s1_0.d.next = self.t1_0.val().get_bit(43);
+            self.t2_0.next = self.rec_e0.val() + self.rsx2_0.val();
+            self.s2_0.d.next = self.t2_0.val().get_bit(43);
+            self.t3_0.next = self.rec_e0.val() + self.rsx3_0.val();
+            self.s3_0.d.next = self.t3_0.val().get_bit(43);
+            self.t15_0.next = self.rec_e0.val() + self.rsx15_0.val();
+            self.s15_0.d.next = self.t15_0.val().get_bit(43);
             self.sx1_0.d.next = self.rsx1_0.val();
             self.sx2_0.d.next = self.rsx2_0.val();
             self.sx3_0.d.next = self.rsx3_0.val();
-            self.sx5_0.d.next = self.rsx5_0.val();
-            self.sx6_0.d.next = self.rsx6_0.val();
-            self.sx7_0.d.next = self.rsx7_0.val();
             self.sx16_0.d.next = self.rsx16_0.val();
-            self.sx17_0.d.next = self.rsx17_0.val();
-            self.sx18_0.d.next = self.rsx18_0.val();
-            self.sx19_0.d.next = self.rsx19_0.val();
-            self.sx31_0.d.next = self.rsx31_0.val();
             self.sx4_0.d.next = self.rsx4_0.val();
             self.sx15_0.d.next = self.rsx15_0.val();
             self.sy0.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy0.val());
             self.nonpos0.d.next = self.rec_sx0.val().get_bit(29) | (self.rsx1_0.val() == self.ks0_44.val());
             self.e1.d.next = self.rec_e1.val();
             self.ern1.d.next = self.lrn_1.val();
-            self.s1_1.d.next = self.ls1_1.val().get_bit(43);
-            self.s2_1.d.next = self.ls2_1.val().get_bit(43);
-            self.s3_1.d.next = self.ls3_1.val().get_bit(43);
-            self.s15_1.d.next = self.ls15_1.val().get_bit(43);
+            self.t1_1.next = self.rec_e1.val() + self.rsx1_1.val();
+            self.s1_1.d.next = self.t1_1.val().get_bit(43);
+            self.t2_1.next = self.rec_e1.val() + self.rsx2_1.val();
+            self.s2_1.d.next = self.t2_1.val().get_bit(43);
+            self.t3_1.next = self.rec_e1.val() + self.rsx3_1.val();
+            self.s3_1.d.next = self.t3_1.val().get_bit(43);
+            self.t15_1.next = self.rec_e1.val() + self.rsx15_1.val();
+            self.s15_1.d.next = self.t15_1.val().get_bit(43);
             self.sx1_1.d.next = self.rsx1_1.val();
             self.sx2_1.d.next = self.rsx2_1.val();
             self.sx3_1.d.next = self.rsx3_1.val();
-            self.sx5_1.d.next = self.rsx5_1.val();
-            self.sx6_1.d.next = self.rsx6_1.val();
-            self.sx7_1.d.next = self.rsx7_1.val();
             self.sx16_1.d.next = self.rsx16_1.val();
-            self.sx17_1.d.next = self.rsx17_1.val();
-            self.sx18_1.d.next = self.rsx18_1.val();
-            self.sx19_1.d.next = self.rsx19_1.val();
-            self.sx31_1.d.next = self.rsx31_1.val();
             self.sx4_1.d.next = self.rsx4_1.val();
             self.sx15_1.d.next = self.rsx15_1.val();
             self.sy1.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy1.val());
             self.nonpos1.d.next = self.rec_sx1.val().get_bit(29) | (self.rsx1_1.val() == self.ks0_44.val());
             self.e2.d.next = self.rec_e2.val();
             self.ern2.d.next = self.lrn_2.val();
-            self.s1_2.d.next = self.ls1_2.val().get_bit(43);
-            self.s2_2.d.next = self.ls2_2.val().get_bit(43);
-            self.s3_2.d.next = self.ls3_2.val().get_bit(43);
-            self.s15_2.d.next = self.ls15_2.val().get_bit(43);
+            self.t1_2.next = self.rec_e2.val() + self.rsx1_2.val();
+            self.s1_2.d.next = self.t1_2.val().get_bit(43);
+            self.t2_2.next = self.rec_e2.val() + self.rsx2_2.val();
+            self.s2_2.d.next = self.t2_2.val().get_bit(43);
+            self.t3_2.next = self.rec_e2.val() + self.rsx3_2.val();
+            self.s3_2.d.next = self.t3_2.val().get_bit(43);
+            self.t15_2.next = self.rec_e2.val() + self.rsx15_2.val();
+            self.s15_2.d.next = self.t15_2.val().get_bit(43);
             self.sx1_2.d.next = self.rsx1_2.val();
             self.sx2_2.d.next = self.rsx2_2.val();
             self.sx3_2.d.next = self.rsx3_2.val();
-            self.sx5_2.d.next = self.rsx5_2.val();
-            self.sx6_2.d.next = self.rsx6_2.val();
-            self.sx7_2.d.next = self.rsx7_2.val();
             self.sx16_2.d.next = self.rsx16_2.val();
-            self.sx17_2.d.next = self.rsx17_2.val();
-            self.sx18_2.d.next = self.rsx18_2.val();
-            self.sx19_2.d.next = self.rsx19_2.val();
-            self.sx31_2.d.next = self.rsx31_2.val();
             self.sx4_2.d.next = self.rsx4_2.val();
             self.sx15_2.d.next = self.rsx15_2.val();
             self.sy2.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy2.val());
