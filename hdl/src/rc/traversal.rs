@@ -27,10 +27,10 @@
 //!   E; offsets 5..7 add one to `E + 4*step`, 17..19 and 31 to `E + 16*step` (two adders in series,
 //!   off the decision's path). So six multiples (j = 1, 2, 3, 4, 15, 16) per edge are registered
 //!   when the triangle is loaded. The next row's start `ern` is a register, with its own window of
-//!   four sums. It issues the first covered one as a
-//!   fragment and goes on at the next covered one; with none left it skips past the window, or past 16 candidates (`long`) when none
-//!   is covered and an edge is negative at x and at x+15. It ends the row instead when the skip
-//!   reaches the box's edge, or an edge is negative at the skip's last candidate with a step that
+//!   four sums. It issues the first covered one as a fragment and goes on at the next covered one;
+//!   with none left it skips past the window, or past 16 candidates (`long`) when none is covered
+//!   and an edge is negative at x and at x+15. It ends the row instead when the skip reaches the
+//!   box's edge, or an edge is negative at the skip's last candidate with a step that
 //!   does not grow (`nonpos`). Ending the last row ends the walk; that cycle's token (the
 //!   fragment, or an uncovered end token) carries the triangle's result and waits for `result_free`,
 //!   and the same cycle takes the next record if it is a triangle or a frame start (no idle cycle).
@@ -244,6 +244,7 @@ pub struct Traversal {
     rsx3_2: Signal<Local, Signed<44>>,
     rsx15_2: Signal<Local, Signed<44>>,
     rsx16_2: Signal<Local, Signed<44>>,
+    // cJ_K: edge K at x+J (J = 4, 16), the base of the sums at offsets 5-7 and 17-19, 31.
     c4_0: Signal<Local, Signed<44>>,
     c16_0: Signal<Local, Signed<44>>,
     c4_1: Signal<Local, Signed<44>>,
