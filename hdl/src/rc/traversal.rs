@@ -205,6 +205,7 @@ pub struct Traversal {
     // sign the step's branch registers in sJ_K; cov J: candidate x+J is covered and inside the box;
     // fsel the first covered one, nsel the next candidate after this clock.
     lw: Signal<Local, Bits<10>>,
+    take: Signal<Local, Bit>,
     cov0: Signal<Local, Bit>,
     cov1: Signal<Local, Bit>,
     cov2: Signal<Local, Bit>,
@@ -428,6 +429,7 @@ impl Traversal {
             ga16: Default::default(),
             grad_b: Default::default(),
             lw: Default::default(),
+            take: Default::default(),
             cov0: Default::default(),
             cov1: Default::default(),
             cov2: Default::default(),
@@ -1058,6 +1060,53 @@ impl Logic for Traversal {
             self.state.d.next = TravState::Clear;
         }
         self.lw.next = self.rec_bx1.val() - self.rec_bx0.val();
+        // The per-triangle constants (steps and their multiples, the depth steps, the box's width and
+        // flags): internal to the walk, so they follow the record head whenever no walk is on and in
+        // the cycle that ends one (its end token issued). Their clock enable is then the walk's end, the
+        // head's valid and `result_free`, not `load_walk` (which also decodes the record's kind): a
+        // shorter path to some 1 300 enables.
+        // A walk starts only by a load, from Idle or at a walk's end, and both cycles take them.
+        self.take.next = (!(self.state.q.val() == TravState::Walk) & self.rec_valid.val()) | (self.walk_end.val() & self.result_free.val());
+        if self.take.val() {
+            self.wrem.d.next = self.lw.val();
+            self.wg0.d.next = self.lw.val() > self.k0_10.val();
+            self.wg1.d.next = self.lw.val() > self.k1_10.val();
+            self.wg2.d.next = self.lw.val() > self.k2_10.val();
+            self.wg3.d.next = self.lw.val() > self.k3_10.val();
+            self.wg15.d.next = self.lw.val() > self.k15_10.val();
+            self.bx0.d.next = self.rec_bx0.val();
+            self.by1.d.next = self.rec_by1.val();
+            self.sx1_0.d.next = self.rsx1_0.val();
+            self.sx2_0.d.next = self.rsx2_0.val();
+            self.sx3_0.d.next = self.rsx3_0.val();
+            self.sx16_0.d.next = self.rsx16_0.val();
+            self.sx4_0.d.next = self.rsx4_0.val();
+            self.sx15_0.d.next = self.rsx15_0.val();
+            self.sy0.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy0.val());
+            self.nonpos0.d.next = self.rec_sx0.val().get_bit(29) | (self.rsx1_0.val() == self.ks0_44.val());
+            self.sx1_1.d.next = self.rsx1_1.val();
+            self.sx2_1.d.next = self.rsx2_1.val();
+            self.sx3_1.d.next = self.rsx3_1.val();
+            self.sx16_1.d.next = self.rsx16_1.val();
+            self.sx4_1.d.next = self.rsx4_1.val();
+            self.sx15_1.d.next = self.rsx15_1.val();
+            self.sy1.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy1.val());
+            self.nonpos1.d.next = self.rec_sx1.val().get_bit(29) | (self.rsx1_1.val() == self.ks0_44.val());
+            self.sx1_2.d.next = self.rsx1_2.val();
+            self.sx2_2.d.next = self.rsx2_2.val();
+            self.sx3_2.d.next = self.rsx3_2.val();
+            self.sx16_2.d.next = self.rsx16_2.val();
+            self.sx4_2.d.next = self.rsx4_2.val();
+            self.sx15_2.d.next = self.rsx15_2.val();
+            self.sy2.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy2.val());
+            self.nonpos2.d.next = self.rec_sx2.val().get_bit(29) | (self.rsx1_2.val() == self.ks0_44.val());
+            self.ga1.d.next = self.ra1.val();
+            self.ga2.d.next = self.ra2.val();
+            self.ga3.d.next = self.ra2.val() + self.ra1.val();
+            self.ga4.d.next = self.ra4.val();
+            self.ga16.d.next = self.ra4.val() + self.ra4.val() + self.ra4.val() + self.ra4.val();
+            self.grad_b.d.next = signed_bit_cast_safe::<56, 40>(self.rec_b.val());
+        }
         if self.load_walk.val() {
             self.rm.d.next = self.lw.val();
             self.rg0.d.next = self.lw.val() > self.k0_10.val();
@@ -1065,16 +1114,8 @@ impl Logic for Traversal {
             self.rg2.d.next = self.lw.val() > self.k2_10.val();
             self.rg3.d.next = self.lw.val() > self.k3_10.val();
             self.rg15.d.next = self.lw.val() > self.k15_10.val();
-            self.wrem.d.next = self.lw.val();
-            self.wg0.d.next = self.lw.val() > self.k0_10.val();
-            self.wg1.d.next = self.lw.val() > self.k1_10.val();
-            self.wg2.d.next = self.lw.val() > self.k2_10.val();
-            self.wg3.d.next = self.lw.val() > self.k3_10.val();
-            self.wg15.d.next = self.lw.val() > self.k15_10.val();
             self.x.d.next = self.rec_bx0.val();
             self.y.d.next = self.rec_by0.val();
-            self.bx0.d.next = self.rec_bx0.val();
-            self.by1.d.next = self.rec_by1.val();
             self.index.d.next = self.rec_index.val();
             self.addr.d.next = self.rec_addr.val();
             self.addr_row.d.next = self.rec_addr.val();
@@ -1088,14 +1129,6 @@ impl Logic for Traversal {
             self.s3_0.d.next = self.t3_0.val().get_bit(43);
             self.t15_0.next = self.rec_e0.val() + self.rsx15_0.val();
             self.s15_0.d.next = self.t15_0.val().get_bit(43);
-            self.sx1_0.d.next = self.rsx1_0.val();
-            self.sx2_0.d.next = self.rsx2_0.val();
-            self.sx3_0.d.next = self.rsx3_0.val();
-            self.sx16_0.d.next = self.rsx16_0.val();
-            self.sx4_0.d.next = self.rsx4_0.val();
-            self.sx15_0.d.next = self.rsx15_0.val();
-            self.sy0.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy0.val());
-            self.nonpos0.d.next = self.rec_sx0.val().get_bit(29) | (self.rsx1_0.val() == self.ks0_44.val());
             self.e1.d.next = self.rec_e1.val();
             self.ern1.d.next = self.lrn_1.val();
             self.t1_1.next = self.rec_e1.val() + self.rsx1_1.val();
@@ -1106,14 +1139,6 @@ impl Logic for Traversal {
             self.s3_1.d.next = self.t3_1.val().get_bit(43);
             self.t15_1.next = self.rec_e1.val() + self.rsx15_1.val();
             self.s15_1.d.next = self.t15_1.val().get_bit(43);
-            self.sx1_1.d.next = self.rsx1_1.val();
-            self.sx2_1.d.next = self.rsx2_1.val();
-            self.sx3_1.d.next = self.rsx3_1.val();
-            self.sx16_1.d.next = self.rsx16_1.val();
-            self.sx4_1.d.next = self.rsx4_1.val();
-            self.sx15_1.d.next = self.rsx15_1.val();
-            self.sy1.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy1.val());
-            self.nonpos1.d.next = self.rec_sx1.val().get_bit(29) | (self.rsx1_1.val() == self.ks0_44.val());
             self.e2.d.next = self.rec_e2.val();
             self.ern2.d.next = self.lrn_2.val();
             self.t1_2.next = self.rec_e2.val() + self.rsx1_2.val();
@@ -1124,22 +1149,8 @@ impl Logic for Traversal {
             self.s3_2.d.next = self.t3_2.val().get_bit(43);
             self.t15_2.next = self.rec_e2.val() + self.rsx15_2.val();
             self.s15_2.d.next = self.t15_2.val().get_bit(43);
-            self.sx1_2.d.next = self.rsx1_2.val();
-            self.sx2_2.d.next = self.rsx2_2.val();
-            self.sx3_2.d.next = self.rsx3_2.val();
-            self.sx16_2.d.next = self.rsx16_2.val();
-            self.sx4_2.d.next = self.rsx4_2.val();
-            self.sx15_2.d.next = self.rsx15_2.val();
-            self.sy2.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy2.val());
-            self.nonpos2.d.next = self.rec_sx2.val().get_bit(29) | (self.rsx1_2.val() == self.ks0_44.val());
             self.rawh.d.next = self.rec_raw.val() + self.half.val();
             self.rawh_row.d.next = self.rec_raw.val() + self.half.val();
-            self.ga1.d.next = self.ra1.val();
-            self.ga2.d.next = self.ra2.val();
-            self.ga3.d.next = self.ra2.val() + self.ra1.val();
-            self.ga4.d.next = self.ra4.val();
-            self.ga16.d.next = self.ra4.val() + self.ra4.val() + self.ra4.val() + self.ra4.val();
-            self.grad_b.d.next = signed_bit_cast_safe::<56, 40>(self.rec_b.val());
             self.state.d.next = TravState::Walk;
         }
     }
