@@ -61,6 +61,7 @@ pub struct FastReciprocal {
     k0_25: Constant<Bits<25>>,
     k1_25: Constant<Bits<25>>,
     k0_45: Constant<Bits<45>>,
+    k1_6: Constant<Bits<6>>,
 }
 
 impl Default for FastReciprocal {
@@ -80,6 +81,7 @@ impl Default for FastReciprocal {
             k0_25: Constant::new(0.into()),
             k1_25: Constant::new(1.into()),
             k0_45: Constant::new(0.into()),
+            k1_6: Constant::new(1.into()),
         }
     }
 }
@@ -121,7 +123,8 @@ impl Logic for FastReciprocal {
         self.norm.next.valid = self.request.valid.val();
         self.norm.next.den = bit_cast::<45, 44>(self.request.data.val());
         self.norm.next.shift = self.lead.index.val();
-        self.norm.next.rem = self.onehot45.val() + self.onehot45.val();
+        // Twice the leading one: a shift, no carry chain.
+        self.norm.next.rem = self.onehot45.val() << self.k1_6.val();
         self.norm.next.quo = self.k0_25.val();
         if self.pow2.val() {
             self.norm.next.rem = self.k0_45.val();

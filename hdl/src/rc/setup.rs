@@ -20,7 +20,9 @@
 //! * S0 `Det`: det = dx10*dy20 - dx20*dy10 (two pipelined 21x21 products, `MulPipeS`: their blocks
 //!   and rows take the deltas of the command port at the edge where S0 takes the command, so S0 only
 //!   sums the registered partial products; issue 15 item 5); the clamped bounding box
-//!   `[(min+127)>>8, (max-128)>>8]`.
+//!   `[(min+127)>>8, (max-128)>>8]`, each vertex's bound formed and clamped beside the min/max
+//!   compares, which then choose one of three (clamping and shifting keep the order; issue 15 item 5:
+//!   the compares, the choice, the add and the clamp in series were a critical path).
 //! * S1 `Order`: zero area / cull decision from det's sign, the cull mode and the front face;
 //!   canonical order (swap vertices 1 and 2 if det < 0); all three edges' multiplier operands, fill-rule
 //!   flags and steps (-256*dy, 256*dx); the start address Y0*W + X0; the reciprocal request of abs(det).
@@ -192,6 +194,9 @@ pub struct Setup {
     /// det = 0, registered with det (issue 15 item 5: det's 44-bit zero test in front of S1's culling
     /// decision and the leave chain was the RC's critical path once the walk looked ahead).
     s1_det_zero: DFF<Bit>,
+    /// |det|, registered with det (issue 15 item 5: the 44-bit negation in front of the reciprocal's
+    /// leading-one detector was the RC's critical path).
+    s1_det_abs: DFF<Bits<44>>,
     // S2 `Edges`: the record, its phase and the dot units' operands (edge k: la*lb - ra*rb). The
     // multipliers read `*0` (unit a) and `*1` (unit b) straight from these registers, which move on
     // with the phases (issue 15 item 5: the phase's choice in front of the products was the RC's
@@ -313,12 +318,6 @@ pub struct Setup {
     pushed: Signal<Local, SetupRec>,
     head: Signal<Local, SetupRec>,
     // S0
-    v0x: Signal<Local, Signed<20>>,
-    v0y: Signal<Local, Signed<20>>,
-    v1x: Signal<Local, Signed<20>>,
-    v1y: Signal<Local, Signed<20>>,
-    v2x: Signal<Local, Signed<20>>,
-    v2y: Signal<Local, Signed<20>>,
     c0x: Signal<Local, Signed<20>>,
     c0y: Signal<Local, Signed<20>>,
     c1x: Signal<Local, Signed<20>>,
@@ -331,18 +330,8 @@ pub struct Setup {
     dy20: Signal<Local, Signed<21>>,
     det: Signal<Local, Signed<44>>,
     det_eq: Signal<Local, Bit>,
-    xmin: Signal<Local, Signed<20>>,
-    xmax: Signal<Local, Signed<20>>,
-    ymin: Signal<Local, Signed<20>>,
-    ymax: Signal<Local, Signed<20>>,
-    lo_x: Signal<Local, Signed<21>>,
-    hi_x: Signal<Local, Signed<21>>,
-    lo_y: Signal<Local, Signed<21>>,
-    hi_y: Signal<Local, Signed<21>>,
-    box_x0: Signal<Local, Signed<13>>,
-    box_x1: Signal<Local, Signed<13>>,
-    box_y0: Signal<Local, Signed<13>>,
-    box_y1: Signal<Local, Signed<13>>,
+    ndet: Signal<Local, Signed<44>>,
+    abs_now: Signal<Local, Bits<44>>,
     box_empty: Signal<Local, Bit>,
     /// The box's emptiness from each vertex's own bounds (`oz`: the offset-binary coordinate in 21 bits;
     /// `lo`, `hi`: (c + 127) >> 8 and (c - 128) >> 8 in bits 8..20, offset-binary), as compares side by side.
@@ -372,14 +361,21 @@ pub struct Setup {
     o1y: Signal<Local, Bits<20>>,
     o2x: Signal<Local, Bits<20>>,
     o2y: Signal<Local, Bits<20>>,
-    bx1r_o: Signal<Local, Bits<13>>,
-    by1r_o: Signal<Local, Bits<13>>,
-    lo_x_u: Signal<Local, Bits<21>>,
-    hi_x_u: Signal<Local, Bits<21>>,
-    lo_y_u: Signal<Local, Bits<21>>,
-    hi_y_u: Signal<Local, Bits<21>>,
-    box_x1_raw: Signal<Local, Signed<13>>,
-    box_y1_raw: Signal<Local, Signed<13>>,
+    /// S0's box per vertex: `(v + 127) >> 8` not below 0 (`c?0_i`), `(v - 128) >> 8` not above the
+    /// screen's last row or column (`c?1_i`), 13-bit two's complement; the box takes the minimum's and
+    /// the maximum's (issue 15 item 5: the clamp no longer waits for the compares).
+    cx0_0: Signal<Local, Bits<13>>,
+    cx0_1: Signal<Local, Bits<13>>,
+    cx0_2: Signal<Local, Bits<13>>,
+    cx1_0: Signal<Local, Bits<13>>,
+    cx1_1: Signal<Local, Bits<13>>,
+    cx1_2: Signal<Local, Bits<13>>,
+    cy0_0: Signal<Local, Bits<13>>,
+    cy0_1: Signal<Local, Bits<13>>,
+    cy0_2: Signal<Local, Bits<13>>,
+    cy1_0: Signal<Local, Bits<13>>,
+    cy1_1: Signal<Local, Bits<13>>,
+    cy1_2: Signal<Local, Bits<13>>,
     box_x0_u: Signal<Local, Bits<13>>,
     box_x1_u: Signal<Local, Bits<13>>,
     box_y0_u: Signal<Local, Bits<13>>,
@@ -468,22 +464,21 @@ pub struct Setup {
     raw_now: Signal<Local, Signed<56>>,
 
     // Constants
-    w_minus_1: Constant<Signed<13>>,
+    w_minus_1: Constant<Bits<13>>,
     w_minus_1_o: Constant<Bits<13>>,
     h_minus_1_o: Constant<Bits<13>>,
     k_sign20: Constant<Bits<20>>,
     k_sign13: Constant<Bits<13>>,
     zb13: Constant<Bits<13>>,
-    h_minus_1: Constant<Signed<13>>,
+    h_minus_1: Constant<Bits<13>>,
     width: Constant<Bits<16>>,
-    k127_21: Constant<Signed<21>>,
     k128_21: Constant<Signed<21>>,
     k128_21u: Constant<Bits<21>>,
     k8_6: Constant<Bits<6>>,
     k1_73: Constant<Bits<73>>,
     k1_6: Constant<Bits<6>>,
     k0_73: Constant<Bits<73>>,
-    k0_13: Constant<Signed<13>>,
+    k0_13u: Constant<Bits<13>>,
     k0_44: Constant<Signed<44>>,
     k1_44: Constant<Signed<44>>,
     k0_21: Constant<Signed<21>>,
@@ -579,6 +574,7 @@ impl Setup {
             s1_by1: Default::default(),
             s1_box_empty: Default::default(),
             s1_det_zero: Default::default(),
+            s1_det_abs: Default::default(),
             s2_v: Default::default(),
             s2_phase: Default::default(),
             s2: Default::default(),
@@ -671,12 +667,6 @@ impl Setup {
             q_after: Default::default(),
             pushed: Default::default(),
             head: Default::default(),
-            v0x: Default::default(),
-            v0y: Default::default(),
-            v1x: Default::default(),
-            v1y: Default::default(),
-            v2x: Default::default(),
-            v2y: Default::default(),
             c0x: Default::default(),
             c0y: Default::default(),
             c1x: Default::default(),
@@ -689,18 +679,8 @@ impl Setup {
             dy20: Default::default(),
             det: Default::default(),
             det_eq: Default::default(),
-            xmin: Default::default(),
-            xmax: Default::default(),
-            ymin: Default::default(),
-            ymax: Default::default(),
-            lo_x: Default::default(),
-            hi_x: Default::default(),
-            lo_y: Default::default(),
-            hi_y: Default::default(),
-            box_x0: Default::default(),
-            box_x1: Default::default(),
-            box_y0: Default::default(),
-            box_y1: Default::default(),
+            ndet: Default::default(),
+            abs_now: Default::default(),
             box_empty: Default::default(),
             oz0x: Default::default(),
             lo0x: Default::default(),
@@ -728,14 +708,18 @@ impl Setup {
             o1y: Default::default(),
             o2x: Default::default(),
             o2y: Default::default(),
-            bx1r_o: Default::default(),
-            by1r_o: Default::default(),
-            lo_x_u: Default::default(),
-            hi_x_u: Default::default(),
-            lo_y_u: Default::default(),
-            hi_y_u: Default::default(),
-            box_x1_raw: Default::default(),
-            box_y1_raw: Default::default(),
+            cx0_0: Default::default(),
+            cx0_1: Default::default(),
+            cx0_2: Default::default(),
+            cx1_0: Default::default(),
+            cx1_1: Default::default(),
+            cx1_2: Default::default(),
+            cy0_0: Default::default(),
+            cy0_1: Default::default(),
+            cy0_2: Default::default(),
+            cy1_0: Default::default(),
+            cy1_1: Default::default(),
+            cy1_2: Default::default(),
             box_x0_u: Default::default(),
             box_x1_u: Default::default(),
             box_y0_u: Default::default(),
@@ -816,22 +800,21 @@ impl Setup {
             c_frac: Default::default(),
             z0_plane: Default::default(),
             raw_now: Default::default(),
-            w_minus_1: Constant::new((width as i64 - 1).into()),
+            w_minus_1: Constant::new((width as u64 - 1).into()),
             w_minus_1_o: Constant::new(((width as u64 - 1) ^ 0x1000).into()),
             h_minus_1_o: Constant::new(((height as u64 - 1) ^ 0x1000).into()),
             k_sign20: Constant::new(0x80000u64.into()),
             k_sign13: Constant::new(0x1000u64.into()),
             zb13: Constant::new(0.into()),
-            h_minus_1: Constant::new((height as i64 - 1).into()),
+            h_minus_1: Constant::new((height as u64 - 1).into()),
             width: Constant::new((width as u64).into()),
-            k127_21: Constant::new(127.into()),
             k128_21: Constant::new(128.into()),
             k128_21u: Constant::new(128.into()),
             k8_6: Constant::new(8.into()),
             k1_73: Constant::new(1.into()),
             k1_6: Constant::new(1.into()),
             k0_73: Constant::new(0.into()),
-            k0_13: Constant::new(0.into()),
+            k0_13u: Constant::new(0.into()),
             k0_44: Constant::new(0.into()),
             k1_44: Constant::new(1.into()),
             k0_21: Constant::new(0.into()),
@@ -879,7 +862,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s1_det_zero, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, gb_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s1_det_zero, s1_det_abs, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, gb_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -1055,24 +1038,20 @@ impl Logic for Setup {
             self.sty_2.next = signed_cast(unsigned_cast(self.edxw_2.val()) << self.k8_6.val());
         }
         // ---- S0 `Det` ----
-        self.v0x.next = self.zs20.val();
-        self.v0y.next = self.zs20.val();
-        self.v1x.next = self.zs20.val();
-        self.v1y.next = self.zs20.val();
-        self.v2x.next = self.zs20.val();
-        self.v2y.next = self.zs20.val();
         self.det.next = self.zs44.val();
         self.det_eq.next = false;
+        self.ndet.next = self.zs44.val();
+        self.abs_now.next = self.zb44.val();
         if self.s0_v.q.val() {
-            self.v0x.next = signed_cast(self.s0.q.val().x0);
-            self.v0y.next = signed_cast(self.s0.q.val().y0);
-            self.v1x.next = signed_cast(self.s0.q.val().x1);
-            self.v1y.next = signed_cast(self.s0.q.val().y1);
-            self.v2x.next = signed_cast(self.s0.q.val().x2);
-            self.v2y.next = signed_cast(self.s0.q.val().y2);
             self.det.next = signed_bit_cast_safe::<44, 42>(self.mul_d0.p.val()) - signed_bit_cast_safe::<44, 42>(self.mul_d1.p.val());
             // det = 0 exactly when the two products are equal: a compare beside the subtraction.
             self.det_eq.next = self.mul_d0.p.val() == self.mul_d1.p.val();
+            // |det| from the two differences side by side, chosen by det's sign.
+            self.ndet.next = signed_bit_cast_safe::<44, 42>(self.mul_d1.p.val()) - signed_bit_cast_safe::<44, 42>(self.mul_d0.p.val());
+            self.abs_now.next = unsigned_cast(self.det.val());
+            if self.det.val().get_bit(43) {
+                self.abs_now.next = unsigned_cast(self.ndet.val());
+            }
         }
         // det's products start on the command port: the multipliers take their operands at the edge
         // where S0 takes the command (issue 15 item 5: S0's deltas, products and difference in one cycle
@@ -1113,14 +1092,6 @@ impl Logic for Setup {
         // arithmetic is gated by its own valid register, never by the handshake, which would put the
         // leave chain in front of the arithmetic: gating S0 by its `leave` took the RC from 45.5 to
         // 35.4 MHz on the ECP5.)
-        self.xmin.next = self.v0x.val();
-        self.xmax.next = self.v0x.val();
-        self.ymin.next = self.v0y.val();
-        self.ymax.next = self.v0y.val();
-        self.lo_x.next = self.k0_21.val();
-        self.hi_x.next = self.k0_21.val();
-        self.lo_y.next = self.k0_21.val();
-        self.hi_y.next = self.k0_21.val();
         // Signed order as unsigned order with the sign bits flipped (offset binary): the same compare in
         // hardware, and rust-hdl's Signed compare goes through BigInt.
         self.o0x.next = self.s0.q.val().x0 ^ self.k_sign20.val();
@@ -1129,68 +1100,6 @@ impl Logic for Setup {
         self.o1y.next = self.s0.q.val().y1 ^ self.k_sign20.val();
         self.o2x.next = self.s0.q.val().x2 ^ self.k_sign20.val();
         self.o2y.next = self.s0.q.val().y2 ^ self.k_sign20.val();
-        if self.s0_v.q.val() {
-            if self.o1x.val() < self.o0x.val() {
-                self.xmin.next = self.v1x.val();
-            }
-            if (self.o2x.val() < self.o1x.val()) & (self.o2x.val() < self.o0x.val()) {
-                self.xmin.next = self.v2x.val();
-            }
-            if self.o1x.val() > self.o0x.val() {
-                self.xmax.next = self.v1x.val();
-            }
-            if (self.o2x.val() > self.o1x.val()) & (self.o2x.val() > self.o0x.val()) {
-                self.xmax.next = self.v2x.val();
-            }
-            if self.o1y.val() < self.o0y.val() {
-                self.ymin.next = self.v1y.val();
-            }
-            if (self.o2y.val() < self.o1y.val()) & (self.o2y.val() < self.o0y.val()) {
-                self.ymin.next = self.v2y.val();
-            }
-            if self.o1y.val() > self.o0y.val() {
-                self.ymax.next = self.v1y.val();
-            }
-            if (self.o2y.val() > self.o1y.val()) & (self.o2y.val() > self.o0y.val()) {
-                self.ymax.next = self.v2y.val();
-            }
-            self.lo_x.next = signed_bit_cast_safe::<21, 20>(self.xmin.val()) + self.k127_21.val();
-            self.hi_x.next = signed_bit_cast_safe::<21, 20>(self.xmax.val()) - self.k128_21.val();
-            self.lo_y.next = signed_bit_cast_safe::<21, 20>(self.ymin.val()) + self.k127_21.val();
-            self.hi_y.next = signed_bit_cast_safe::<21, 20>(self.ymax.val()) - self.k128_21.val();
-        }
-        // Bits views for slicing (Verilog cannot slice a cast).
-        self.lo_x_u.next = unsigned_cast(self.lo_x.val());
-        self.hi_x_u.next = unsigned_cast(self.hi_x.val());
-        self.lo_y_u.next = unsigned_cast(self.lo_y.val());
-        self.hi_y_u.next = unsigned_cast(self.hi_y.val());
-        self.box_x1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_x_u.val().get_bits::<13>(8)));
-        self.box_y1_raw.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.hi_y_u.val().get_bits::<13>(8)));
-        self.bx1r_o.next = unsigned_cast(self.box_x1_raw.val()) ^ self.k_sign13.val();
-        self.by1r_o.next = unsigned_cast(self.box_y1_raw.val()) ^ self.k_sign13.val();
-        self.box_x0.next = self.k0_13.val();
-        self.box_x1.next = self.k0_13.val();
-        self.box_y0.next = self.k0_13.val();
-        self.box_y1.next = self.k0_13.val();
-        if self.s0_v.q.val() {
-            // >> 8 (arithmetic), then clamp to the screen.
-            self.box_x0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_x_u.val().get_bits::<13>(8)));
-            self.box_x1.next = self.box_x1_raw.val();
-            self.box_y0.next = signed_bit_cast_safe::<13, 13>(signed_cast(self.lo_y_u.val().get_bits::<13>(8)));
-            self.box_y1.next = self.box_y1_raw.val();
-            if self.lo_x.val().get_bit(20) {
-                self.box_x0.next = self.k0_13.val();
-            }
-            if self.lo_y.val().get_bit(20) {
-                self.box_y0.next = self.k0_13.val();
-            }
-            if self.bx1r_o.val() > self.w_minus_1_o.val() {
-                self.box_x1.next = self.w_minus_1.val();
-            }
-            if self.by1r_o.val() > self.h_minus_1_o.val() {
-                self.box_y1.next = self.h_minus_1.val();
-            }
-        }
         // The box is empty when max(min lo, 0) > min(max hi, W-1): some bound of every pair crosses, or every
         // hi is negative, or every lo is past the screen. With the offset 2^20 (the offset-binary 20-bit
         // coordinate plus 2^19), bits 8..20 of c + 2^20 + k are the offset-binary 13-bit (c + k) >> 8, so all
@@ -1213,6 +1122,91 @@ impl Logic for Setup {
         self.hi1y.next = self.oz1y.val() + self.k_hi21.val();
         self.lo2y.next = self.oz2y.val() + self.k_lo21.val();
         self.hi2y.next = self.oz2y.val() + self.k_hi21.val();
+        // The box: [(min + 127) >> 8, (max - 128) >> 8] clamped to the screen. Clamping and shifting keep
+        // the order, so each vertex's bound is formed and clamped beside the compares, which then only
+        // choose one of three (bits 8..20 of lo/hi are the offset-binary bound; bit 20 clear: negative).
+        self.cx0_0.next = self.lo0x.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if !self.lo0x.val().get_bit(20) {
+            self.cx0_0.next = self.k0_13u.val();
+        }
+        self.cx1_0.next = self.hi0x.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if self.hi0x.val().get_bits::<13>(8) > self.w_minus_1_o.val() {
+            self.cx1_0.next = self.w_minus_1.val();
+        }
+        self.cx0_1.next = self.lo1x.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if !self.lo1x.val().get_bit(20) {
+            self.cx0_1.next = self.k0_13u.val();
+        }
+        self.cx1_1.next = self.hi1x.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if self.hi1x.val().get_bits::<13>(8) > self.w_minus_1_o.val() {
+            self.cx1_1.next = self.w_minus_1.val();
+        }
+        self.cx0_2.next = self.lo2x.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if !self.lo2x.val().get_bit(20) {
+            self.cx0_2.next = self.k0_13u.val();
+        }
+        self.cx1_2.next = self.hi2x.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if self.hi2x.val().get_bits::<13>(8) > self.w_minus_1_o.val() {
+            self.cx1_2.next = self.w_minus_1.val();
+        }
+        self.cy0_0.next = self.lo0y.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if !self.lo0y.val().get_bit(20) {
+            self.cy0_0.next = self.k0_13u.val();
+        }
+        self.cy1_0.next = self.hi0y.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if self.hi0y.val().get_bits::<13>(8) > self.h_minus_1_o.val() {
+            self.cy1_0.next = self.h_minus_1.val();
+        }
+        self.cy0_1.next = self.lo1y.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if !self.lo1y.val().get_bit(20) {
+            self.cy0_1.next = self.k0_13u.val();
+        }
+        self.cy1_1.next = self.hi1y.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if self.hi1y.val().get_bits::<13>(8) > self.h_minus_1_o.val() {
+            self.cy1_1.next = self.h_minus_1.val();
+        }
+        self.cy0_2.next = self.lo2y.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if !self.lo2y.val().get_bit(20) {
+            self.cy0_2.next = self.k0_13u.val();
+        }
+        self.cy1_2.next = self.hi2y.val().get_bits::<13>(8) ^ self.k_sign13.val();
+        if self.hi2y.val().get_bits::<13>(8) > self.h_minus_1_o.val() {
+            self.cy1_2.next = self.h_minus_1.val();
+        }
+        self.box_x0_u.next = self.k0_13u.val();
+        self.box_x1_u.next = self.k0_13u.val();
+        self.box_y0_u.next = self.k0_13u.val();
+        self.box_y1_u.next = self.k0_13u.val();
+        if self.s0_v.q.val() {
+            self.box_x0_u.next = self.cx0_0.val();
+            if self.o1x.val() < self.o0x.val() {
+                self.box_x0_u.next = self.cx0_1.val();
+            }
+            if (self.o2x.val() < self.o1x.val()) & (self.o2x.val() < self.o0x.val()) {
+                self.box_x0_u.next = self.cx0_2.val();
+            }
+            self.box_x1_u.next = self.cx1_0.val();
+            if self.o1x.val() > self.o0x.val() {
+                self.box_x1_u.next = self.cx1_1.val();
+            }
+            if (self.o2x.val() > self.o1x.val()) & (self.o2x.val() > self.o0x.val()) {
+                self.box_x1_u.next = self.cx1_2.val();
+            }
+            self.box_y0_u.next = self.cy0_0.val();
+            if self.o1y.val() < self.o0y.val() {
+                self.box_y0_u.next = self.cy0_1.val();
+            }
+            if (self.o2y.val() < self.o1y.val()) & (self.o2y.val() < self.o0y.val()) {
+                self.box_y0_u.next = self.cy0_2.val();
+            }
+            self.box_y1_u.next = self.cy1_0.val();
+            if self.o1y.val() > self.o0y.val() {
+                self.box_y1_u.next = self.cy1_1.val();
+            }
+            if (self.o2y.val() > self.o1y.val()) & (self.o2y.val() > self.o0y.val()) {
+                self.box_y1_u.next = self.cy1_2.val();
+            }
+        }
         self.box_empty.next = false;
         if self.s0_v.q.val() {
             self.box_empty.next = ((self.lo0x.val().get_bits::<13>(8) > self.hi0x.val().get_bits::<13>(8)) & (self.lo0x.val().get_bits::<13>(8) > self.hi1x.val().get_bits::<13>(8)) & (self.lo0x.val().get_bits::<13>(8) > self.hi2x.val().get_bits::<13>(8)) & (self.lo1x.val().get_bits::<13>(8) > self.hi0x.val().get_bits::<13>(8)) & (self.lo1x.val().get_bits::<13>(8) > self.hi1x.val().get_bits::<13>(8)) & (self.lo1x.val().get_bits::<13>(8) > self.hi2x.val().get_bits::<13>(8)) & (self.lo2x.val().get_bits::<13>(8) > self.hi0x.val().get_bits::<13>(8)) & (self.lo2x.val().get_bits::<13>(8) > self.hi1x.val().get_bits::<13>(8)) & (self.lo2x.val().get_bits::<13>(8) > self.hi2x.val().get_bits::<13>(8)))
@@ -1222,18 +1216,11 @@ impl Logic for Setup {
                 | (!self.hi0y.val().get_bit(20) & !self.hi1y.val().get_bit(20) & !self.hi2y.val().get_bit(20))
                 | ((self.lo0y.val().get_bits::<13>(8) > self.h_minus_1_o.val()) & (self.lo1y.val().get_bits::<13>(8) > self.h_minus_1_o.val()) & (self.lo2y.val().get_bits::<13>(8) > self.h_minus_1_o.val()));
         }
-        self.box_x0_u.next = unsigned_cast(self.box_x0.val());
-        self.box_x1_u.next = unsigned_cast(self.box_x1.val());
-        self.box_y0_u.next = unsigned_cast(self.box_y0.val());
-        self.box_y1_u.next = unsigned_cast(self.box_y1.val());
 
         // The reciprocal of abs(det), requested when S1 holds a drawn triangle that S2 can take.
         self.det_abs.next = self.zb44.val();
         if self.s1_v.q.val() {
-            self.det_abs.next = unsigned_cast(self.s1_det.q.val());
-            if self.det_neg.val() {
-                self.det_abs.next = unsigned_cast(self.k0_44.val() - self.s1_det.q.val());
-            }
+            self.det_abs.next = self.s1_det_abs.q.val();
 
         }
         self.recip.request.data.next = self.det_abs.val();
@@ -1589,6 +1576,7 @@ impl Logic for Setup {
             self.s1_by1.d.next = self.box_y1_u.val().get_bits::<10>(0);
             self.s1_box_empty.d.next = self.box_empty.val();
             self.s1_det_zero.d.next = self.det_eq.val();
+            self.s1_det_abs.d.next = self.abs_now.val();
         }
         if self.leave0.val() {
             self.s0_v.d.next = false;
