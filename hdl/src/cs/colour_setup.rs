@@ -38,7 +38,8 @@
 //! * Cycles 33-35: A and B of R, G, B on two pipelined 40x26 multipliers (`MulPipeS`), their operands
 //!   registered in 32-34 and their sums in 34-36 (the blocks and the sum of their partial products in
 //!   one cycle were the chipset's critical path, issue 15 item 5); rounded, shifted and saturated
-//!   (`plane_round`) in 35-37. det == 0 (never sent by the host: the RC does not flag
+//!   (`plane_round`, two cycles: the shift registered, then the increment and saturation) in 35-36,
+//!   36-37 and 37-38. det == 0 (never sent by the host: the RC does not flag
 //!   a zero-area triangle visible) gives A = B = 0, so C is the constant vertex-0 value.
 //! * Cycles 36-38: A*(128-x0) and B*(128-y0) of R, G, B on two 40x21 multipliers; C two cycles later
 //!   (38-40).
@@ -126,10 +127,10 @@ pub struct ColourSetup {
     neg: [DFF<Bit>; 8],
     /// Stations 2..=9 (`zero[j - 2]`: station j).
     zero: [DFF<Bit>; 8],
-    /// Stations 9..=11 (`r_a[j - 9]`: station j).
-    r_a: [DFF<Bits<40>>; 3],
-    /// Stations 9..=11 (`r_b[j - 9]`: station j).
-    r_b: [DFF<Bits<40>>; 3],
+    /// Stations 10..=11 (`r_a[j - 10]`: station j).
+    r_a: [DFF<Bits<40>>; 2],
+    /// Stations 10..=11 (`r_b[j - 10]`: station j).
+    r_b: [DFF<Bits<40>>; 2],
     /// Stations 10..=11 (`r_c[j - 10]`: station j).
     r_c: [DFF<Bits<56>>; 2],
     /// Stations 10..=11 (`g_a[j - 10]`: station j).
@@ -209,8 +210,6 @@ pub struct ColourSetup {
     neg_ab: Signal<Local, Bit>,
     ab_a: Signal<Local, Bits<40>>,
     ab_b: Signal<Local, Bits<40>>,
-    ca: Signal<Local, Bits<40>>,
-    cb: Signal<Local, Bits<40>>,
     cx0: Signal<Local, Bits<20>>,
     cy0: Signal<Local, Bits<20>>,
     cv: Signal<Local, Bits<16>>,
@@ -356,8 +355,6 @@ impl Default for ColourSetup {
             neg_ab: Default::default(),
             ab_a: Default::default(),
             ab_b: Default::default(),
-            ca: Default::default(),
-            cb: Default::default(),
             cx0: Default::default(),
             cy0: Default::default(),
             cv: Default::default(),
@@ -476,11 +473,11 @@ impl Logic for ColourSetup {
             self.zero[j].clock.next = self.clock.val();
             self.zero[j].d.next = self.zero[j].q.val();
         }
-        for j in 0..3 {
+        for j in 0..2 {
             self.r_a[j].clock.next = self.clock.val();
             self.r_a[j].d.next = self.r_a[j].q.val();
         }
-        for j in 0..3 {
+        for j in 0..2 {
             self.r_b[j].clock.next = self.clock.val();
             self.r_b[j].d.next = self.r_b[j].q.val();
         }
@@ -827,14 +824,12 @@ impl Logic for ColourSetup {
             self.c_v0r[9].d.next = self.c_v0r[8].q.val();
             self.c_v0g[9].d.next = self.c_v0g[8].q.val();
             self.c_v0b[9].d.next = self.c_v0b[8].q.val();
-            self.r_a[1].d.next = self.r_a[0].q.val();
-            self.r_b[1].d.next = self.r_b[0].q.val();
         }
         if self.tok.q.val().get_bit(39) {
             self.c_index[10].d.next = self.c_index[9].q.val();
             self.c_material[10].d.next = self.c_material[9].q.val();
-            self.r_a[2].d.next = self.r_a[1].q.val();
-            self.r_b[2].d.next = self.r_b[1].q.val();
+            self.r_a[1].d.next = self.r_a[0].q.val();
+            self.r_b[1].d.next = self.r_b[0].q.val();
             self.r_c[1].d.next = self.r_c[0].q.val();
             self.g_a[1].d.next = self.g_a[0].q.val();
             self.g_b[1].d.next = self.g_b[0].q.val();
@@ -955,44 +950,39 @@ impl Logic for ColourSetup {
             self.mab[u].a.next = self.opab_n[u].q.val();
             self.mab[u].b.next = self.opab_m.q.val();
             self.pab[u].d.next = self.mab[u].p.val();
+            self.round[u].clock.next = self.clock.val();
             self.round[u].p.next = self.pab[u].q.val();
             self.round[u].sh.next = self.sh_ab2.q.val();
+            self.round[u].clear.next = self.z_ab2.q.val();
         }
+        // The rounds' outputs: R's A and B in cycle 36, G's in 37, B's in 38, each into the station
+        // of the cycle after (10) and straight on to the C products' operands.
         self.ab_a.next = self.round[0].out.val();
         self.ab_b.next = self.round[1].out.val();
-        if self.z_ab2.q.val() {
-            self.ab_a.next = self.k0_40.val();
-            self.ab_b.next = self.k0_40.val();
-        }
-        if self.tok.q.val().get_bit(34) {
+        if self.tok.q.val().get_bit(35) {
             self.r_a[0].d.next = self.ab_a.val();
             self.r_b[0].d.next = self.ab_b.val();
         }
-        if self.tok.q.val().get_bit(35) {
+        if self.tok.q.val().get_bit(36) {
             self.g_a[0].d.next = self.ab_a.val();
             self.g_b[0].d.next = self.ab_b.val();
         }
-        if self.tok.q.val().get_bit(36) {
+        if self.tok.q.val().get_bit(37) {
             self.b_a[0].d.next = self.ab_a.val();
             self.b_b[0].d.next = self.ab_b.val();
         }
 
-        // Cycles 36-38: A*(8-x0) and B*(8-y0) of R, G, B; C two cycles later (38-40).
-        self.ca.next = self.r_a[0].q.val();
-        self.cb.next = self.r_b[0].q.val();
+        // Cycles 36-38: A*(128-x0) and B*(128-y0) of R, G, B, A and B from the rounds; C two cycles
+        // later (38-40).
         self.cx0.next = self.c_x0[8].q.val();
         self.cy0.next = self.c_y0[8].q.val();
         self.cv.next = self.c_v0r[8].q.val();
         if self.tok.q.val().get_bit(36) {
-            self.ca.next = self.g_a[0].q.val();
-            self.cb.next = self.g_b[0].q.val();
             self.cx0.next = self.c_x0[9].q.val();
             self.cy0.next = self.c_y0[9].q.val();
             self.cv.next = self.c_v0g[9].q.val();
         }
         if self.tok.q.val().get_bit(37) {
-            self.ca.next = self.b_a[0].q.val();
-            self.cb.next = self.b_b[0].q.val();
             self.cx0.next = self.c_x0[9].q.val();
             self.cy0.next = self.c_y0[9].q.val();
             self.cv.next = self.c_v0b[9].q.val();
@@ -1001,9 +991,9 @@ impl Logic for ColourSetup {
         self.scy0.next = signed_cast(self.cy0.val());
         self.ox.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(self.scx0.val());
         self.oy.next = self.k128_21.val() - signed_bit_cast_safe::<21, 20>(self.scy0.val());
-        self.opc_a[0].d.next = signed_cast(self.ca.val());
+        self.opc_a[0].d.next = signed_cast(self.ab_a.val());
         self.opc_o[0].d.next = self.ox.val();
-        self.opc_a[1].d.next = signed_cast(self.cb.val());
+        self.opc_a[1].d.next = signed_cast(self.ab_b.val());
         self.opc_o[1].d.next = self.oy.val();
         self.cv1.d.next = signed_cast(self.cv.val());
         self.cv2.d.next = self.cv1.q.val();
@@ -1057,8 +1047,8 @@ impl Logic for ColourSetup {
         if self.tok.q.val().get_bit(40) {
             self.tdbs_write_enable.next = true;
             self.tdbs_write_address.next = self.c_index[10].q.val();
-            self.tdbs_write_data.next.r_a = self.r_a[2].q.val();
-            self.tdbs_write_data.next.r_b = self.r_b[2].q.val();
+            self.tdbs_write_data.next.r_a = self.r_a[1].q.val();
+            self.tdbs_write_data.next.r_b = self.r_b[1].q.val();
             self.tdbs_write_data.next.r_c = self.r_c[1].q.val();
             self.tdbs_write_data.next.g_a = self.g_a[1].q.val();
             self.tdbs_write_data.next.g_b = self.g_b[1].q.val();
