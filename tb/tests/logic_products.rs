@@ -3,6 +3,8 @@
 //! generated Verilog, and the ECP5 netlist Yosys makes of it, give Verilog's own `*` for every input,
 //! and the netlist has no multiplier block. The Rust side of each leaf is checked by the texel filter's
 //! and the texture unit's benches against golden.
+//! The RC reciprocal's two-steps-in-one leaf (`hdl::common::DivStep2x45`) is checked the same way against
+//! two chained restoring steps.
 
 use hdl::common::{verilog_named, LerpDeltaLogic, MulLogicU, MulPipeS, MulSplitS, SquareLogicS, SquareLogicU};
 use rust_hdl::prelude::*;
@@ -87,7 +89,7 @@ fn check_blocks(name: &str, verilog: &str, tbs: &[String], dir: &Path, blocks: u
         assert!(text.contains(" mismatches 0"), "{name}: Yosys's netlist is not the product ({}):\n{text}", tbf.display());
     }
     let luts = stat.lines().find(|l| l.contains("LUT4")).unwrap_or("").trim().to_string();
-    println!("{name}: every input equals `*`, in the Verilog and in Yosys's ECP5 netlist ({luts}, {blocks} MULT18X18D)");
+    println!("{name}: every input gives the reference (Verilog's `*`, or two chained steps), in the Verilog and in Yosys's ECP5 netlist ({luts}, {blocks} MULT18X18D)");
 }
 
 #[test]
@@ -271,4 +273,56 @@ fn the_squares_in_logic_equal_verilogs_multiply_for_every_input_and_use_no_dsp_b
     m.connect_all();
     let v = verilog_named(&m, "lp").unwrap();
     check("SquareLogicS<16, 32> (normalizer)", &v, &[testbench(&[("a", 16)], 32, true, "$signed(a) * $signed(a)")], &root.join("s16"));
+}
+
+/// The RC reciprocal's two-steps-in-one leaf (`DivStep2x45`, issue 15 item 5): its generated Verilog
+/// and Yosys's ECP5 netlist of it equal two chained restoring steps (`DivStep45`'s Verilog, written
+/// out here) on random divisors of every width and remainders below twice the divisor, the edges
+/// (den - 1, den, 2 den - 1) included.
+#[test]
+fn the_reciprocals_two_steps_in_one_equal_two_chained_steps_in_verilog_and_in_the_netlist() {
+    if !require_tools("the_reciprocals_two_steps_in_one_equal_two_chained_steps_in_verilog_and_in_the_netlist", &["iverilog", "vvp", "yosys"]) {
+        return;
+    }
+    let mut m = hdl::common::DivStep2x45::default();
+    m.connect_all();
+    let v = verilog_named(&m, "lp").unwrap();
+    let tb = "module tb;
+    reg [44:0] rem, den, r1, r2;
+    reg [46:0] den3;
+    reg [24:0] quo, q1, q2;
+    reg [63:0] a, b;
+    wire [44:0] rem_next;
+    wire [24:0] quo_next;
+    integer i, bad;
+    lp uut(.rem(rem), .den(den), .den3(den3), .quo(quo), .rem_next(rem_next), .quo_next(quo_next));
+    initial begin
+      bad = 0;
+      for (i = 0; i < 5000; i = i + 1) begin
+        a = {$random, $random};
+        b = {$random, $random};
+        den = (a[43:0] >> (i % 44)) | 45'd1;
+        case (i % 4)
+          0: rem = b % (2 * den);
+          1: rem = den - 45'd1;
+          2: rem = 2 * den - 45'd1;
+          default: rem = den;
+        endcase
+        den3 = 3 * den;
+        quo = b[60:36];
+        if (rem >= den) begin r1 = (rem - den) << 1; q1 = (quo << 1) | 25'd1; end else begin r1 = rem << 1; q1 = quo << 1; end
+        if (r1 >= den) begin r2 = (r1 - den) << 1; q2 = (q1 << 1) | 25'd1; end else begin r2 = r1 << 1; q2 = q1 << 1; end
+        #1;
+        if (rem_next !== r2 || quo_next !== q2) begin
+          if (bad < 5) $display(\"mismatch at %0d: rem %0d den %0d: got %0d %0d want %0d %0d\", i, rem, den, rem_next, quo_next, r2, q2);
+          bad = bad + 1;
+        end
+      end
+      $display(\"checked 5000 mismatches %0d\", bad);
+      $finish;
+    end
+endmodule
+"
+    .to_string();
+    check("DivStep2x45", &v, &[tb], &workspace_target().join("hdl").join("div_step2"));
 }

@@ -7,6 +7,7 @@
 
 pub mod add;
 pub mod div_step;
+pub mod div_step2;
 pub mod fast_ram;
 pub mod leading_one;
 pub mod merge_modules;
@@ -16,6 +17,7 @@ pub mod stream;
 
 pub use add::AddU;
 pub use div_step::{DivStep, DivStep45, DivStepN};
+pub use div_step2::DivStep2x45;
 pub use fast_ram::FastRAM;
 pub use leading_one::{LeadingOne, LeadingOne36, LeadingOne44};
 pub use merge_modules::merge_identical_modules;

@@ -16,6 +16,11 @@
 //! after it is 0 then, else 2^(shift+1). Station 0 takes that from the leading one's one-hot word with an
 //! equality, so the 25 steps fit in thirteen stations of at most two subtractions.
 //!
+//! Each station's two steps are one [`DivStep2x45`]: its three subtractions (rem - den, 2 rem - den,
+//! 2 rem - 3 den) side by side and the two quotient bits selecting, so one carry chain per station
+//! instead of two in series (two chained steps were the `rc` top's critical path, issue 15 item 5).
+//! 3 den is formed with station 0 and travels with the division (`den3`).
+//!
 //! Timing, as [`super::reciprocal`]: the pipeline advances when its last station is empty or its result
 //! is taken, and `request.ready` is that enable; a request accepted in cycle t gives its result in cycle
 //! t+13 ([`FAST_RECIP_LATENCY`], `golden::cycle::rc::RECIP_LATENCY`) with no stall, one result per clock
@@ -26,7 +31,7 @@
 //! their cycle models are built on its latency, and they are not in the `rc` or `chipset` tops.
 
 use super::reciprocal::{RecipResult, RecipStation};
-use crate::common::{DivStep45, LeadingOne44, StreamIn, StreamOut};
+use crate::common::{DivStep2x45, LeadingOne44, StreamIn, StreamOut};
 use rust_hdl::prelude::*;
 
 /// Stations: normalisation with step 1, then twelve of two steps.
@@ -51,13 +56,18 @@ pub struct FastReciprocal {
     lead: LeadingOne44,
     /// The stations; `st[k]` holds a division after steps 1..=2k+1.
     st: [DFF<RecipStation>; 13],
-    /// `step[2k]` and `step[2k + 1]` take station k to station k+1.
-    step: [DivStep45; 24],
+    /// 3 * den of the division in station k (`den3[k]`, stations 0..=11), formed once with station 0.
+    den3: [DFF<Bits<47>>; 12],
+    /// `step[k]` takes station k to station k+1 (two steps).
+    step: [DivStep2x45; 12],
     advance: Signal<Local, Bit>,
     norm: Signal<Local, RecipStation>,
     /// The request is a power of two (step 1's quotient bit).
     pow2: Signal<Local, Bit>,
     onehot45: Signal<Local, Bits<45>>,
+    den47: Signal<Local, Bits<47>>,
+    den47x2: Signal<Local, Bits<47>>,
+    den3_in: Signal<Local, Bits<47>>,
     k0_25: Constant<Bits<25>>,
     k1_25: Constant<Bits<25>>,
     k0_45: Constant<Bits<45>>,
@@ -73,11 +83,15 @@ impl Default for FastReciprocal {
             next_mant: Default::default(),
             lead: Default::default(),
             st: Default::default(),
+            den3: Default::default(),
             step: Default::default(),
             advance: Default::default(),
             norm: Default::default(),
             pow2: Default::default(),
             onehot45: Default::default(),
+            den47: Default::default(),
+            den47x2: Default::default(),
+            den3_in: Default::default(),
             k0_25: Constant::new(0.into()),
             k1_25: Constant::new(1.into()),
             k0_45: Constant::new(0.into()),
@@ -115,6 +129,10 @@ impl Logic for FastReciprocal {
         self.st[11].d.next = self.st[11].q.val();
         self.st[12].clock.next = self.clock.val();
         self.st[12].d.next = self.st[12].q.val();
+        for k in 0..12 {
+            self.den3[k].clock.next = self.clock.val();
+            self.den3[k].d.next = self.den3[k].q.val();
+        }
         self.advance.next = !self.st[12].q.val().valid | self.result.ready.val();
         // Station 0's input: the request, normalised, after step 1.
         self.lead.x.next = self.request.data.val();
@@ -126,6 +144,10 @@ impl Logic for FastReciprocal {
         // Twice the leading one: a shift, no carry chain.
         self.norm.next.rem = self.onehot45.val() << self.k1_6.val();
         self.norm.next.quo = self.k0_25.val();
+        // 3 den for the stations' two-step leaves, beside the normalisation.
+        self.den47.next = bit_cast::<47, 44>(self.request.data.val());
+        self.den47x2.next = self.den47.val() << self.k1_6.val();
+        self.den3_in.next = self.den47.val() + self.den47x2.val();
         if self.pow2.val() {
             self.norm.next.rem = self.k0_45.val();
             self.norm.next.quo = self.k1_25.val();
@@ -133,113 +155,101 @@ impl Logic for FastReciprocal {
         self.step[0].rem.next = self.st[0].q.val().rem;
         self.step[0].quo.next = self.st[0].q.val().quo;
         self.step[0].den.next = self.st[0].q.val().den;
-        self.step[1].rem.next = self.step[0].rem_next.val();
-        self.step[1].quo.next = self.step[0].quo_next.val();
-        self.step[1].den.next = self.st[0].q.val().den;
-        self.step[2].rem.next = self.st[1].q.val().rem;
-        self.step[2].quo.next = self.st[1].q.val().quo;
-        self.step[2].den.next = self.st[1].q.val().den;
-        self.step[3].rem.next = self.step[2].rem_next.val();
-        self.step[3].quo.next = self.step[2].quo_next.val();
-        self.step[3].den.next = self.st[1].q.val().den;
-        self.step[4].rem.next = self.st[2].q.val().rem;
-        self.step[4].quo.next = self.st[2].q.val().quo;
-        self.step[4].den.next = self.st[2].q.val().den;
-        self.step[5].rem.next = self.step[4].rem_next.val();
-        self.step[5].quo.next = self.step[4].quo_next.val();
-        self.step[5].den.next = self.st[2].q.val().den;
-        self.step[6].rem.next = self.st[3].q.val().rem;
-        self.step[6].quo.next = self.st[3].q.val().quo;
-        self.step[6].den.next = self.st[3].q.val().den;
-        self.step[7].rem.next = self.step[6].rem_next.val();
-        self.step[7].quo.next = self.step[6].quo_next.val();
-        self.step[7].den.next = self.st[3].q.val().den;
-        self.step[8].rem.next = self.st[4].q.val().rem;
-        self.step[8].quo.next = self.st[4].q.val().quo;
-        self.step[8].den.next = self.st[4].q.val().den;
-        self.step[9].rem.next = self.step[8].rem_next.val();
-        self.step[9].quo.next = self.step[8].quo_next.val();
-        self.step[9].den.next = self.st[4].q.val().den;
-        self.step[10].rem.next = self.st[5].q.val().rem;
-        self.step[10].quo.next = self.st[5].q.val().quo;
-        self.step[10].den.next = self.st[5].q.val().den;
-        self.step[11].rem.next = self.step[10].rem_next.val();
-        self.step[11].quo.next = self.step[10].quo_next.val();
-        self.step[11].den.next = self.st[5].q.val().den;
-        self.step[12].rem.next = self.st[6].q.val().rem;
-        self.step[12].quo.next = self.st[6].q.val().quo;
-        self.step[12].den.next = self.st[6].q.val().den;
-        self.step[13].rem.next = self.step[12].rem_next.val();
-        self.step[13].quo.next = self.step[12].quo_next.val();
-        self.step[13].den.next = self.st[6].q.val().den;
-        self.step[14].rem.next = self.st[7].q.val().rem;
-        self.step[14].quo.next = self.st[7].q.val().quo;
-        self.step[14].den.next = self.st[7].q.val().den;
-        self.step[15].rem.next = self.step[14].rem_next.val();
-        self.step[15].quo.next = self.step[14].quo_next.val();
-        self.step[15].den.next = self.st[7].q.val().den;
-        self.step[16].rem.next = self.st[8].q.val().rem;
-        self.step[16].quo.next = self.st[8].q.val().quo;
-        self.step[16].den.next = self.st[8].q.val().den;
-        self.step[17].rem.next = self.step[16].rem_next.val();
-        self.step[17].quo.next = self.step[16].quo_next.val();
-        self.step[17].den.next = self.st[8].q.val().den;
-        self.step[18].rem.next = self.st[9].q.val().rem;
-        self.step[18].quo.next = self.st[9].q.val().quo;
-        self.step[18].den.next = self.st[9].q.val().den;
-        self.step[19].rem.next = self.step[18].rem_next.val();
-        self.step[19].quo.next = self.step[18].quo_next.val();
-        self.step[19].den.next = self.st[9].q.val().den;
-        self.step[20].rem.next = self.st[10].q.val().rem;
-        self.step[20].quo.next = self.st[10].q.val().quo;
-        self.step[20].den.next = self.st[10].q.val().den;
-        self.step[21].rem.next = self.step[20].rem_next.val();
-        self.step[21].quo.next = self.step[20].quo_next.val();
-        self.step[21].den.next = self.st[10].q.val().den;
-        self.step[22].rem.next = self.st[11].q.val().rem;
-        self.step[22].quo.next = self.st[11].q.val().quo;
-        self.step[22].den.next = self.st[11].q.val().den;
-        self.step[23].rem.next = self.step[22].rem_next.val();
-        self.step[23].quo.next = self.step[22].quo_next.val();
-        self.step[23].den.next = self.st[11].q.val().den;
+        self.step[0].den3.next = self.den3[0].q.val();
+        self.step[1].rem.next = self.st[1].q.val().rem;
+        self.step[1].quo.next = self.st[1].q.val().quo;
+        self.step[1].den.next = self.st[1].q.val().den;
+        self.step[1].den3.next = self.den3[1].q.val();
+        self.step[2].rem.next = self.st[2].q.val().rem;
+        self.step[2].quo.next = self.st[2].q.val().quo;
+        self.step[2].den.next = self.st[2].q.val().den;
+        self.step[2].den3.next = self.den3[2].q.val();
+        self.step[3].rem.next = self.st[3].q.val().rem;
+        self.step[3].quo.next = self.st[3].q.val().quo;
+        self.step[3].den.next = self.st[3].q.val().den;
+        self.step[3].den3.next = self.den3[3].q.val();
+        self.step[4].rem.next = self.st[4].q.val().rem;
+        self.step[4].quo.next = self.st[4].q.val().quo;
+        self.step[4].den.next = self.st[4].q.val().den;
+        self.step[4].den3.next = self.den3[4].q.val();
+        self.step[5].rem.next = self.st[5].q.val().rem;
+        self.step[5].quo.next = self.st[5].q.val().quo;
+        self.step[5].den.next = self.st[5].q.val().den;
+        self.step[5].den3.next = self.den3[5].q.val();
+        self.step[6].rem.next = self.st[6].q.val().rem;
+        self.step[6].quo.next = self.st[6].q.val().quo;
+        self.step[6].den.next = self.st[6].q.val().den;
+        self.step[6].den3.next = self.den3[6].q.val();
+        self.step[7].rem.next = self.st[7].q.val().rem;
+        self.step[7].quo.next = self.st[7].q.val().quo;
+        self.step[7].den.next = self.st[7].q.val().den;
+        self.step[7].den3.next = self.den3[7].q.val();
+        self.step[8].rem.next = self.st[8].q.val().rem;
+        self.step[8].quo.next = self.st[8].q.val().quo;
+        self.step[8].den.next = self.st[8].q.val().den;
+        self.step[8].den3.next = self.den3[8].q.val();
+        self.step[9].rem.next = self.st[9].q.val().rem;
+        self.step[9].quo.next = self.st[9].q.val().quo;
+        self.step[9].den.next = self.st[9].q.val().den;
+        self.step[9].den3.next = self.den3[9].q.val();
+        self.step[10].rem.next = self.st[10].q.val().rem;
+        self.step[10].quo.next = self.st[10].q.val().quo;
+        self.step[10].den.next = self.st[10].q.val().den;
+        self.step[10].den3.next = self.den3[10].q.val();
+        self.step[11].rem.next = self.st[11].q.val().rem;
+        self.step[11].quo.next = self.st[11].q.val().quo;
+        self.step[11].den.next = self.st[11].q.val().den;
+        self.step[11].den3.next = self.den3[11].q.val();
         if self.advance.val() {
             self.st[0].d.next = self.norm.val();
+            self.den3[0].d.next = self.den3_in.val();
+            self.den3[1].d.next = self.den3[0].q.val();
+            self.den3[2].d.next = self.den3[1].q.val();
+            self.den3[3].d.next = self.den3[2].q.val();
+            self.den3[4].d.next = self.den3[3].q.val();
+            self.den3[5].d.next = self.den3[4].q.val();
+            self.den3[6].d.next = self.den3[5].q.val();
+            self.den3[7].d.next = self.den3[6].q.val();
+            self.den3[8].d.next = self.den3[7].q.val();
+            self.den3[9].d.next = self.den3[8].q.val();
+            self.den3[10].d.next = self.den3[9].q.val();
+            self.den3[11].d.next = self.den3[10].q.val();
             self.st[1].d.next = self.st[0].q.val();
-            self.st[1].d.next.rem = self.step[1].rem_next.val();
-            self.st[1].d.next.quo = self.step[1].quo_next.val();
+            self.st[1].d.next.rem = self.step[0].rem_next.val();
+            self.st[1].d.next.quo = self.step[0].quo_next.val();
             self.st[2].d.next = self.st[1].q.val();
-            self.st[2].d.next.rem = self.step[3].rem_next.val();
-            self.st[2].d.next.quo = self.step[3].quo_next.val();
+            self.st[2].d.next.rem = self.step[1].rem_next.val();
+            self.st[2].d.next.quo = self.step[1].quo_next.val();
             self.st[3].d.next = self.st[2].q.val();
-            self.st[3].d.next.rem = self.step[5].rem_next.val();
-            self.st[3].d.next.quo = self.step[5].quo_next.val();
+            self.st[3].d.next.rem = self.step[2].rem_next.val();
+            self.st[3].d.next.quo = self.step[2].quo_next.val();
             self.st[4].d.next = self.st[3].q.val();
-            self.st[4].d.next.rem = self.step[7].rem_next.val();
-            self.st[4].d.next.quo = self.step[7].quo_next.val();
+            self.st[4].d.next.rem = self.step[3].rem_next.val();
+            self.st[4].d.next.quo = self.step[3].quo_next.val();
             self.st[5].d.next = self.st[4].q.val();
-            self.st[5].d.next.rem = self.step[9].rem_next.val();
-            self.st[5].d.next.quo = self.step[9].quo_next.val();
+            self.st[5].d.next.rem = self.step[4].rem_next.val();
+            self.st[5].d.next.quo = self.step[4].quo_next.val();
             self.st[6].d.next = self.st[5].q.val();
-            self.st[6].d.next.rem = self.step[11].rem_next.val();
-            self.st[6].d.next.quo = self.step[11].quo_next.val();
+            self.st[6].d.next.rem = self.step[5].rem_next.val();
+            self.st[6].d.next.quo = self.step[5].quo_next.val();
             self.st[7].d.next = self.st[6].q.val();
-            self.st[7].d.next.rem = self.step[13].rem_next.val();
-            self.st[7].d.next.quo = self.step[13].quo_next.val();
+            self.st[7].d.next.rem = self.step[6].rem_next.val();
+            self.st[7].d.next.quo = self.step[6].quo_next.val();
             self.st[8].d.next = self.st[7].q.val();
-            self.st[8].d.next.rem = self.step[15].rem_next.val();
-            self.st[8].d.next.quo = self.step[15].quo_next.val();
+            self.st[8].d.next.rem = self.step[7].rem_next.val();
+            self.st[8].d.next.quo = self.step[7].quo_next.val();
             self.st[9].d.next = self.st[8].q.val();
-            self.st[9].d.next.rem = self.step[17].rem_next.val();
-            self.st[9].d.next.quo = self.step[17].quo_next.val();
+            self.st[9].d.next.rem = self.step[8].rem_next.val();
+            self.st[9].d.next.quo = self.step[8].quo_next.val();
             self.st[10].d.next = self.st[9].q.val();
-            self.st[10].d.next.rem = self.step[19].rem_next.val();
-            self.st[10].d.next.quo = self.step[19].quo_next.val();
+            self.st[10].d.next.rem = self.step[9].rem_next.val();
+            self.st[10].d.next.quo = self.step[9].quo_next.val();
             self.st[11].d.next = self.st[10].q.val();
-            self.st[11].d.next.rem = self.step[21].rem_next.val();
-            self.st[11].d.next.quo = self.step[21].quo_next.val();
+            self.st[11].d.next.rem = self.step[10].rem_next.val();
+            self.st[11].d.next.quo = self.step[10].quo_next.val();
             self.st[12].d.next = self.st[11].q.val();
-            self.st[12].d.next.rem = self.step[23].rem_next.val();
-            self.st[12].d.next.quo = self.step[23].quo_next.val();
+            self.st[12].d.next.rem = self.step[11].rem_next.val();
+            self.st[12].d.next.quo = self.step[11].quo_next.val();
         }
         self.request.ready.next = self.advance.val();
         self.result.valid.next = self.st[12].q.val().valid;
@@ -247,7 +257,7 @@ impl Logic for FastReciprocal {
         self.result.data.next.shift = self.st[12].q.val().shift;
         self.next_mant.next = self.st[12].q.val().quo;
         if self.advance.val() {
-            self.next_mant.next = self.step[23].quo_next.val();
+            self.next_mant.next = self.step[11].quo_next.val();
         }
     }
 }
