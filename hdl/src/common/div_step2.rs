@@ -141,8 +141,7 @@ mod tests {
         u.connect_all();
         for k in 0..20_000 {
             // Divisors of every width up to 44 bits, remainders in [0, 2 den).
-            let den = (next() >> (20 + k % 44)).max(1) & ((1 << 44) - 1);
-            let den = den.max(1);
+            let den = ((next() >> (20 + k % 44)) & ((1 << 44) - 1)).max(1);
             let rem = match k % 4 {
                 0 => next() % (2 * den),
                 1 => den - 1,
