@@ -195,6 +195,11 @@ pub struct FpgaArgs {
     /// (docs/known-problems.md); the iCE40 rows do not depend on it.
     #[arg(long)]
     pub abc9: bool,
+    /// Clocks (MHz) the ECP5 rows' endpoints are counted against: how many arrive too late for each,
+    /// per block (nextpnr's `--detailed-timing-report`; `src/fpga_budget.rs`). Issue 15 asks 100 MHz
+    /// of `rc` and 80 of `chipset`.
+    #[arg(long, value_delimiter = ',', default_values_t = vec![100.0, 80.0])]
+    pub budget: Vec<f64>,
     /// Limit per tool run (yosys or nextpnr), seconds.
     #[arg(long, default_value_t = 3600)]
     pub timeout: u64,
@@ -446,6 +451,8 @@ pub struct Row {
     pub core: Option<Cells>,
     pub wrapper: Option<Cells>,
     pub pnr: PnrResult,
+    /// ECP5: the endpoints against `--budget` (None when nextpnr wrote no report).
+    pub budget: Option<crate::fpga_budget::Budget>,
     pub synth_seconds: f64,
     pub pnr_seconds: f64,
 }
@@ -506,11 +513,16 @@ fn report_top(top: &str, devices: &[Device], tools: &PnrTools, args: &FpgaArgs, 
         crate::say!("  {top} / {d}: {} LUT4, {} FF, {} CARRY, {} BRAM, {} DSP ({synth_s:.0} s); {pnr_name} ...", core.lut4, core.ff, core.carry, core.bram, core.dsp);
         let plog = format!("nextpnr_{d}.log");
         let _ = std::fs::remove_file(dir.join(&plog));
+        // nextpnr-ecp5's JSON report with every endpoint's arrival, for the budget table.
+        let rjson = format!("nextpnr_{d}_report.json");
+        let _ = std::fs::remove_file(dir.join(&rjson));
+        let report_args: Vec<String> = if dev.ecp5() { vec!["--report".into(), rjson.clone(), "--detailed-timing-report".into()] } else { Vec::new() };
         let (_, pnr_s) = run_limited(
             Command::new(&pnr_tool)
                 .current_dir(dir)
                 .args(dev.nextpnr_args())
                 .args(dev.speed_args(args.speed))
+                .args(&report_args)
                 .args(["--json", &json, "--seed", &args.seed.to_string(), "--freq", &args.freq.to_string(), "--timing-allow-fail", "--log", &plog]),
             &format!("{pnr_name} on {top} ({d})"),
             limit,
@@ -525,12 +537,20 @@ fn report_top(top: &str, devices: &[Device], tools: &PnrTools, args: &FpgaArgs, 
                 format!("nextpnr gave no Fmax (log: {})", dir.join(&plog).display())
             });
         }
+        let budget = match (dev.ecp5() && pnr.fmax.is_some(), std::fs::read_to_string(dir.join(&rjson))) {
+            (true, Ok(text)) => {
+                let report: serde_json::Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", dir.join(&rjson).display()))?;
+                Some(crate::fpga_budget::budget(&crate::fpga_budget::endpoints(&report)?, &args.budget))
+            }
+            (true, Err(e)) => return Err(format!("nextpnr-ecp5 routed {top} but wrote no report {}: {e}", dir.join(&rjson).display())),
+            _ => None,
+        };
         match (&pnr.fmax, &pnr.failure) {
             (Some(f), _) => crate::say!("  {top} / {d}: Fmax {f:.2} MHz ({pnr_s:.0} s)"),
             (None, Some(e)) => crate::say!("  {top} / {d}: {e} ({pnr_s:.0} s)"),
             _ => {}
         }
-        rows.push(Row { top: top.to_string(), device: dev, core: Some(core), wrapper: wrap, pnr, synth_seconds: synth_s, pnr_seconds: pnr_s });
+        rows.push(Row { top: top.to_string(), device: dev, core: Some(core), wrapper: wrap, pnr, budget, synth_seconds: synth_s, pnr_seconds: pnr_s });
     }
     Ok(rows)
 }
@@ -600,6 +620,15 @@ fn markdown(rows: &[Row], tools: &PnrTools, args: &FpgaArgs, wall: f64) -> Strin
         };
         let _ = writeln!(s, "* `{}` on {}: {}", r.top, r.device.name(), line);
     }
+    if rows.iter().any(|r| r.budget.is_some()) {
+        let _ = writeln!(s, "\n## Endpoints later than the clock budgets (ECP5)\n");
+        let _ = writeln!(s, "An endpoint is a cell input that ends a timing path (a flip-flop's data, enable or reset input); its arrival is the latest time after the clock edge at which it settles, from nextpnr's `--detailed-timing-report`, without the endpoint's setup time. One critical path says where the clock stops; these counts say how much is left to cut for each budget, and where (blocks by instance path; `src/fpga_budget.rs`).\n");
+        for r in rows {
+            if let Some(b) = &r.budget {
+                s.push_str(&crate::fpga_budget::markdown(&format!("`{}` on {}", r.top, r.device.name()), b, &args.budget, 25));
+            }
+        }
+    }
     s
 }
 
@@ -619,6 +648,10 @@ pub fn json(rows: &[Row]) -> String {
                 "failure": r.pnr.failure,
                 "lut4": c.lut4, "ff": c.ff, "carry": c.carry, "bram": c.bram, "dsp": c.dsp,
                 "critical_path": r.pnr.critical_path,
+                "budget": r.budget.as_ref().map(|b| serde_json::json!({
+                    "periods_ns": b.periods, "endpoints": b.endpoints, "late": b.late, "over_ns": b.over_ns,
+                    "blocks": b.blocks.iter().map(|x| serde_json::json!({"block": x.block, "late": x.late, "worst_register": x.worst_register, "worst_arrival_ns": x.worst_arrival})).collect::<Vec<_>>(),
+                })),
             })
         })
         .collect();
@@ -635,6 +668,9 @@ pub fn run(args: &FpgaArgs) -> Result<(), String> {
     }
     if args.opp_ops == Some(0) {
         return Err("--opp-ops 0: the OPP needs at least one object processor".into());
+    }
+    if args.budget.is_empty() || args.budget.iter().any(|f| !(*f > 0.0 && f.is_finite())) {
+        return Err(format!("--budget {:?}: give one or more positive clock frequencies in MHz, comma-separated", args.budget));
     }
     for tool in ["yosys", "nextpnr-ice40"] {
         if Command::new(tool).arg("--version").stdout(Stdio::null()).stderr(Stdio::null()).status().is_err() {
@@ -788,6 +824,14 @@ Warning: Max frequency for clock '$glbnet$clock$TRELLIS_IO_IN': 23.49 MHz (FAIL 
             fpga: FpgaArgs,
         }
         <Cli as clap::Parser>::try_parse_from(std::iter::once("fpga-report").chain(argv.iter().copied())).unwrap().fpga
+    }
+
+    #[test]
+    fn budgets_default_to_issue_15s_clocks_and_a_bad_one_is_named() {
+        assert_eq!(fpga_args(&[]).budget, vec![100.0, 80.0]);
+        assert_eq!(fpga_args(&["--budget", "125,100"]).budget, vec![125.0, 100.0]);
+        let e = run(&fpga_args(&["--block", "rc", "--budget", "0"])).unwrap_err();
+        assert!(e.contains("--budget"), "{e}");
     }
 
     #[test]

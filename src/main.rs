@@ -9,6 +9,7 @@ mod args;
 mod bench;
 mod cli;
 mod fpga;
+mod fpga_budget;
 mod output;
 mod proof;
 mod proof_realtime;
