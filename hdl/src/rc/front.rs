@@ -90,6 +90,13 @@ impl Logic for RcFront {
         self.traversal.rec_raw.next = self.setup.rec_raw.val();
         self.traversal.rec_a.next = self.setup.rec_a.val();
         self.traversal.rec_b.next = self.setup.rec_b.val();
+        self.traversal.rec_sx3_0.next = self.setup.rec_sx3_0.val();
+        self.traversal.rec_sx3_1.next = self.setup.rec_sx3_1.val();
+        self.traversal.rec_sx3_2.next = self.setup.rec_sx3_2.val();
+        self.traversal.rec_sx15_0.next = self.setup.rec_sx15_0.val();
+        self.traversal.rec_sx15_1.next = self.setup.rec_sx15_1.val();
+        self.traversal.rec_sx15_2.next = self.setup.rec_sx15_2.val();
+        self.traversal.rec_a3.next = self.setup.rec_a3.val();
         self.tok.next = self.traversal.tok.val();
         self.traversal.result_free.next = self.result_free.val();
 

@@ -103,6 +103,16 @@ pub struct SetupRec {
     pub raw: Bits<56>,
     /// The depth plane's C (its value at pixel (0, 0)): Type III's TdbV record with a and b.
     pub c: Bits<56>,
+    /// The multiples of the steps that are not shifts, 3*sx and 15*sx per edge and 3*A, formed as the
+    /// record enters the queue (issue 15 item 5): the traversal takes them with the record instead
+    /// of adding them up behind the queue's head, where two adders in series stood on the record take.
+    pub sx3_0: Bits<32>,
+    pub sx3_1: Bits<32>,
+    pub sx3_2: Bits<32>,
+    pub sx15_0: Bits<34>,
+    pub sx15_1: Bits<34>,
+    pub sx15_2: Bits<34>,
+    pub a3: Bits<42>,
 }
 
 /// What S2..S7 carry beside a [`SetupRec`] to find the depth plane (not queued).
@@ -159,6 +169,14 @@ pub struct Setup {
     pub rec_a: Signal<Out, Signed<40>>,
     pub rec_b: Signal<Out, Signed<40>>,
     pub rec_c: Signal<Out, Signed<56>>,
+    /// 3 and 15 times each edge's x step, 3 times A (the record's `sx3_k`, `sx15_k`, `a3`).
+    pub rec_sx3_0: Signal<Out, Signed<32>>,
+    pub rec_sx3_1: Signal<Out, Signed<32>>,
+    pub rec_sx3_2: Signal<Out, Signed<32>>,
+    pub rec_sx15_0: Signal<Out, Signed<34>>,
+    pub rec_sx15_1: Signal<Out, Signed<34>>,
+    pub rec_sx15_2: Signal<Out, Signed<34>>,
+    pub rec_a3: Signal<Out, Signed<42>>,
 
     // Children
     recip: FastReciprocal,
@@ -317,6 +335,26 @@ pub struct Setup {
     q_after: Signal<Local, Bits<3>>,
     pushed: Signal<Local, SetupRec>,
     head: Signal<Local, SetupRec>,
+    // The multiples pushed with a record (`SetupRec::sx3_k`): mJ_K edge K's step widened to J bits,
+    // m32d twice it, m34s sixteen times it; m42d twice A.
+    m30_0: Signal<Local, Signed<30>>,
+    m32_0: Signal<Local, Signed<32>>,
+    m32d_0: Signal<Local, Signed<32>>,
+    m34_0: Signal<Local, Signed<34>>,
+    m34s_0: Signal<Local, Signed<34>>,
+    m30_1: Signal<Local, Signed<30>>,
+    m32_1: Signal<Local, Signed<32>>,
+    m32d_1: Signal<Local, Signed<32>>,
+    m34_1: Signal<Local, Signed<34>>,
+    m34s_1: Signal<Local, Signed<34>>,
+    m30_2: Signal<Local, Signed<30>>,
+    m32_2: Signal<Local, Signed<32>>,
+    m32d_2: Signal<Local, Signed<32>>,
+    m34_2: Signal<Local, Signed<34>>,
+    m34s_2: Signal<Local, Signed<34>>,
+    m40: Signal<Local, Signed<40>>,
+    m42: Signal<Local, Signed<42>>,
+    m42d: Signal<Local, Signed<42>>,
     // S0
     c0x: Signal<Local, Signed<20>>,
     c0y: Signal<Local, Signed<20>>,
@@ -477,6 +515,7 @@ pub struct Setup {
     k8_6: Constant<Bits<6>>,
     k1_73: Constant<Bits<73>>,
     k1_6: Constant<Bits<6>>,
+    k4_6: Constant<Bits<6>>,
     k0_73: Constant<Bits<73>>,
     k0_13u: Constant<Bits<13>>,
     k0_44: Constant<Signed<44>>,
@@ -667,6 +706,31 @@ impl Setup {
             q_after: Default::default(),
             pushed: Default::default(),
             head: Default::default(),
+            m30_0: Default::default(),
+            m32_0: Default::default(),
+            m32d_0: Default::default(),
+            m34_0: Default::default(),
+            m34s_0: Default::default(),
+            m30_1: Default::default(),
+            m32_1: Default::default(),
+            m32d_1: Default::default(),
+            m34_1: Default::default(),
+            m34s_1: Default::default(),
+            m30_2: Default::default(),
+            m32_2: Default::default(),
+            m32d_2: Default::default(),
+            m34_2: Default::default(),
+            m34s_2: Default::default(),
+            m40: Default::default(),
+            m42: Default::default(),
+            m42d: Default::default(),
+            rec_sx3_0: Default::default(),
+            rec_sx3_1: Default::default(),
+            rec_sx3_2: Default::default(),
+            rec_sx15_0: Default::default(),
+            rec_sx15_1: Default::default(),
+            rec_sx15_2: Default::default(),
+            rec_a3: Default::default(),
             c0x: Default::default(),
             c0y: Default::default(),
             c1x: Default::default(),
@@ -813,6 +877,7 @@ impl Setup {
             k8_6: Constant::new(8.into()),
             k1_73: Constant::new(1.into()),
             k1_6: Constant::new(1.into()),
+            k4_6: Constant::new(4.into()),
             k0_73: Constant::new(0.into()),
             k0_13u: Constant::new(0.into()),
             k0_44: Constant::new(0.into()),
@@ -1342,6 +1407,32 @@ impl Logic for Setup {
         self.pushed.next = self.s7.q.val();
         self.pushed.next.raw = unsigned_cast(self.raw_now.val());
         self.pushed.next.c = unsigned_cast(self.p_c.q.val());
+        // The multiples the traversal takes with the record (adders off the record take).
+        self.m30_0.next = signed_cast(self.s7.q.val().sx0);
+        self.m32_0.next = signed_bit_cast_safe::<32, 30>(self.m30_0.val());
+        self.m32d_0.next = signed_cast(unsigned_cast(self.m32_0.val()) << self.k1_6.val());
+        self.pushed.next.sx3_0 = unsigned_cast(self.m32d_0.val() + self.m32_0.val());
+        self.m34_0.next = signed_bit_cast_safe::<34, 30>(self.m30_0.val());
+        self.m34s_0.next = signed_cast(unsigned_cast(self.m34_0.val()) << self.k4_6.val());
+        self.pushed.next.sx15_0 = unsigned_cast(self.m34s_0.val() - self.m34_0.val());
+        self.m30_1.next = signed_cast(self.s7.q.val().sx1);
+        self.m32_1.next = signed_bit_cast_safe::<32, 30>(self.m30_1.val());
+        self.m32d_1.next = signed_cast(unsigned_cast(self.m32_1.val()) << self.k1_6.val());
+        self.pushed.next.sx3_1 = unsigned_cast(self.m32d_1.val() + self.m32_1.val());
+        self.m34_1.next = signed_bit_cast_safe::<34, 30>(self.m30_1.val());
+        self.m34s_1.next = signed_cast(unsigned_cast(self.m34_1.val()) << self.k4_6.val());
+        self.pushed.next.sx15_1 = unsigned_cast(self.m34s_1.val() - self.m34_1.val());
+        self.m30_2.next = signed_cast(self.s7.q.val().sx2);
+        self.m32_2.next = signed_bit_cast_safe::<32, 30>(self.m30_2.val());
+        self.m32d_2.next = signed_cast(unsigned_cast(self.m32_2.val()) << self.k1_6.val());
+        self.pushed.next.sx3_2 = unsigned_cast(self.m32d_2.val() + self.m32_2.val());
+        self.m34_2.next = signed_bit_cast_safe::<34, 30>(self.m30_2.val());
+        self.m34s_2.next = signed_cast(unsigned_cast(self.m34_2.val()) << self.k4_6.val());
+        self.pushed.next.sx15_2 = unsigned_cast(self.m34s_2.val() - self.m34_2.val());
+        self.m40.next = signed_cast(self.s7.q.val().a);
+        self.m42.next = signed_bit_cast_safe::<42, 40>(self.m40.val());
+        self.m42d.next = signed_cast(unsigned_cast(self.m42.val()) << self.k1_6.val());
+        self.pushed.next.a3 = unsigned_cast(self.m42d.val() + self.m42.val());
         self.q_len.d.next = self.q_after.val();
         if self.leave7.val() {
             self.q_len.d.next = self.q_after.val() + self.k1_3.val();
@@ -1393,6 +1484,13 @@ impl Logic for Setup {
         self.rec_a.next = signed_cast(self.head.val().a);
         self.rec_b.next = signed_cast(self.head.val().b);
         self.rec_c.next = signed_cast(self.head.val().c);
+        self.rec_sx3_0.next = signed_cast(self.head.val().sx3_0);
+        self.rec_sx15_0.next = signed_cast(self.head.val().sx15_0);
+        self.rec_sx3_1.next = signed_cast(self.head.val().sx3_1);
+        self.rec_sx15_1.next = signed_cast(self.head.val().sx15_1);
+        self.rec_sx3_2.next = signed_cast(self.head.val().sx3_2);
+        self.rec_sx15_2.next = signed_cast(self.head.val().sx15_2);
+        self.rec_a3.next = signed_cast(self.head.val().a3);
 
         // ---- The stages' registers at the edge, last first ----
         // S7: phase 0 the products of C's terms; 1 their sum and those of raw's; 2 C and raw's sum.

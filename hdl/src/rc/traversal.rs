@@ -109,6 +109,15 @@ pub struct Traversal {
     pub rec_raw: Signal<In, Signed<56>>,
     pub rec_a: Signal<In, Signed<40>>,
     pub rec_b: Signal<In, Signed<40>>,
+    /// 3 and 15 times each edge's x step and 3 times A, formed by the setup as the record entered its
+    /// queue, so the record take adds nothing up to load the multiples (issue 15 item 5).
+    pub rec_sx3_0: Signal<In, Signed<32>>,
+    pub rec_sx3_1: Signal<In, Signed<32>>,
+    pub rec_sx3_2: Signal<In, Signed<32>>,
+    pub rec_sx15_0: Signal<In, Signed<34>>,
+    pub rec_sx15_1: Signal<In, Signed<34>>,
+    pub rec_sx15_2: Signal<In, Signed<34>>,
+    pub rec_a3: Signal<In, Signed<42>>,
     // To the setup
     /// The record is taken this cycle.
     pub rec_ready: Signal<Out, Bit>,
@@ -273,6 +282,10 @@ pub struct Traversal {
     ra1: Signal<Local, Signed<56>>,
     ra2: Signal<Local, Signed<56>>,
     ra4: Signal<Local, Signed<56>>,
+    // A's bits, for its multiples as shifts; 3 A from the record; 16 A.
+    uab: Signal<Local, Bits<56>>,
+    ra3: Signal<Local, Signed<56>>,
+    ra16: Signal<Local, Signed<56>>,
 
     width: Constant<Bits<20>>,
     last_addr: Constant<Bits<20>>,
@@ -355,6 +368,13 @@ impl Traversal {
             rec_raw: Default::default(),
             rec_a: Default::default(),
             rec_b: Default::default(),
+            rec_sx3_0: Default::default(),
+            rec_sx3_1: Default::default(),
+            rec_sx3_2: Default::default(),
+            rec_sx15_0: Default::default(),
+            rec_sx15_1: Default::default(),
+            rec_sx15_2: Default::default(),
+            rec_a3: Default::default(),
             rec_ready: Default::default(),
             result_free: Default::default(),
             tok: Default::default(),
@@ -496,6 +516,9 @@ impl Traversal {
             ra1: Default::default(),
             ra2: Default::default(),
             ra4: Default::default(),
+            uab: Default::default(),
+            ra3: Default::default(),
+            ra16: Default::default(),
             width: Constant::new((width as u64).into()),
             last_addr: Constant::new(((width * height - 1) as u64).into()),
             half: Constant::new((1i64 << 15).into()),
@@ -706,28 +729,31 @@ impl Logic for Traversal {
             self.rsx2_0.next = signed_cast(self.ub0.val() << self.k1_6.val());
             self.rsx4_0.next = signed_cast(self.ub0.val() << self.k2_6.val());
             self.rsx16_0.next = signed_cast(self.ub0.val() << self.k4_6.val());
-            self.rsx3_0.next = self.rsx2_0.val() + self.rsx1_0.val();
-            self.rsx15_0.next = self.rsx16_0.val() - self.rsx1_0.val();
+            self.rsx3_0.next = signed_bit_cast_safe::<44, 32>(self.rec_sx3_0.val());
+            self.rsx15_0.next = signed_bit_cast_safe::<44, 34>(self.rec_sx15_0.val());
             self.lrn_0.next = self.rec_e0.val() + signed_bit_cast_safe::<44, 30>(self.rec_sy0.val());
             self.rsx1_1.next = signed_bit_cast_safe::<44, 30>(self.rec_sx1.val());
             self.ub1.next = unsigned_cast(self.rsx1_1.val());
             self.rsx2_1.next = signed_cast(self.ub1.val() << self.k1_6.val());
             self.rsx4_1.next = signed_cast(self.ub1.val() << self.k2_6.val());
             self.rsx16_1.next = signed_cast(self.ub1.val() << self.k4_6.val());
-            self.rsx3_1.next = self.rsx2_1.val() + self.rsx1_1.val();
-            self.rsx15_1.next = self.rsx16_1.val() - self.rsx1_1.val();
+            self.rsx3_1.next = signed_bit_cast_safe::<44, 32>(self.rec_sx3_1.val());
+            self.rsx15_1.next = signed_bit_cast_safe::<44, 34>(self.rec_sx15_1.val());
             self.lrn_1.next = self.rec_e1.val() + signed_bit_cast_safe::<44, 30>(self.rec_sy1.val());
             self.rsx1_2.next = signed_bit_cast_safe::<44, 30>(self.rec_sx2.val());
             self.ub2.next = unsigned_cast(self.rsx1_2.val());
             self.rsx2_2.next = signed_cast(self.ub2.val() << self.k1_6.val());
             self.rsx4_2.next = signed_cast(self.ub2.val() << self.k2_6.val());
             self.rsx16_2.next = signed_cast(self.ub2.val() << self.k4_6.val());
-            self.rsx3_2.next = self.rsx2_2.val() + self.rsx1_2.val();
-            self.rsx15_2.next = self.rsx16_2.val() - self.rsx1_2.val();
+            self.rsx3_2.next = signed_bit_cast_safe::<44, 32>(self.rec_sx3_2.val());
+            self.rsx15_2.next = signed_bit_cast_safe::<44, 34>(self.rec_sx15_2.val());
             self.lrn_2.next = self.rec_e2.val() + signed_bit_cast_safe::<44, 30>(self.rec_sy2.val());
             self.ra1.next = signed_bit_cast_safe::<56, 40>(self.rec_a.val());
-            self.ra2.next = self.ra1.val() + self.ra1.val();
-            self.ra4.next = self.ra2.val() + self.ra2.val();
+            self.uab.next = unsigned_cast(self.ra1.val());
+            self.ra2.next = signed_cast(self.uab.val() << self.k1_6.val());
+            self.ra4.next = signed_cast(self.uab.val() << self.k2_6.val());
+            self.ra16.next = signed_cast(self.uab.val() << self.k4_6.val());
+            self.ra3.next = signed_bit_cast_safe::<56, 42>(self.rec_a3.val());
 
         } else {
             self.rsx1_0.next = self.ks0_44.val();
@@ -757,6 +783,9 @@ impl Logic for Traversal {
             self.ra1.next = self.ks0_56.val();
             self.ra2.next = self.ks0_56.val();
             self.ra4.next = self.ks0_56.val();
+            self.uab.next = self.kz56.val();
+            self.ra3.next = self.ks0_56.val();
+            self.ra16.next = self.ks0_56.val();
         }
         self.rec_ready.next = false;
         self.load_walk.next = false;
@@ -1102,9 +1131,9 @@ impl Logic for Traversal {
             self.nonpos2.d.next = self.rec_sx2.val().get_bit(29) | (self.rsx1_2.val() == self.ks0_44.val());
             self.ga1.d.next = self.ra1.val();
             self.ga2.d.next = self.ra2.val();
-            self.ga3.d.next = self.ra2.val() + self.ra1.val();
+            self.ga3.d.next = self.ra3.val();
             self.ga4.d.next = self.ra4.val();
-            self.ga16.d.next = self.ra4.val() + self.ra4.val() + self.ra4.val() + self.ra4.val();
+            self.ga16.d.next = self.ra16.val();
             self.grad_b.d.next = signed_bit_cast_safe::<56, 40>(self.rec_b.val());
         }
         if self.load_walk.val() {
