@@ -251,6 +251,7 @@ fn the_pipelined_products_equal_verilogs_multiply_one_edge_later_on_one_block_pe
     }
     one::<40, 26, 64, 5, 8>(&root, "colour setup's A and B", 2);
     one::<21, 21, 42, 3, 3>(&root, "the RC's det", 1);
+    one::<25, 21, 46, 7, 3>(&root, "the RC's dot units", 1);
 }
 
 /// The squares in logic (`SquareLogicU`, `SquareLogicS`: half the partial products of a general

@@ -26,11 +26,15 @@
 //! * S1 `Order`: zero area / cull decision from det's sign, the cull mode and the front face;
 //!   canonical order (swap vertices 1 and 2 if det < 0); all three edges' multiplier operands, fill-rule
 //!   flags and steps (-256*dy, 256*dx); the start address Y0*W + X0; the reciprocal request of abs(det).
-//! * S2 `Edges` on two dot units (a*b - c*d each), whose products are registered: the products of
-//!   phase k are chosen in phase k and subtracted in phase k+1. Phase 1 E0, E1; phase 2 E2 and
-//!   na = dz10*dy20 - dz20*dy10; phase 3 nb = dz20*dx10 - dz10*dx20. (Four cycles since issue 15
-//!   item 5: choosing, multiplying and subtracting in one cycle was the RC's critical path.) The
-//!   operands sit in registers that move on with the phases, so no choice stands in front of a product.
+//! * S2 `Edges` on two dot units (a*b - c*d each) of pipelined products (`MulPipeS`: the blocks'
+//!   partial products are registered, their sum a cycle later; issue 15 item 5): a product chosen in
+//!   phase k is in the product registers in phase k+2, where it is subtracted. Operands: phase 0 E0,
+//!   E1; phase 1 E2 and na = dz10*dy20 - dz20*dy10; phase 2 nb = dz20*dx10 - dz10*dx20. E0, E1 are
+//!   formed in phase 2, E2 and na in the first cycle of phase 3, and nb in S3's first cycle (unit b
+//!   keeps nb's operands until S2 takes its next record, whose first products land a cycle after
+//!   that). The operands sit in registers that move on with the phases, so no choice stands in front
+//!   of a product. (Four cycles since issue 15 item 5: choosing, multiplying and subtracting in one
+//!   cycle was the RC's critical path; then the product and its sum in one cycle was.)
 //!   `E = dx*(256*Y0+128-a.y) - dy*(256*X0+128-a.x) - bias` (bias 0 on a top or left edge, else 1).
 //! * S3, S4, S5 `Hold`: keep records while their reciprocals run (the reciprocal's latency, 13, is
 //!   longer than S2's four cycles). S5 is the third since issue 15 item 5: with two, the longer
@@ -186,10 +190,11 @@ pub struct Setup {
     mul_d1: MulPipeS<21, 21, 42, 3, 3>,
     /// S2: two dot units, a0*b0 - a1*b1 and c0*d0 - c1*d1. One MULT18X18D each (7 + 3 low bits in
     /// logic; two with 0 + 3): with the chipset's other blocks the 45F's 72 were too few (issue 15 item 5).
-    mul_a0: MulSplitS<25, 21, 46, 7, 3>,
-    mul_a1: MulSplitS<25, 21, 46, 7, 3>,
-    mul_b0: MulSplitS<25, 21, 46, 7, 3>,
-    mul_b1: MulSplitS<25, 21, 46, 7, 3>,
+    /// Pipelined (`MulPipeS`): the partial products are registered, their sum lands a cycle later.
+    mul_a0: MulPipeS<25, 21, 46, 7, 3>,
+    mul_a1: MulPipeS<25, 21, 46, 7, 3>,
+    mul_b0: MulPipeS<25, 21, 46, 7, 3>,
+    mul_b1: MulPipeS<25, 21, 46, 7, 3>,
     /// S6: the gradients.
     mul_g: MulS<47, 26, 73>,
     /// S7: the plane's two products per cycle, two MULT18X18D each (5 + 3 low bits in logic; three
@@ -247,6 +252,14 @@ pub struct Setup {
     pr_b1: DFF<Signed<46>>,
     prtl_a: DFF<Bit>,
     prtl_b: DFF<Bit>,
+    /// The fill-rule flags a cycle later, beside the products (`MulPipeS`: a product lands two cycles
+    /// after its operands, issue 15 item 5).
+    prtl2_a: DFF<Bit>,
+    prtl2_b: DFF<Bit>,
+    /// S2 entered phase 3 at the last edge (na's product is in `pr_b*` in this cycle only).
+    s2_fresh3: DFF<Bit>,
+    /// S3 took its record at the last edge (nb's product is in `pr_b*`).
+    s3_first: DFF<Bit>,
     n_dz10: DFF<Signed<25>>,
     n_dz20: DFF<Signed<25>>,
     n_dx10: DFF<Signed<21>>,
@@ -639,6 +652,10 @@ impl Setup {
             pr_b1: Default::default(),
             prtl_a: Default::default(),
             prtl_b: Default::default(),
+            prtl2_a: Default::default(),
+            prtl2_b: Default::default(),
+            s2_fresh3: Default::default(),
+            s3_first: Default::default(),
             n_dz10: Default::default(),
             n_dz20: Default::default(),
             n_dx10: Default::default(),
@@ -927,7 +944,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s1_det_zero, s1_det_abs, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, gb_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s1_det_zero, s1_det_abs, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, prtl2_a, prtl2_b, s2_fresh3, s3_first, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, gb_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -1305,21 +1322,31 @@ impl Logic for Setup {
         self.pr_a1.d.next = self.mul_a1.p.val();
         self.pr_b0.d.next = self.mul_b0.p.val();
         self.pr_b1.d.next = self.mul_b1.p.val();
+        self.mul_a0.clock.next = self.clock.val();
+        self.mul_a1.clock.next = self.clock.val();
+        self.mul_b0.clock.next = self.clock.val();
+        self.mul_b1.clock.next = self.clock.val();
+        self.mul_a0.ce.next = true;
+        self.mul_a1.ce.next = true;
+        self.mul_b0.ce.next = true;
+        self.mul_b1.ce.next = true;
         self.prtl_a.d.next = self.tl0.q.val();
         self.prtl_b.d.next = self.tl1.q.val();
+        self.prtl2_a.d.next = self.prtl_a.q.val();
+        self.prtl2_b.d.next = self.prtl_b.q.val();
         self.dot_a.next = self.zs47.val();
         self.dot_b.next = self.zs47.val();
         self.e_a.next = self.zs44.val();
         self.e_b.next = self.zs44.val();
-        if self.s2_v.q.val() {
+        if self.s2_v.q.val() | self.s3_first.q.val() {
             self.dot_a.next = signed_bit_cast_safe::<47, 46>(self.pr_a0.q.val()) - signed_bit_cast_safe::<47, 46>(self.pr_a1.q.val());
             self.dot_b.next = signed_bit_cast_safe::<47, 46>(self.pr_b0.q.val()) - signed_bit_cast_safe::<47, 46>(self.pr_b1.q.val());
             self.e_a.next = signed_bit_cast_safe::<44, 47>(self.dot_a.val()) - self.k1_44.val();
-            if self.prtl_a.q.val() {
+            if self.prtl2_a.q.val() {
                 self.e_a.next = signed_bit_cast_safe::<44, 47>(self.dot_a.val());
             }
             self.e_b.next = signed_bit_cast_safe::<44, 47>(self.dot_b.val()) - self.k1_44.val();
-            if self.prtl_b.q.val() {
+            if self.prtl2_b.q.val() {
                 self.e_b.next = signed_bit_cast_safe::<44, 47>(self.dot_b.val());
             }
 
@@ -1568,10 +1595,20 @@ impl Logic for Setup {
         if self.leave4.val() {
             self.s4_v.d.next = false;
         }
+        // S3's first cycle: nb's product pair is in `pr_b*` (its operands were chosen in S2's phase 2
+        // and are held until S2 takes its next record, whose first products land a cycle after this
+        // one), so nb is formed here and goes on with the record or stays in S3.
+        self.s3_first.d.next = self.leave2.val();
+        if self.s3_first.q.val() {
+            self.s3p.d.next.nb = unsigned_cast(self.dot_b.val());
+        }
         if self.leave3.val() {
             self.s4_v.d.next = true;
             self.s4.d.next = self.s3.q.val();
             self.s4p.d.next = self.s3p.q.val();
+            if self.s3_first.q.val() {
+                self.s4p.d.next.nb = unsigned_cast(self.dot_b.val());
+            }
         }
         if self.leave3.val() {
             self.s3_v.d.next = false;
@@ -1580,10 +1617,21 @@ impl Logic for Setup {
             self.s3_v.d.next = true;
             self.s3.d.next = self.s2.q.val();
             self.s3p.d.next = self.s2p.q.val();
-            self.s3p.d.next.nb = unsigned_cast(self.dot_b.val());
+            // A record that leaves in its first cycle of phase 3 takes E2 and na from this cycle's
+            // products (later cycles find them in `s2`, `s2p`).
+            if self.s2_fresh3.q.val() {
+                self.s3.d.next.e2 = unsigned_cast(self.e_a.val());
+                self.s3p.d.next.na = unsigned_cast(self.dot_b.val());
+            }
         }
-        // S2: the products of phase k are registered and used in phase k+1: phase 1 E0, E1; phase 2 E2,
-        // na; nb on leaving (phase 3).
+        // S2: a product chosen in phase k lands in `pr_*` in phase k+2 (`MulPipeS`: the partial products
+        // are registered at the end of phase k, their sum at the end of phase k+1): phase 2 E0, E1;
+        // phase 3 (its first cycle) E2 and na; nb in S3's first cycle (above).
+        self.s2_fresh3.d.next = false;
+        if self.s2_fresh3.q.val() {
+            self.s2.d.next.e2 = unsigned_cast(self.e_a.val());
+            self.s2p.d.next.na = unsigned_cast(self.dot_b.val());
+        }
         if self.s2_v.q.val() & self.walk2.val() & !self.done2.val() {
             self.s2_phase.d.next = self.s2_phase.q.val() + self.k1_2.val();
             if self.s2_phase.q.val() == self.k0_2.val() {
@@ -1605,12 +1653,11 @@ impl Logic for Setup {
                 self.lb1.d.next = self.n_dx10.q.val();
                 self.ra1.d.next = self.n_dz10.q.val();
                 self.rb1.d.next = self.n_dx20.q.val();
-                self.s2.d.next.e0 = unsigned_cast(self.e_a.val());
-                self.s2.d.next.e1 = unsigned_cast(self.e_b.val());
             }
             if self.s2_phase.q.val() == self.k2_2.val() {
-                self.s2.d.next.e2 = unsigned_cast(self.e_a.val());
-                self.s2p.d.next.na = unsigned_cast(self.dot_b.val());
+                self.s2.d.next.e0 = unsigned_cast(self.e_a.val());
+                self.s2.d.next.e1 = unsigned_cast(self.e_b.val());
+                self.s2_fresh3.d.next = true;
             }
         }
         if self.leave2.val() {
