@@ -13,7 +13,8 @@ route it with fpga-report's method: `idxrender fpga-report --block TOP --device 
   walk    the traversal's walk decision (walk_end, row_done, nsel, long, has_frag) registered where
           the Walk branch and the record take use it
   grad    setup's Grad product (47x26): its four partial products registered before their sum
-  setup   S2's dot units and Plane's products: their partial products and low rows registered
+  setup   Plane's products: their partial products and low rows registered (S2's dot units were
+          cut this way until their products became `MulPipeS` in the design itself, 2026-12-05)
   norm    the Phong CS normalizer's three squares: their input registered
 """
 import re
@@ -96,7 +97,7 @@ def cut_grad(s):
 
 
 def cut_setup(s):
-    for m in ["mul_a0", "mul_a1", "mul_b0", "mul_b1", "mul_p", "mul_q"]:
+    for m in ["mul_p", "mul_q"]:
         s = register_wires(s, f"$front$setup${m}", ["hh", "hl", "lb"])
     return s
 
