@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""What-if timing cuts on a top's generated Verilog (docs/rc.md, "How far each cut goes").
+"""What-if timing cuts on a top's generated Verilog (docs/clock.md, "How far each cut goes").
 
 Usage: python3 scripts/clock-cuts.py IN.v OUT.v CUT [CUT...]
 

@@ -5,7 +5,7 @@
 //! nextpnr's log names one critical path per clock. A top that misses its clock by much has thousands
 //! of late endpoints, and removing the worst path rarely moves Fmax: the next path is only a little
 //! shorter, and placement moves each path by several nanoseconds from one run to the next
-//! (docs/rc.md, "The clock"). The count of late endpoints per block says how much work is left and
+//! (docs/clock.md). The count of late endpoints per block says how much work is left and
 //! where, and it moves when a change removes a whole class of paths even while the worst one stays.
 //!
 //! An endpoint is a cell input that ends a timing path (a flip-flop's data, clock enable or reset

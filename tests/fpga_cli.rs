@@ -106,7 +106,7 @@ fn fpga_report_checks_its_output_path_before_any_synthesis() {
     assert!(!ok && err.contains("--out") && err.contains("cannot create"), "{err}");
 }
 
-/// `scripts/clock-cuts.py` (the what-if cuts of docs/rc.md, "How far each cut goes") still finds
+/// `scripts/clock-cuts.py` (the what-if cuts of docs/clock.md, "How far each cut goes") still finds
 /// every path it cuts in the Verilog generated today, and yosys elaborates what it writes; a cut
 /// asked of a top without that path is an error, not a silent no-op.
 #[test]
