@@ -38,13 +38,6 @@
 //!   registers, set at a load and a row start from the box and at each step by comparing the old `rm`
 //!   with the step added (`rm - a > k` is `rm > k + a`): the decision starts from flags, not from a
 //!   subtraction (issue 15 item 5). Same cycles as before; `x` is kept for the waveforms.
-//! * The decision is formed twice (issue 15 item 5: its fan-out to some 460 enables and selects
-//!   was the walk loop's routing). The flip-flops it reads (the edge values' signs, the look-ahead
-//!   signs, the `rm` flags, `nonpos`) each have a complement copy, loaded with them; the second
-//!   decision (`_b`) is formed from the copies, so synthesis cannot merge it with the first, and it
-//!   steps group B of the walk registers (`rm` and its flags, depth, address); the first steps the
-//!   edge values, the position, the state and the token. Both are the same function of the same
-//!   values: no cycle changed.
 //! * `Clear`: tokens for addresses 0..W*H-1, then `Idle`.
 //!
 //! Depth of a fragment: `round(raw / 2^16)` clamped to 0..=2^24-1, as `Plane::eval_clamped`; the
@@ -236,68 +229,6 @@ pub struct Traversal {
     row_done: Signal<Local, Bit>,
     walk_end: Signal<Local, Bit>,
     at_last_row: Signal<Local, Bit>,
-    // The decision in two copies (issue 15 item 5): XK_n is the complement of flip-flop XK (for an
-    // edge value, of its sign), loaded with it, so that synthesis cannot merge the copy with the
-    // original; the `_b` decision is formed from them and steps group B of the walk registers.
-    // XK_nx is the value XK takes at the clock edge.
-    s1_0_nx: Signal<Local, Bit>,
-    s2_0_nx: Signal<Local, Bit>,
-    s3_0_nx: Signal<Local, Bit>,
-    s15_0_nx: Signal<Local, Bit>,
-    s1_1_nx: Signal<Local, Bit>,
-    s2_1_nx: Signal<Local, Bit>,
-    s3_1_nx: Signal<Local, Bit>,
-    s15_1_nx: Signal<Local, Bit>,
-    s1_2_nx: Signal<Local, Bit>,
-    s2_2_nx: Signal<Local, Bit>,
-    s3_2_nx: Signal<Local, Bit>,
-    s15_2_nx: Signal<Local, Bit>,
-    rg0_nx: Signal<Local, Bit>,
-    rg1_nx: Signal<Local, Bit>,
-    rg2_nx: Signal<Local, Bit>,
-    rg3_nx: Signal<Local, Bit>,
-    rg15_nx: Signal<Local, Bit>,
-    nonpos0_nx: Signal<Local, Bit>,
-    nonpos1_nx: Signal<Local, Bit>,
-    nonpos2_nx: Signal<Local, Bit>,
-    e0_nx: Signal<Local, Signed<44>>,
-    e1_nx: Signal<Local, Signed<44>>,
-    e2_nx: Signal<Local, Signed<44>>,
-    s1_0_n: DFF<Bit>,
-    s2_0_n: DFF<Bit>,
-    s3_0_n: DFF<Bit>,
-    s15_0_n: DFF<Bit>,
-    s1_1_n: DFF<Bit>,
-    s2_1_n: DFF<Bit>,
-    s3_1_n: DFF<Bit>,
-    s15_1_n: DFF<Bit>,
-    s1_2_n: DFF<Bit>,
-    s2_2_n: DFF<Bit>,
-    s3_2_n: DFF<Bit>,
-    s15_2_n: DFF<Bit>,
-    rg0_n: DFF<Bit>,
-    rg1_n: DFF<Bit>,
-    rg2_n: DFF<Bit>,
-    rg3_n: DFF<Bit>,
-    rg15_n: DFF<Bit>,
-    nonpos0_n: DFF<Bit>,
-    nonpos1_n: DFF<Bit>,
-    nonpos2_n: DFF<Bit>,
-    e0_n: DFF<Bit>,
-    e1_n: DFF<Bit>,
-    e2_n: DFF<Bit>,
-    cov0_b: Signal<Local, Bit>,
-    cov1_b: Signal<Local, Bit>,
-    cov2_b: Signal<Local, Bit>,
-    cov3_b: Signal<Local, Bit>,
-    has_frag_b: Signal<Local, Bit>,
-    has_next_b: Signal<Local, Bit>,
-    dead4_b: Signal<Local, Bit>,
-    dead16_b: Signal<Local, Bit>,
-    long_b: Signal<Local, Bit>,
-    row_done_b: Signal<Local, Bit>,
-    walk_end_b: Signal<Local, Bit>,
-    nsel_b: Signal<Local, Bits<3>>,
     fraw: Signal<Local, Signed<56>>,
     rounded_u: Signal<Local, Bits<56>>,
     depth: Signal<Local, Bits<24>>,
@@ -533,64 +464,6 @@ impl Traversal {
             row_done: Default::default(),
             walk_end: Default::default(),
             at_last_row: Default::default(),
-            s1_0_nx: Default::default(),
-            s2_0_nx: Default::default(),
-            s3_0_nx: Default::default(),
-            s15_0_nx: Default::default(),
-            s1_1_nx: Default::default(),
-            s2_1_nx: Default::default(),
-            s3_1_nx: Default::default(),
-            s15_1_nx: Default::default(),
-            s1_2_nx: Default::default(),
-            s2_2_nx: Default::default(),
-            s3_2_nx: Default::default(),
-            s15_2_nx: Default::default(),
-            rg0_nx: Default::default(),
-            rg1_nx: Default::default(),
-            rg2_nx: Default::default(),
-            rg3_nx: Default::default(),
-            rg15_nx: Default::default(),
-            nonpos0_nx: Default::default(),
-            nonpos1_nx: Default::default(),
-            nonpos2_nx: Default::default(),
-            e0_nx: Default::default(),
-            e1_nx: Default::default(),
-            e2_nx: Default::default(),
-            s1_0_n: Default::default(),
-            s2_0_n: Default::default(),
-            s3_0_n: Default::default(),
-            s15_0_n: Default::default(),
-            s1_1_n: Default::default(),
-            s2_1_n: Default::default(),
-            s3_1_n: Default::default(),
-            s15_1_n: Default::default(),
-            s1_2_n: Default::default(),
-            s2_2_n: Default::default(),
-            s3_2_n: Default::default(),
-            s15_2_n: Default::default(),
-            rg0_n: Default::default(),
-            rg1_n: Default::default(),
-            rg2_n: Default::default(),
-            rg3_n: Default::default(),
-            rg15_n: Default::default(),
-            nonpos0_n: Default::default(),
-            nonpos1_n: Default::default(),
-            nonpos2_n: Default::default(),
-            e0_n: Default::default(),
-            e1_n: Default::default(),
-            e2_n: Default::default(),
-            cov0_b: Default::default(),
-            cov1_b: Default::default(),
-            cov2_b: Default::default(),
-            cov3_b: Default::default(),
-            has_frag_b: Default::default(),
-            has_next_b: Default::default(),
-            dead4_b: Default::default(),
-            dead16_b: Default::default(),
-            long_b: Default::default(),
-            row_done_b: Default::default(),
-            walk_end_b: Default::default(),
-            nsel_b: Default::default(),
             fraw: Default::default(),
             rounded_u: Default::default(),
             depth: Default::default(),
@@ -706,32 +579,8 @@ impl Logic for Traversal {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, ern0, ern1, ern2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sx16_0, sx16_1, sx16_2, s1_0, s2_0, s3_0, s15_0, s1_1, s2_1, s3_1, s15_1, s1_2, s2_2, s3_2, s15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b, s1_0_n, s2_0_n, s3_0_n, s15_0_n, s1_1_n, s2_1_n, s3_1_n, s15_1_n, s1_2_n, s2_2_n, s3_2_n, s15_2_n, rg0_n, rg1_n, rg2_n, rg3_n, rg15_n, nonpos0_n, nonpos1_n, nonpos2_n, e0_n, e1_n, e2_n
+            self, clock, state, x, y, bx0, by1, index, addr, addr_row, e0, e1, e2, ern0, ern1, ern2, sx1_0, sx2_0, sx3_0, sx4_0, sx15_0, sx1_1, sx2_1, sx3_1, sx4_1, sx15_1, sx1_2, sx2_2, sx3_2, sx4_2, sx15_2, sx16_0, sx16_1, sx16_2, s1_0, s2_0, s3_0, s15_0, s1_1, s2_1, s3_1, s15_1, s1_2, s2_2, s3_2, s15_2, sy0, sy1, sy2, nonpos0, nonpos1, nonpos2, rawh, rawh_row, rm, rg0, rg1, rg2, rg3, rg15, wrem, wg0, wg1, wg2, wg3, wg15, ga1, ga2, ga3, ga4, ga16, grad_b
         );
-        // The next values of the duplicated flip-flops (held unless a branch below sets them).
-        self.s1_0_nx.next = self.s1_0.q.val();
-        self.s2_0_nx.next = self.s2_0.q.val();
-        self.s3_0_nx.next = self.s3_0.q.val();
-        self.s15_0_nx.next = self.s15_0.q.val();
-        self.s1_1_nx.next = self.s1_1.q.val();
-        self.s2_1_nx.next = self.s2_1.q.val();
-        self.s3_1_nx.next = self.s3_1.q.val();
-        self.s15_1_nx.next = self.s15_1.q.val();
-        self.s1_2_nx.next = self.s1_2.q.val();
-        self.s2_2_nx.next = self.s2_2.q.val();
-        self.s3_2_nx.next = self.s3_2.q.val();
-        self.s15_2_nx.next = self.s15_2.q.val();
-        self.rg0_nx.next = self.rg0.q.val();
-        self.rg1_nx.next = self.rg1.q.val();
-        self.rg2_nx.next = self.rg2.q.val();
-        self.rg3_nx.next = self.rg3.q.val();
-        self.rg15_nx.next = self.rg15.q.val();
-        self.nonpos0_nx.next = self.nonpos0.q.val();
-        self.nonpos1_nx.next = self.nonpos1.q.val();
-        self.nonpos2_nx.next = self.nonpos2.q.val();
-        self.e0_nx.next = self.e0.q.val();
-        self.e1_nx.next = self.e1.q.val();
-        self.e2_nx.next = self.e2.q.val();
         // The sums behind the look-ahead signs of the step taken (set in its branch below).
         self.t1_0.next = self.ks0_44.val();
         self.t2_0.next = self.ks0_44.val();
@@ -823,57 +672,6 @@ impl Logic for Traversal {
             }
             self.at_last_row.next = self.y.q.val() == self.by1.q.val();
             self.walk_end.next = self.row_done.val() & self.at_last_row.val();
-            // The decision's copy, from the complemented flip-flops (the same values, computed apart).
-            self.cov0_b.next = self.e0_n.q.val() & self.e1_n.q.val() & self.e2_n.q.val();
-            self.cov1_b.next = self.s1_0_n.q.val() & self.s1_1_n.q.val() & self.s1_2_n.q.val() & !self.rg0_n.q.val();
-            self.cov2_b.next = self.s2_0_n.q.val() & self.s2_1_n.q.val() & self.s2_2_n.q.val() & !self.rg1_n.q.val();
-            self.cov3_b.next = self.s3_0_n.q.val() & self.s3_1_n.q.val() & self.s3_2_n.q.val() & !self.rg2_n.q.val();
-            self.has_frag_b.next = self.cov0_b.val() | self.cov1_b.val() | self.cov2_b.val() | self.cov3_b.val();
-            self.nsel_b.next = self.k4_3.val();
-            self.has_next_b.next = false;
-            if self.cov0_b.val() {
-                if self.cov3_b.val() {
-                    self.nsel_b.next = self.k3_3.val();
-                    self.has_next_b.next = true;
-                }
-                if self.cov2_b.val() {
-                    self.nsel_b.next = self.k2_3.val();
-                    self.has_next_b.next = true;
-                }
-                if self.cov1_b.val() {
-                    self.nsel_b.next = self.k1_3.val();
-                    self.has_next_b.next = true;
-                }
-            } else if self.cov1_b.val() {
-                if self.cov3_b.val() {
-                    self.nsel_b.next = self.k3_3.val();
-                    self.has_next_b.next = true;
-                }
-                if self.cov2_b.val() {
-                    self.nsel_b.next = self.k2_3.val();
-                    self.has_next_b.next = true;
-                }
-            } else if self.cov2_b.val() {
-                if self.cov3_b.val() {
-                    self.nsel_b.next = self.k3_3.val();
-                    self.has_next_b.next = true;
-                }
-            }
-            self.long_b.next = !self.has_frag_b.val()
-                & ((!self.e0_n.q.val() & !self.s15_0_n.q.val())
-                    | (!self.e1_n.q.val() & !self.s15_1_n.q.val())
-                    | (!self.e2_n.q.val() & !self.s15_2_n.q.val()));
-            self.dead4_b.next = (!self.s3_0_n.q.val() & !self.nonpos0_n.q.val())
-                | (!self.s3_1_n.q.val() & !self.nonpos1_n.q.val())
-                | (!self.s3_2_n.q.val() & !self.nonpos2_n.q.val());
-            self.dead16_b.next = (!self.s15_0_n.q.val() & !self.nonpos0_n.q.val())
-                | (!self.s15_1_n.q.val() & !self.nonpos1_n.q.val())
-                | (!self.s15_2_n.q.val() & !self.nonpos2_n.q.val());
-            self.row_done_b.next = !self.has_next_b.val() & (self.rg3_n.q.val() | self.dead4_b.val());
-            if self.long_b.val() {
-                self.row_done_b.next = self.rg15_n.q.val() | self.dead16_b.val();
-            }
-            self.walk_end_b.next = self.row_done_b.val() & self.at_last_row.val();
             // The fragment: its raw depth, address and depth.
             self.fraw.next = self.rawh.q.val();
             self.faddr.next = self.addr.q.val();
@@ -919,18 +717,6 @@ impl Logic for Traversal {
             self.row_done.next = false;
             self.at_last_row.next = false;
             self.walk_end.next = false;
-            self.cov0_b.next = false;
-            self.cov1_b.next = false;
-            self.cov2_b.next = false;
-            self.cov3_b.next = false;
-            self.has_frag_b.next = false;
-            self.has_next_b.next = false;
-            self.dead4_b.next = false;
-            self.dead16_b.next = false;
-            self.long_b.next = false;
-            self.row_done_b.next = false;
-            self.walk_end_b.next = false;
-            self.nsel_b.next = self.kz3.val();
             self.fraw.next = self.ks0_56.val();
             self.faddr.next = self.kz20.val();
             self.rounded_u.next = self.kz56.val();
@@ -1065,252 +851,236 @@ impl Logic for Traversal {
                     } else if self.row_done.val() {
                         self.x.d.next = self.bx0.q.val();
                         self.y.d.next = self.y.q.val() + self.k1_10.val();
+                        self.rm.d.next = self.wrem.q.val();
+                        self.rg0.d.next = self.wg0.q.val();
+                        self.rg1.d.next = self.wg1.q.val();
+                        self.rg2.d.next = self.wg2.q.val();
+                        self.rg3.d.next = self.wg3.q.val();
+                        self.rg15.d.next = self.wg15.q.val();
                         self.ern0.d.next = self.ern0.q.val() + self.sy0.q.val();
-                        self.e0_nx.next = self.ern0.q.val();
+                        self.e0.d.next = self.ern0.q.val();
                         self.t1_0.next = self.ern0.q.val() + self.sx1_0.q.val();
-                        self.s1_0_nx.next = self.t1_0.val().get_bit(43);
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
                         self.t2_0.next = self.ern0.q.val() + self.sx2_0.q.val();
-                        self.s2_0_nx.next = self.t2_0.val().get_bit(43);
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
                         self.t3_0.next = self.ern0.q.val() + self.sx3_0.q.val();
-                        self.s3_0_nx.next = self.t3_0.val().get_bit(43);
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
                         self.t15_0.next = self.ern0.q.val() + self.sx15_0.q.val();
-                        self.s15_0_nx.next = self.t15_0.val().get_bit(43);
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
                         self.ern1.d.next = self.ern1.q.val() + self.sy1.q.val();
-                        self.e1_nx.next = self.ern1.q.val();
+                        self.e1.d.next = self.ern1.q.val();
                         self.t1_1.next = self.ern1.q.val() + self.sx1_1.q.val();
-                        self.s1_1_nx.next = self.t1_1.val().get_bit(43);
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
                         self.t2_1.next = self.ern1.q.val() + self.sx2_1.q.val();
-                        self.s2_1_nx.next = self.t2_1.val().get_bit(43);
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
                         self.t3_1.next = self.ern1.q.val() + self.sx3_1.q.val();
-                        self.s3_1_nx.next = self.t3_1.val().get_bit(43);
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
                         self.t15_1.next = self.ern1.q.val() + self.sx15_1.q.val();
-                        self.s15_1_nx.next = self.t15_1.val().get_bit(43);
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
                         self.ern2.d.next = self.ern2.q.val() + self.sy2.q.val();
-                        self.e2_nx.next = self.ern2.q.val();
+                        self.e2.d.next = self.ern2.q.val();
                         self.t1_2.next = self.ern2.q.val() + self.sx1_2.q.val();
-                        self.s1_2_nx.next = self.t1_2.val().get_bit(43);
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
                         self.t2_2.next = self.ern2.q.val() + self.sx2_2.q.val();
-                        self.s2_2_nx.next = self.t2_2.val().get_bit(43);
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
                         self.t3_2.next = self.ern2.q.val() + self.sx3_2.q.val();
-                        self.s3_2_nx.next = self.t3_2.val().get_bit(43);
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
                         self.t15_2.next = self.ern2.q.val() + self.sx15_2.q.val();
-                        self.s15_2_nx.next = self.t15_2.val().get_bit(43);
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
+                        self.rawh_row.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
+                        self.rawh.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
+                        self.addr_row.d.next = self.addr_row.q.val() + self.width.val();
+                        self.addr.d.next = self.addr_row.q.val() + self.width.val();
                     } else if self.nsel.val() == self.k1_3.val() {
                         self.x.d.next = self.x.q.val() + self.k1_10.val();
-                        self.e0_nx.next = self.e0.q.val() + self.sx1_0.q.val();
+                        self.rm.d.next = self.rm.q.val() - self.k1_10.val();
+                        self.rg0.d.next = self.rm.q.val() > self.k1_10.val();
+                        self.rg1.d.next = self.rm.q.val() > self.k2_10.val();
+                        self.rg2.d.next = self.rm.q.val() > self.k3_10.val();
+                        self.rg3.d.next = self.rm.q.val() > self.k4_10.val();
+                        self.rg15.d.next = self.rm.q.val() > self.k16_10.val();
+                        self.e0.d.next = self.e0.q.val() + self.sx1_0.q.val();
                         self.t1_0.next = self.e0.q.val() + self.sx2_0.q.val();
-                        self.s1_0_nx.next = self.t1_0.val().get_bit(43);
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
                         self.t2_0.next = self.e0.q.val() + self.sx3_0.q.val();
-                        self.s2_0_nx.next = self.t2_0.val().get_bit(43);
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
                         self.t3_0.next = self.c4_0.val();
-                        self.s3_0_nx.next = self.t3_0.val().get_bit(43);
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
                         self.t15_0.next = self.c16_0.val();
-                        self.s15_0_nx.next = self.t15_0.val().get_bit(43);
-                        self.e1_nx.next = self.e1.q.val() + self.sx1_1.q.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
+                        self.e1.d.next = self.e1.q.val() + self.sx1_1.q.val();
                         self.t1_1.next = self.e1.q.val() + self.sx2_1.q.val();
-                        self.s1_1_nx.next = self.t1_1.val().get_bit(43);
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
                         self.t2_1.next = self.e1.q.val() + self.sx3_1.q.val();
-                        self.s2_1_nx.next = self.t2_1.val().get_bit(43);
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
                         self.t3_1.next = self.c4_1.val();
-                        self.s3_1_nx.next = self.t3_1.val().get_bit(43);
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
                         self.t15_1.next = self.c16_1.val();
-                        self.s15_1_nx.next = self.t15_1.val().get_bit(43);
-                        self.e2_nx.next = self.e2.q.val() + self.sx1_2.q.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
+                        self.e2.d.next = self.e2.q.val() + self.sx1_2.q.val();
                         self.t1_2.next = self.e2.q.val() + self.sx2_2.q.val();
-                        self.s1_2_nx.next = self.t1_2.val().get_bit(43);
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
                         self.t2_2.next = self.e2.q.val() + self.sx3_2.q.val();
-                        self.s2_2_nx.next = self.t2_2.val().get_bit(43);
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
                         self.t3_2.next = self.c4_2.val();
-                        self.s3_2_nx.next = self.t3_2.val().get_bit(43);
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
                         self.t15_2.next = self.c16_2.val();
-                        self.s15_2_nx.next = self.t15_2.val().get_bit(43);
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
+                        self.rawh.d.next = self.rawh.q.val() + self.ga1.q.val();
+                        self.addr.d.next = self.addr.q.val() + self.k1_20.val();
                     } else if self.nsel.val() == self.k2_3.val() {
                         self.x.d.next = self.x.q.val() + self.k2_10.val();
-                        self.e0_nx.next = self.e0.q.val() + self.sx2_0.q.val();
+                        self.rm.d.next = self.rm.q.val() - self.k2_10.val();
+                        self.rg0.d.next = self.rm.q.val() > self.k2_10.val();
+                        self.rg1.d.next = self.rm.q.val() > self.k3_10.val();
+                        self.rg2.d.next = self.rm.q.val() > self.k4_10.val();
+                        self.rg3.d.next = self.rm.q.val() > self.k5_10.val();
+                        self.rg15.d.next = self.rm.q.val() > self.k17_10.val();
+                        self.e0.d.next = self.e0.q.val() + self.sx2_0.q.val();
                         self.t1_0.next = self.e0.q.val() + self.sx3_0.q.val();
-                        self.s1_0_nx.next = self.t1_0.val().get_bit(43);
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
                         self.t2_0.next = self.c4_0.val();
-                        self.s2_0_nx.next = self.t2_0.val().get_bit(43);
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
                         self.t3_0.next = self.c4_0.val() + self.sx1_0.q.val();
-                        self.s3_0_nx.next = self.t3_0.val().get_bit(43);
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
                         self.t15_0.next = self.c16_0.val() + self.sx1_0.q.val();
-                        self.s15_0_nx.next = self.t15_0.val().get_bit(43);
-                        self.e1_nx.next = self.e1.q.val() + self.sx2_1.q.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
+                        self.e1.d.next = self.e1.q.val() + self.sx2_1.q.val();
                         self.t1_1.next = self.e1.q.val() + self.sx3_1.q.val();
-                        self.s1_1_nx.next = self.t1_1.val().get_bit(43);
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
                         self.t2_1.next = self.c4_1.val();
-                        self.s2_1_nx.next = self.t2_1.val().get_bit(43);
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
                         self.t3_1.next = self.c4_1.val() + self.sx1_1.q.val();
-                        self.s3_1_nx.next = self.t3_1.val().get_bit(43);
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
                         self.t15_1.next = self.c16_1.val() + self.sx1_1.q.val();
-                        self.s15_1_nx.next = self.t15_1.val().get_bit(43);
-                        self.e2_nx.next = self.e2.q.val() + self.sx2_2.q.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
+                        self.e2.d.next = self.e2.q.val() + self.sx2_2.q.val();
                         self.t1_2.next = self.e2.q.val() + self.sx3_2.q.val();
-                        self.s1_2_nx.next = self.t1_2.val().get_bit(43);
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
                         self.t2_2.next = self.c4_2.val();
-                        self.s2_2_nx.next = self.t2_2.val().get_bit(43);
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
                         self.t3_2.next = self.c4_2.val() + self.sx1_2.q.val();
-                        self.s3_2_nx.next = self.t3_2.val().get_bit(43);
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
                         self.t15_2.next = self.c16_2.val() + self.sx1_2.q.val();
-                        self.s15_2_nx.next = self.t15_2.val().get_bit(43);
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
+                        self.rawh.d.next = self.rawh.q.val() + self.ga2.q.val();
+                        self.addr.d.next = self.addr.q.val() + self.k2_20.val();
                     } else if self.nsel.val() == self.k3_3.val() {
                         self.x.d.next = self.x.q.val() + self.k3_10.val();
-                        self.e0_nx.next = self.e0.q.val() + self.sx3_0.q.val();
+                        self.rm.d.next = self.rm.q.val() - self.k3_10.val();
+                        self.rg0.d.next = self.rm.q.val() > self.k3_10.val();
+                        self.rg1.d.next = self.rm.q.val() > self.k4_10.val();
+                        self.rg2.d.next = self.rm.q.val() > self.k5_10.val();
+                        self.rg3.d.next = self.rm.q.val() > self.k6_10.val();
+                        self.rg15.d.next = self.rm.q.val() > self.k18_10.val();
+                        self.e0.d.next = self.e0.q.val() + self.sx3_0.q.val();
                         self.t1_0.next = self.c4_0.val();
-                        self.s1_0_nx.next = self.t1_0.val().get_bit(43);
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
                         self.t2_0.next = self.c4_0.val() + self.sx1_0.q.val();
-                        self.s2_0_nx.next = self.t2_0.val().get_bit(43);
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
                         self.t3_0.next = self.c4_0.val() + self.sx2_0.q.val();
-                        self.s3_0_nx.next = self.t3_0.val().get_bit(43);
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
                         self.t15_0.next = self.c16_0.val() + self.sx2_0.q.val();
-                        self.s15_0_nx.next = self.t15_0.val().get_bit(43);
-                        self.e1_nx.next = self.e1.q.val() + self.sx3_1.q.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
+                        self.e1.d.next = self.e1.q.val() + self.sx3_1.q.val();
                         self.t1_1.next = self.c4_1.val();
-                        self.s1_1_nx.next = self.t1_1.val().get_bit(43);
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
                         self.t2_1.next = self.c4_1.val() + self.sx1_1.q.val();
-                        self.s2_1_nx.next = self.t2_1.val().get_bit(43);
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
                         self.t3_1.next = self.c4_1.val() + self.sx2_1.q.val();
-                        self.s3_1_nx.next = self.t3_1.val().get_bit(43);
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
                         self.t15_1.next = self.c16_1.val() + self.sx2_1.q.val();
-                        self.s15_1_nx.next = self.t15_1.val().get_bit(43);
-                        self.e2_nx.next = self.e2.q.val() + self.sx3_2.q.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
+                        self.e2.d.next = self.e2.q.val() + self.sx3_2.q.val();
                         self.t1_2.next = self.c4_2.val();
-                        self.s1_2_nx.next = self.t1_2.val().get_bit(43);
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
                         self.t2_2.next = self.c4_2.val() + self.sx1_2.q.val();
-                        self.s2_2_nx.next = self.t2_2.val().get_bit(43);
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
                         self.t3_2.next = self.c4_2.val() + self.sx2_2.q.val();
-                        self.s3_2_nx.next = self.t3_2.val().get_bit(43);
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
                         self.t15_2.next = self.c16_2.val() + self.sx2_2.q.val();
-                        self.s15_2_nx.next = self.t15_2.val().get_bit(43);
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
+                        self.rawh.d.next = self.rawh.q.val() + self.ga3.q.val();
+                        self.addr.d.next = self.addr.q.val() + self.k3_20.val();
                     } else if self.long.val() {
                         self.x.d.next = self.x.q.val() + self.k16_10.val();
-                        self.e0_nx.next = self.c16_0.val();
+                        self.rm.d.next = self.rm.q.val() - self.k16_10.val();
+                        self.rg0.d.next = self.rm.q.val() > self.k16_10.val();
+                        self.rg1.d.next = self.rm.q.val() > self.k17_10.val();
+                        self.rg2.d.next = self.rm.q.val() > self.k18_10.val();
+                        self.rg3.d.next = self.rm.q.val() > self.k19_10.val();
+                        self.rg15.d.next = self.rm.q.val() > self.k31_10.val();
+                        self.e0.d.next = self.c16_0.val();
                         self.t1_0.next = self.c16_0.val() + self.sx1_0.q.val();
-                        self.s1_0_nx.next = self.t1_0.val().get_bit(43);
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
                         self.t2_0.next = self.c16_0.val() + self.sx2_0.q.val();
-                        self.s2_0_nx.next = self.t2_0.val().get_bit(43);
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
                         self.t3_0.next = self.c16_0.val() + self.sx3_0.q.val();
-                        self.s3_0_nx.next = self.t3_0.val().get_bit(43);
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
                         self.t15_0.next = self.c16_0.val() + self.sx15_0.q.val();
-                        self.s15_0_nx.next = self.t15_0.val().get_bit(43);
-                        self.e1_nx.next = self.c16_1.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
+                        self.e1.d.next = self.c16_1.val();
                         self.t1_1.next = self.c16_1.val() + self.sx1_1.q.val();
-                        self.s1_1_nx.next = self.t1_1.val().get_bit(43);
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
                         self.t2_1.next = self.c16_1.val() + self.sx2_1.q.val();
-                        self.s2_1_nx.next = self.t2_1.val().get_bit(43);
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
                         self.t3_1.next = self.c16_1.val() + self.sx3_1.q.val();
-                        self.s3_1_nx.next = self.t3_1.val().get_bit(43);
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
                         self.t15_1.next = self.c16_1.val() + self.sx15_1.q.val();
-                        self.s15_1_nx.next = self.t15_1.val().get_bit(43);
-                        self.e2_nx.next = self.c16_2.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
+                        self.e2.d.next = self.c16_2.val();
                         self.t1_2.next = self.c16_2.val() + self.sx1_2.q.val();
-                        self.s1_2_nx.next = self.t1_2.val().get_bit(43);
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
                         self.t2_2.next = self.c16_2.val() + self.sx2_2.q.val();
-                        self.s2_2_nx.next = self.t2_2.val().get_bit(43);
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
                         self.t3_2.next = self.c16_2.val() + self.sx3_2.q.val();
-                        self.s3_2_nx.next = self.t3_2.val().get_bit(43);
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
                         self.t15_2.next = self.c16_2.val() + self.sx15_2.q.val();
-                        self.s15_2_nx.next = self.t15_2.val().get_bit(43);
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
+                        self.rawh.d.next = self.rawh.q.val() + self.ga16.q.val();
+                        self.addr.d.next = self.addr.q.val() + self.k16_20.val();
                     } else {
                         self.x.d.next = self.x.q.val() + self.k4_10.val();
-                        self.e0_nx.next = self.c4_0.val();
+                        self.rm.d.next = self.rm.q.val() - self.k4_10.val();
+                        self.rg0.d.next = self.rm.q.val() > self.k4_10.val();
+                        self.rg1.d.next = self.rm.q.val() > self.k5_10.val();
+                        self.rg2.d.next = self.rm.q.val() > self.k6_10.val();
+                        self.rg3.d.next = self.rm.q.val() > self.k7_10.val();
+                        self.rg15.d.next = self.rm.q.val() > self.k19_10.val();
+                        self.e0.d.next = self.c4_0.val();
                         self.t1_0.next = self.c4_0.val() + self.sx1_0.q.val();
-                        self.s1_0_nx.next = self.t1_0.val().get_bit(43);
+                        self.s1_0.d.next = self.t1_0.val().get_bit(43);
                         self.t2_0.next = self.c4_0.val() + self.sx2_0.q.val();
-                        self.s2_0_nx.next = self.t2_0.val().get_bit(43);
+                        self.s2_0.d.next = self.t2_0.val().get_bit(43);
                         self.t3_0.next = self.c4_0.val() + self.sx3_0.q.val();
-                        self.s3_0_nx.next = self.t3_0.val().get_bit(43);
+                        self.s3_0.d.next = self.t3_0.val().get_bit(43);
                         self.t15_0.next = self.c16_0.val() + self.sx3_0.q.val();
-                        self.s15_0_nx.next = self.t15_0.val().get_bit(43);
-                        self.e1_nx.next = self.c4_1.val();
+                        self.s15_0.d.next = self.t15_0.val().get_bit(43);
+                        self.e1.d.next = self.c4_1.val();
                         self.t1_1.next = self.c4_1.val() + self.sx1_1.q.val();
-                        self.s1_1_nx.next = self.t1_1.val().get_bit(43);
+                        self.s1_1.d.next = self.t1_1.val().get_bit(43);
                         self.t2_1.next = self.c4_1.val() + self.sx2_1.q.val();
-                        self.s2_1_nx.next = self.t2_1.val().get_bit(43);
+                        self.s2_1.d.next = self.t2_1.val().get_bit(43);
                         self.t3_1.next = self.c4_1.val() + self.sx3_1.q.val();
-                        self.s3_1_nx.next = self.t3_1.val().get_bit(43);
+                        self.s3_1.d.next = self.t3_1.val().get_bit(43);
                         self.t15_1.next = self.c16_1.val() + self.sx3_1.q.val();
-                        self.s15_1_nx.next = self.t15_1.val().get_bit(43);
-                        self.e2_nx.next = self.c4_2.val();
+                        self.s15_1.d.next = self.t15_1.val().get_bit(43);
+                        self.e2.d.next = self.c4_2.val();
                         self.t1_2.next = self.c4_2.val() + self.sx1_2.q.val();
-                        self.s1_2_nx.next = self.t1_2.val().get_bit(43);
+                        self.s1_2.d.next = self.t1_2.val().get_bit(43);
                         self.t2_2.next = self.c4_2.val() + self.sx2_2.q.val();
-                        self.s2_2_nx.next = self.t2_2.val().get_bit(43);
+                        self.s2_2.d.next = self.t2_2.val().get_bit(43);
                         self.t3_2.next = self.c4_2.val() + self.sx3_2.q.val();
-                        self.s3_2_nx.next = self.t3_2.val().get_bit(43);
+                        self.s3_2.d.next = self.t3_2.val().get_bit(43);
                         self.t15_2.next = self.c16_2.val() + self.sx3_2.q.val();
-                        self.s15_2_nx.next = self.t15_2.val().get_bit(43);
+                        self.s15_2.d.next = self.t15_2.val().get_bit(43);
+                        self.rawh.d.next = self.rawh.q.val() + self.ga4.q.val();
+                        self.addr.d.next = self.addr.q.val() + self.k4_20.val();
                     }
                 }
             }
             _ => {
                 self.state.d.next = TravState::Idle;
-            }
-        }
-        // The walk registers of group B (the remaining-width count and flags, depth and address),
-        // stepped by the decision's copy from the inverted flip-flops (module doc: the decision in two
-        // copies, each with half of the fan-out).
-        if self.state.q.val() == TravState::Walk {
-            if !self.walk_end_b.val() | self.result_free.val() {
-                if self.walk_end_b.val() {
-                    // the walk ends: the next load (below) sets them
-                } else if self.row_done_b.val() {
-                    self.rm.d.next = self.wrem.q.val();
-                    self.rg0_nx.next = self.wg0.q.val();
-                    self.rg1_nx.next = self.wg1.q.val();
-                    self.rg2_nx.next = self.wg2.q.val();
-                    self.rg3_nx.next = self.wg3.q.val();
-                    self.rg15_nx.next = self.wg15.q.val();
-                    self.rawh_row.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
-                    self.rawh.d.next = self.rawh_row.q.val() + self.grad_b.q.val();
-                    self.addr_row.d.next = self.addr_row.q.val() + self.width.val();
-                    self.addr.d.next = self.addr_row.q.val() + self.width.val();
-                } else if self.nsel_b.val() == self.k1_3.val() {
-                    self.rm.d.next = self.rm.q.val() - self.k1_10.val();
-                    self.rg0_nx.next = self.rm.q.val() > self.k1_10.val();
-                    self.rg1_nx.next = self.rm.q.val() > self.k2_10.val();
-                    self.rg2_nx.next = self.rm.q.val() > self.k3_10.val();
-                    self.rg3_nx.next = self.rm.q.val() > self.k4_10.val();
-                    self.rg15_nx.next = self.rm.q.val() > self.k16_10.val();
-                    self.rawh.d.next = self.rawh.q.val() + self.ga1.q.val();
-                    self.addr.d.next = self.addr.q.val() + self.k1_20.val();
-                } else if self.nsel_b.val() == self.k2_3.val() {
-                    self.rm.d.next = self.rm.q.val() - self.k2_10.val();
-                    self.rg0_nx.next = self.rm.q.val() > self.k2_10.val();
-                    self.rg1_nx.next = self.rm.q.val() > self.k3_10.val();
-                    self.rg2_nx.next = self.rm.q.val() > self.k4_10.val();
-                    self.rg3_nx.next = self.rm.q.val() > self.k5_10.val();
-                    self.rg15_nx.next = self.rm.q.val() > self.k17_10.val();
-                    self.rawh.d.next = self.rawh.q.val() + self.ga2.q.val();
-                    self.addr.d.next = self.addr.q.val() + self.k2_20.val();
-                } else if self.nsel_b.val() == self.k3_3.val() {
-                    self.rm.d.next = self.rm.q.val() - self.k3_10.val();
-                    self.rg0_nx.next = self.rm.q.val() > self.k3_10.val();
-                    self.rg1_nx.next = self.rm.q.val() > self.k4_10.val();
-                    self.rg2_nx.next = self.rm.q.val() > self.k5_10.val();
-                    self.rg3_nx.next = self.rm.q.val() > self.k6_10.val();
-                    self.rg15_nx.next = self.rm.q.val() > self.k18_10.val();
-                    self.rawh.d.next = self.rawh.q.val() + self.ga3.q.val();
-                    self.addr.d.next = self.addr.q.val() + self.k3_20.val();
-                } else if self.long_b.val() {
-                    self.rm.d.next = self.rm.q.val() - self.k16_10.val();
-                    self.rg0_nx.next = self.rm.q.val() > self.k16_10.val();
-                    self.rg1_nx.next = self.rm.q.val() > self.k17_10.val();
-                    self.rg2_nx.next = self.rm.q.val() > self.k18_10.val();
-                    self.rg3_nx.next = self.rm.q.val() > self.k19_10.val();
-                    self.rg15_nx.next = self.rm.q.val() > self.k31_10.val();
-                    self.rawh.d.next = self.rawh.q.val() + self.ga16.q.val();
-                    self.addr.d.next = self.addr.q.val() + self.k16_20.val();
-                } else {
-                    self.rm.d.next = self.rm.q.val() - self.k4_10.val();
-                    self.rg0_nx.next = self.rm.q.val() > self.k4_10.val();
-                    self.rg1_nx.next = self.rm.q.val() > self.k5_10.val();
-                    self.rg2_nx.next = self.rm.q.val() > self.k6_10.val();
-                    self.rg3_nx.next = self.rm.q.val() > self.k7_10.val();
-                    self.rg15_nx.next = self.rm.q.val() > self.k19_10.val();
-                    self.rawh.d.next = self.rawh.q.val() + self.ga4.q.val();
-                    self.addr.d.next = self.addr.q.val() + self.k4_20.val();
-                }
             }
         }
         // Taking a record (from Idle, or in the cycle that ends a walk).
@@ -1342,7 +1112,7 @@ impl Logic for Traversal {
             self.sx4_0.d.next = self.rsx4_0.val();
             self.sx15_0.d.next = self.rsx15_0.val();
             self.sy0.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy0.val());
-            self.nonpos0_nx.next = self.rec_sx0.val().get_bit(29) | (self.rsx1_0.val() == self.ks0_44.val());
+            self.nonpos0.d.next = self.rec_sx0.val().get_bit(29) | (self.rsx1_0.val() == self.ks0_44.val());
             self.sx1_1.d.next = self.rsx1_1.val();
             self.sx2_1.d.next = self.rsx2_1.val();
             self.sx3_1.d.next = self.rsx3_1.val();
@@ -1350,7 +1120,7 @@ impl Logic for Traversal {
             self.sx4_1.d.next = self.rsx4_1.val();
             self.sx15_1.d.next = self.rsx15_1.val();
             self.sy1.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy1.val());
-            self.nonpos1_nx.next = self.rec_sx1.val().get_bit(29) | (self.rsx1_1.val() == self.ks0_44.val());
+            self.nonpos1.d.next = self.rec_sx1.val().get_bit(29) | (self.rsx1_1.val() == self.ks0_44.val());
             self.sx1_2.d.next = self.rsx1_2.val();
             self.sx2_2.d.next = self.rsx2_2.val();
             self.sx3_2.d.next = self.rsx3_2.val();
@@ -1358,7 +1128,7 @@ impl Logic for Traversal {
             self.sx4_2.d.next = self.rsx4_2.val();
             self.sx15_2.d.next = self.rsx15_2.val();
             self.sy2.d.next = signed_bit_cast_safe::<44, 30>(self.rec_sy2.val());
-            self.nonpos2_nx.next = self.rec_sx2.val().get_bit(29) | (self.rsx1_2.val() == self.ks0_44.val());
+            self.nonpos2.d.next = self.rec_sx2.val().get_bit(29) | (self.rsx1_2.val() == self.ks0_44.val());
             self.ga1.d.next = self.ra1.val();
             self.ga2.d.next = self.ra2.val();
             self.ga3.d.next = self.ra3.val();
@@ -1368,96 +1138,49 @@ impl Logic for Traversal {
         }
         if self.load_walk.val() {
             self.rm.d.next = self.lw.val();
-            self.rg0_nx.next = self.lw.val() > self.k0_10.val();
-            self.rg1_nx.next = self.lw.val() > self.k1_10.val();
-            self.rg2_nx.next = self.lw.val() > self.k2_10.val();
-            self.rg3_nx.next = self.lw.val() > self.k3_10.val();
-            self.rg15_nx.next = self.lw.val() > self.k15_10.val();
+            self.rg0.d.next = self.lw.val() > self.k0_10.val();
+            self.rg1.d.next = self.lw.val() > self.k1_10.val();
+            self.rg2.d.next = self.lw.val() > self.k2_10.val();
+            self.rg3.d.next = self.lw.val() > self.k3_10.val();
+            self.rg15.d.next = self.lw.val() > self.k15_10.val();
             self.x.d.next = self.rec_bx0.val();
             self.y.d.next = self.rec_by0.val();
             self.index.d.next = self.rec_index.val();
             self.addr.d.next = self.rec_addr.val();
             self.addr_row.d.next = self.rec_addr.val();
-            self.e0_nx.next = self.rec_e0.val();
+            self.e0.d.next = self.rec_e0.val();
             self.ern0.d.next = self.lrn_0.val();
             self.t1_0.next = self.rec_e0.val() + self.rsx1_0.val();
-            self.s1_0_nx.next = self.t1_0.val().get_bit(43);
+            self.s1_0.d.next = self.t1_0.val().get_bit(43);
             self.t2_0.next = self.rec_e0.val() + self.rsx2_0.val();
-            self.s2_0_nx.next = self.t2_0.val().get_bit(43);
+            self.s2_0.d.next = self.t2_0.val().get_bit(43);
             self.t3_0.next = self.rec_e0.val() + self.rsx3_0.val();
-            self.s3_0_nx.next = self.t3_0.val().get_bit(43);
+            self.s3_0.d.next = self.t3_0.val().get_bit(43);
             self.t15_0.next = self.rec_e0.val() + self.rsx15_0.val();
-            self.s15_0_nx.next = self.t15_0.val().get_bit(43);
-            self.e1_nx.next = self.rec_e1.val();
+            self.s15_0.d.next = self.t15_0.val().get_bit(43);
+            self.e1.d.next = self.rec_e1.val();
             self.ern1.d.next = self.lrn_1.val();
             self.t1_1.next = self.rec_e1.val() + self.rsx1_1.val();
-            self.s1_1_nx.next = self.t1_1.val().get_bit(43);
+            self.s1_1.d.next = self.t1_1.val().get_bit(43);
             self.t2_1.next = self.rec_e1.val() + self.rsx2_1.val();
-            self.s2_1_nx.next = self.t2_1.val().get_bit(43);
+            self.s2_1.d.next = self.t2_1.val().get_bit(43);
             self.t3_1.next = self.rec_e1.val() + self.rsx3_1.val();
-            self.s3_1_nx.next = self.t3_1.val().get_bit(43);
+            self.s3_1.d.next = self.t3_1.val().get_bit(43);
             self.t15_1.next = self.rec_e1.val() + self.rsx15_1.val();
-            self.s15_1_nx.next = self.t15_1.val().get_bit(43);
-            self.e2_nx.next = self.rec_e2.val();
+            self.s15_1.d.next = self.t15_1.val().get_bit(43);
+            self.e2.d.next = self.rec_e2.val();
             self.ern2.d.next = self.lrn_2.val();
             self.t1_2.next = self.rec_e2.val() + self.rsx1_2.val();
-            self.s1_2_nx.next = self.t1_2.val().get_bit(43);
+            self.s1_2.d.next = self.t1_2.val().get_bit(43);
             self.t2_2.next = self.rec_e2.val() + self.rsx2_2.val();
-            self.s2_2_nx.next = self.t2_2.val().get_bit(43);
+            self.s2_2.d.next = self.t2_2.val().get_bit(43);
             self.t3_2.next = self.rec_e2.val() + self.rsx3_2.val();
-            self.s3_2_nx.next = self.t3_2.val().get_bit(43);
+            self.s3_2.d.next = self.t3_2.val().get_bit(43);
             self.t15_2.next = self.rec_e2.val() + self.rsx15_2.val();
-            self.s15_2_nx.next = self.t15_2.val().get_bit(43);
+            self.s15_2.d.next = self.t15_2.val().get_bit(43);
             self.rawh.d.next = self.rec_raw.val() + self.half.val();
             self.rawh_row.d.next = self.rec_raw.val() + self.half.val();
             self.state.d.next = TravState::Walk;
         }
-        // The duplicated flip-flops and their complements take the same next value.
-        self.s1_0.d.next = self.s1_0_nx.val();
-        self.s1_0_n.d.next = !self.s1_0_nx.val();
-        self.s2_0.d.next = self.s2_0_nx.val();
-        self.s2_0_n.d.next = !self.s2_0_nx.val();
-        self.s3_0.d.next = self.s3_0_nx.val();
-        self.s3_0_n.d.next = !self.s3_0_nx.val();
-        self.s15_0.d.next = self.s15_0_nx.val();
-        self.s15_0_n.d.next = !self.s15_0_nx.val();
-        self.s1_1.d.next = self.s1_1_nx.val();
-        self.s1_1_n.d.next = !self.s1_1_nx.val();
-        self.s2_1.d.next = self.s2_1_nx.val();
-        self.s2_1_n.d.next = !self.s2_1_nx.val();
-        self.s3_1.d.next = self.s3_1_nx.val();
-        self.s3_1_n.d.next = !self.s3_1_nx.val();
-        self.s15_1.d.next = self.s15_1_nx.val();
-        self.s15_1_n.d.next = !self.s15_1_nx.val();
-        self.s1_2.d.next = self.s1_2_nx.val();
-        self.s1_2_n.d.next = !self.s1_2_nx.val();
-        self.s2_2.d.next = self.s2_2_nx.val();
-        self.s2_2_n.d.next = !self.s2_2_nx.val();
-        self.s3_2.d.next = self.s3_2_nx.val();
-        self.s3_2_n.d.next = !self.s3_2_nx.val();
-        self.s15_2.d.next = self.s15_2_nx.val();
-        self.s15_2_n.d.next = !self.s15_2_nx.val();
-        self.rg0.d.next = self.rg0_nx.val();
-        self.rg0_n.d.next = !self.rg0_nx.val();
-        self.rg1.d.next = self.rg1_nx.val();
-        self.rg1_n.d.next = !self.rg1_nx.val();
-        self.rg2.d.next = self.rg2_nx.val();
-        self.rg2_n.d.next = !self.rg2_nx.val();
-        self.rg3.d.next = self.rg3_nx.val();
-        self.rg3_n.d.next = !self.rg3_nx.val();
-        self.rg15.d.next = self.rg15_nx.val();
-        self.rg15_n.d.next = !self.rg15_nx.val();
-        self.nonpos0.d.next = self.nonpos0_nx.val();
-        self.nonpos0_n.d.next = !self.nonpos0_nx.val();
-        self.nonpos1.d.next = self.nonpos1_nx.val();
-        self.nonpos1_n.d.next = !self.nonpos1_nx.val();
-        self.nonpos2.d.next = self.nonpos2_nx.val();
-        self.nonpos2_n.d.next = !self.nonpos2_nx.val();
-        self.e0.d.next = self.e0_nx.val();
-        self.e0_n.d.next = !self.e0_nx.val().get_bit(43);
-        self.e1.d.next = self.e1_nx.val();
-        self.e1_n.d.next = !self.e1_nx.val().get_bit(43);
-        self.e2.d.next = self.e2_nx.val();
-        self.e2_n.d.next = !self.e2_nx.val().get_bit(43);
     }
 }
