@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs every test of the project. Installs what the tests need when it is missing (Debian packages:
-# verilator, iverilog, yosys, nextpnr-ice40; needs root, as on CI), then `cargo test` in the release
+# verilator, iverilog, yosys, nextpnr-ice40, python3-venv; needs root, as on CI), then `cargo test` in the release
 # profile (the RustHDL simulations are ~9x slower unoptimised; one profile means one build), and the
 # formal harnesses (scripts/formal.sh) beside it: the test binaries often run one long test on one of
 # the two cores, and the harnesses fill the other. The formal log is printed after the tests; the run
@@ -12,6 +12,9 @@ missing=()
 for tool in verilator:verilator iverilog:iverilog yosys:yosys nextpnr-ice40:nextpnr-ice40; do
   command -v "${tool%%:*}" >/dev/null 2>&1 || missing+=("${tool##*:}")
 done
+# formal.sh and fpga-report install PyPI's yowasp tools into a venv: Debian's python3 has no `venv`
+# (ensurepip) without the python3-venv package.
+python3 -c 'import ensurepip, venv' >/dev/null 2>&1 || missing+=(python3 python3-venv)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}"
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
