@@ -318,16 +318,19 @@ mod tests {
         WinVertex { x: (x * SUBPIXEL_ONE as f64).round() as i32, y: (y * SUBPIXEL_ONE as f64).round() as i32, z: 0 }
     }
 
-    /// The exact perspective-correct (s, t) at pixel (X, Y)'s centre, in f64, from the snapped
-    /// window positions: barycentric weights over the screen, then 1/w-weighted.
-    fn exact(v: &[WinVertex; 3], w: [f64; 3], st: [[f64; 2]; 3], x: u32, y: u32, coords: Coords) -> [f64; 2] {
-        let l = barycentric(v, x, y);
+    /// The exact perspective-correct (s, t) in f64 at a pixel whose barycentric weights in the snapped
+    /// triangle are `l` ([`barycentric`]): the coordinates 1/w-weighted.
+    fn exact(l: [f64; 3], w: [f64; 3], st: [[f64; 2]; 3], coords: Coords) -> [f64; 2] {
         let iw = match coords {
             Coords::Perspective => w.map(|w| 1.0 / w),
             Coords::Affine => [1.0; 3],
         };
-        let den: f64 = (0..3).map(|k| l[k] * iw[k]).sum();
-        [0, 1].map(|c| (0..3).map(|k| l[k] * iw[k] * st[k][c]).sum::<f64>() / den)
+        [0, 1].map(|c| weighted(l, std::array::from_fn(|k| iw[k] * st[k][c]), iw))
+    }
+
+    /// sum(l num) / sum(l den): a ratio of two planes at a pixel with barycentric weights `l`.
+    fn weighted(l: [f64; 3], num: [f64; 3], den: [f64; 3]) -> f64 {
+        (0..3).map(|k| l[k] * num[k]).sum::<f64>() / (0..3).map(|k| l[k] * den[k]).sum::<f64>()
     }
 
     /// The barycentric weights of pixel (X, Y)'s centre in the snapped triangle (all positive inside).
@@ -450,9 +453,8 @@ mod tests {
                     // Inside: every barycentric weight positive.
                     let l = barycentric(&v, x, y);
                     if !l.iter().all(|&l| l > 0.0) { continue; }
-                    let e = exact(&v, w, st, x, y, coords);
-                    let den: f64 = (0..3).map(|j| l[j] * values[j][2] as f64).sum();
-                    let given = [0, 1].map(|c| ratio * (0..3).map(|j| l[j] * values[j][c] as f64).sum::<f64>() / den);
+                    let e = exact(l, w, st, coords);
+                    let given = [0, 1].map(|c| ratio * weighted(l, values.map(|v| v[c] as f64), values.map(|v| v[2] as f64)));
                     let c = planes.eval(x, y, 8, 8);
                     let got = [c.s as f64 / 65536.0, c.t as f64 / 65536.0];
                     for c in 0..2 {
