@@ -13,9 +13,10 @@ route it with fpga-report's method: `idxrender fpga-report --block TOP --device 
   walk    the traversal's walk decision (walk_end, row_done, nsel, long, has_frag) registered where
           the Walk branch and the record take use it
   grad    setup's Grad product (47x26): its four partial products registered before their sum
-  setup   Plane's products: their partial products and low rows registered (S2's dot units were
-          cut this way until their products became `MulPipeS` in the design itself, 2026-12-05)
   norm    the Phong CS normalizer's three squares: their input registered
+
+The `setup` cut (the partial products of S2's dot units, then of Plane's) is gone: both are
+`MulPipeS` in the design itself (S2 since 2026-12-05, Plane since 2026-12-07).
 """
 import re
 import sys
@@ -65,21 +66,6 @@ def cut_walk(s):
     return s[:i] + head + tail + s[j:]
 
 
-def register_wires(s, tail, wires):
-    """Register the named `wire signed [N:0] w = ...;` lines of the module ending in `tail`."""
-    i, j, name = module_span(s, tail)
-    s = add_clock_port(s, name, "a")
-    i, j, _ = module_span(s, tail)
-    body = s[i:j]
-    for w in wires:
-        m = re.search(rf"wire signed \[(\d+):0\] {w} = (.*);", body)
-        if not m:
-            sys.exit(f"error: `{name}` has no wire `{w}`")
-        n = m.group(1)
-        body = body.replace(m.group(0), f"wire signed [{n}:0] {w}_c = {m.group(2)};\n    reg signed [{n}:0] {w}; always @(posedge clock) {w} <= {w}_c;", 1)
-    return s[:i] + body + s[j:]
-
-
 def cut_grad(s):
     i, j, name = module_span(s, "$front$setup$mul_g")
     old = "    always @(*) p = a * b;\n"
@@ -94,12 +80,6 @@ def cut_grad(s):
     )
     s = s[:i] + s[i:j].replace(old, new, 1) + s[j:]
     return add_clock_port(s, name, "a")
-
-
-def cut_setup(s):
-    for m in ["mul_p", "mul_q"]:
-        s = register_wires(s, f"$front$setup${m}", ["hh", "hl", "lb"])
-    return s
 
 
 def cut_norm(s):
@@ -119,7 +99,7 @@ def cut_norm(s):
     return s
 
 
-CUTS = {"walk": cut_walk, "grad": cut_grad, "setup": cut_setup, "norm": cut_norm}
+CUTS = {"walk": cut_walk, "grad": cut_grad, "norm": cut_norm}
 
 
 def main():

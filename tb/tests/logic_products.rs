@@ -206,7 +206,6 @@ fn the_split_products_of_setup_equal_verilogs_multiply_and_keep_the_blocks_of_th
     }
     one::<21, 21, 42, 3, 3>(&root, "det and edge operands", 1);
     one::<25, 21, 46, 7, 3>(&root, "the RC's dot units", 1);
-    one::<40, 21, 61, 5, 3>(&root, "plane C of the RC", 2);
     one::<40, 21, 61, 0, 3>(&root, "plane C of texture setup", 3);
     one::<40, 21, 64, 5, 3>(&root, "colour setup's plane C", 2);
     one::<40, 26, 64, 4, 0>(&root, "colour setup's A and B", 4);
@@ -252,6 +251,7 @@ fn the_pipelined_products_equal_verilogs_multiply_one_edge_later_on_one_block_pe
     one::<40, 26, 64, 5, 8>(&root, "colour setup's A and B", 2);
     one::<21, 21, 42, 3, 3>(&root, "the RC's det", 1);
     one::<25, 21, 46, 7, 3>(&root, "the RC's dot units", 1);
+    one::<40, 21, 61, 5, 3>(&root, "the RC's plane C", 2);
 }
 
 /// The squares in logic (`SquareLogicU`, `SquareLogicS`: half the partial products of a general

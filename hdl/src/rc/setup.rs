@@ -46,11 +46,16 @@
 //!   are a cycle each since issue 15 item 5 (the one-cycle form was the RC's critical path). The
 //!   multiplier's first operand comes from a register (na loaded as the record enters S6, nb at the
 //!   end of phase 0).
-//! * S7 `Plane` (two 40x21 products per cycle): phase 0 A*(128-x0), B*(128-y0); phase 1 their sum, A*X0,
-//!   B*Y0; phase 2 `C = (z0 << 16) + round(sum >> 8)` and A*X0 + B*Y0; phase 3 raw = C + A*X0 + B*Y0 (the
-//!   depth plane's raw value at the box's first pixel) goes into the queue with the record. The
-//!   multipliers' operands come straight from registers: A and B from the record, `128 - x0` and
-//!   `128 - y0` formed as the record enters S7, X0 and Y0 loaded at the end of phase 0.
+//! * S7 `Plane` (two pipelined 40x21 products per cycle, `MulPipeS`: a product's partial products are
+//!   registered at the end of the phase that presents its operands, their sum goes into `p_prod`,
+//!   `q_prod` at the end of the next): phase 0 presents A*(128-x0), B*(128-y0); phase 1 A*X0, B*Y0;
+//!   phase 2 forms `acc + 128` = A*(128-x0) + B*(128-y0) + 128 from the product registers; phase 3
+//!   `C = (z0 << 16) + (acc + 128) >> 8` and raw = C + A*X0 + B*Y0 (the depth plane's raw value at the
+//!   box's first pixel) from registers, into the queue with the record. (Since issue 15 item 5: a
+//!   multiplier block and its partial sums in one cycle were setup's worst path in the chipset; the
+//!   four phases and what leaves S7 are unchanged.) The multipliers' operands come straight from
+//!   registers: A and B from the record, `128 - x0` and `128 - y0` formed as the record enters S7, X0
+//!   and Y0 loaded at the end of phase 0.
 //!
 //! Handshake, from the registers at the start of a cycle, last stage first: stage k hands its record on
 //! when it has spent its cycles and stage k+1 is empty or hands its own on in the same cycle; S7 when the
@@ -67,7 +72,7 @@
 
 use super::fast_reciprocal::FastReciprocal;
 use super::RcCommand;
-use crate::common::{signed_bit_cast_safe, MulPipeS, MulS, MulSplitS, StreamIn};
+use crate::common::{signed_bit_cast_safe, MulPipeS, MulS, StreamIn};
 use rust_hdl::prelude::*;
 
 /// Record kinds handed to the traversal.
@@ -197,10 +202,12 @@ pub struct Setup {
     mul_b1: MulPipeS<25, 21, 46, 7, 3>,
     /// S6: the gradients.
     mul_g: MulS<47, 26, 73>,
-    /// S7: the plane's two products per cycle, two MULT18X18D each (5 + 3 low bits in logic; three
-    /// with 0 + 3).
-    mul_p: MulSplitS<40, 21, 61, 5, 3>,
-    mul_q: MulSplitS<40, 21, 61, 5, 3>,
+    /// S7: the plane's two products per cycle, two MULT18X18D each (5 + 3 low bits in logic).
+    /// Pipelined (`MulPipeS`): the partial products are registered, their sum goes into `p_prod` and
+    /// `q_prod` a cycle later (issue 15 item 5: a multiplier block and the partial sums in one cycle
+    /// were setup's worst path in the chipset).
+    mul_p: MulPipeS<40, 21, 61, 5, 3>,
+    mul_q: MulPipeS<40, 21, 61, 5, 3>,
 
     // S0 `Det`: the command.
     s0_v: DFF<Bit>,
@@ -306,9 +313,8 @@ pub struct Setup {
     qb_op: DFF<Signed<21>>,
     p_prod: DFF<Bits<61>>,
     q_prod: DFF<Bits<61>>,
-    p_acc: DFF<Signed<62>>,
-    p_c: DFF<Signed<56>>,
-    p_s: DFF<Signed<56>>,
+    /// A*(128-x0) + B*(128-y0) + 128: C's sum with its rounding constant.
+    p_acc: DFF<Bits<62>>,
     // The record queue: four slots written in turn (`q_wp`) and read in turn (`q_rp`), and its length.
     // A ring, not a shift register: taking a record moves only the read pointer, so `rec_ready` fans
     // out to two flip-flops instead of every slot's load select (issue 15 item 5: that fan-out was the
@@ -509,8 +515,11 @@ pub struct Setup {
     qw: Signal<Local, Signed<62>>,
     p56: Signal<Local, Signed<56>>,
     q56: Signal<Local, Signed<56>>,
+    acc_sum: Signal<Local, Signed<62>>,
     acc_round: Signal<Local, Bits<62>>,
     c_frac: Signal<Local, Signed<56>>,
+    c_now: Signal<Local, Signed<56>>,
+    s_now: Signal<Local, Signed<56>>,
     z0_plane: Signal<Local, Signed<56>>,
     raw_now: Signal<Local, Signed<56>>,
 
@@ -688,8 +697,6 @@ impl Setup {
             p_prod: Default::default(),
             q_prod: Default::default(),
             p_acc: Default::default(),
-            p_c: Default::default(),
-            p_s: Default::default(),
             q0: Default::default(),
             q1: Default::default(),
             q2: Default::default(),
@@ -877,8 +884,11 @@ impl Setup {
             qw: Default::default(),
             p56: Default::default(),
             q56: Default::default(),
+            acc_sum: Default::default(),
             acc_round: Default::default(),
             c_frac: Default::default(),
+            c_now: Default::default(),
+            s_now: Default::default(),
             z0_plane: Default::default(),
             raw_now: Default::default(),
             w_minus_1: Constant::new((width as u64 - 1).into()),
@@ -944,7 +954,7 @@ impl Setup {
 impl Logic for Setup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s1_det_zero, s1_det_abs, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, prtl2_a, prtl2_b, s2_fresh3, s3_first, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, gb_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, p_c, p_s, q0, q1, q2, q3, q_wp, q_rp, q_len);
+        dff_setup!(self, clock, s0_v, s0, s1_v, s1, s1_det, s1_bx0, s1_bx1, s1_by0, s1_by1, s1_box_empty, s1_det_zero, s1_det_abs, s2_v, s2_phase, s2, s2p, la0, lb0, ra0, rb0, tl0, la1, lb1, ra1, rb1, tl1, la2, lb2, ra2, rb2, tl2, pr_a0, pr_a1, pr_b0, pr_b1, prtl_a, prtl_b, prtl2_a, prtl2_b, s2_fresh3, s3_first, n_dz10, n_dz20, n_dx10, n_dx20, n_dy10, n_dy20, s3_v, s3, s3p, s4_v, s4, s4p, s5_v, s5, s5p, s6_v, s6_phase, s6, s6p, g_prod, ga_op, gb_op, g_sh, s7_v, s7_phase, s7, s7p, pb_op, qb_op, p_prod, q_prod, p_acc, q0, q1, q2, q3, q_wp, q_rp, q_len);
         clock!(self, clock, recip);
 
         // ---- S1 `Order` ----
@@ -1401,8 +1411,11 @@ impl Logic for Setup {
         self.qw.next = self.zs62.val();
         self.p56.next = self.zs56.val();
         self.q56.next = self.zs56.val();
+        self.acc_sum.next = self.zs62.val();
         self.acc_round.next = self.zb62.val();
         self.c_frac.next = self.zs56.val();
+        self.c_now.next = self.zs56.val();
+        self.s_now.next = self.zs56.val();
         self.z0_plane.next = self.zs56.val();
         self.raw_now.next = self.zs56.val();
         if self.s7_v.q.val() {
@@ -1410,11 +1423,16 @@ impl Logic for Setup {
             self.qw.next = signed_bit_cast_safe::<62, 61>(signed_cast(self.q_prod.q.val()));
             self.p56.next = signed_cast(self.p_prod.q.val().get_bits::<56>(0));
             self.q56.next = signed_cast(self.q_prod.q.val().get_bits::<56>(0));
-            // C = (z0 << 16) + round(acc >> 8): never saturates (see the module doc).
-            self.acc_round.next = unsigned_cast(self.p_acc.q.val()) + self.k128_62.val();
-            self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.acc_round.val().get_bits::<54>(8)));
+            // Phase 2: acc + 128 from the products of C's terms.
+            self.acc_sum.next = self.pw.val() + self.qw.val();
+            self.acc_round.next = unsigned_cast(self.acc_sum.val()) + self.k128_62.val();
+            // Phase 3: C = (z0 << 16) + round(acc >> 8) (never saturates, see the module doc), and
+            // raw = C + (A*X0 + B*Y0), from registers.
+            self.c_frac.next = signed_bit_cast_safe::<56, 54>(signed_cast(self.p_acc.q.val().get_bits::<54>(8)));
             self.z0_plane.next = signed_cast(bit_cast::<56, 24>(self.s7p.q.val().z0) << self.k16_6.val());
-            self.raw_now.next = self.p_c.q.val() + self.p_s.q.val();
+            self.c_now.next = self.z0_plane.val() + self.c_frac.val();
+            self.s_now.next = self.p56.val() + self.q56.val();
+            self.raw_now.next = self.c_now.val() + self.s_now.val();
 
         }
         // Straight from registers (what the products of an empty S7 are does not matter: they are
@@ -1424,6 +1442,10 @@ impl Logic for Setup {
         self.mul_p.b.next = self.pb_op.q.val();
         self.mul_q.a.next = signed_cast(self.s7.q.val().b);
         self.mul_q.b.next = self.qb_op.q.val();
+        self.mul_p.clock.next = self.clock.val();
+        self.mul_q.clock.next = self.clock.val();
+        self.mul_p.ce.next = true;
+        self.mul_q.ce.next = true;
         // ---- The record queue ----
         self.pop.next = self.rec_ready.val() & (self.q_len.q.val() != self.k0_3.val());
         self.q_after.next = self.q_len.q.val();
@@ -1433,7 +1455,7 @@ impl Logic for Setup {
         }
         self.pushed.next = self.s7.q.val();
         self.pushed.next.raw = unsigned_cast(self.raw_now.val());
-        self.pushed.next.c = unsigned_cast(self.p_c.q.val());
+        self.pushed.next.c = unsigned_cast(self.c_now.val());
         // The multiples the traversal takes with the record (adders off the record take).
         self.m30_0.next = signed_cast(self.s7.q.val().sx0);
         self.m32_0.next = signed_bit_cast_safe::<32, 30>(self.m30_0.val());
@@ -1520,7 +1542,7 @@ impl Logic for Setup {
         self.rec_a3.next = signed_cast(self.head.val().a3);
 
         // ---- The stages' registers at the edge, last first ----
-        // S7: phase 0 the products of C's terms; 1 their sum and those of raw's; 2 C and raw's sum.
+        // S7: phase 0 presents the products of C's terms, 1 those of raw's; 2 sums C's (acc + 128).
         if self.s7_v.q.val() & self.walk7.val() & !self.done7.val() {
             self.s7_phase.d.next = self.s7_phase.q.val() + self.k1_2.val();
             self.p_prod.d.next = unsigned_cast(self.mul_p.p.val());
@@ -1529,12 +1551,8 @@ impl Logic for Setup {
                 self.pb_op.d.next = signed_cast(bit_cast::<21, 10>(self.s7.q.val().bx0));
                 self.qb_op.d.next = signed_cast(bit_cast::<21, 10>(self.s7.q.val().by0));
             }
-            if self.s7_phase.q.val() == self.k1_2.val() {
-                self.p_acc.d.next = self.pw.val() + self.qw.val();
-            }
             if self.s7_phase.q.val() == self.k2_2.val() {
-                self.p_c.d.next = self.z0_plane.val() + self.c_frac.val();
-                self.p_s.d.next = self.p56.val() + self.q56.val();
+                self.p_acc.d.next = self.acc_round.val();
             }
         }
         if self.leave7.val() {
